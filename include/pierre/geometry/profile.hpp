@@ -1,0 +1,105 @@
+// The slope profile: a polyline of vertices ordered from the source end, the air on the
+// left of the walking direction (model-2d.md §1, thesis §3.1). Each segment carries a
+// material index. Contact search and ground queries go through a bounding-volume tree
+// over consecutive segments, so a 10 000-vertex section costs little more than a
+// 10-vertex one (model-2d.md §2).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pierre/geometry/vec2.hpp"
+
+namespace pierre::geometry {
+
+struct Segment {
+  Vec2 a;             // start vertex (source side)
+  Vec2 b;             // end vertex
+  Vec2 d;             // unit direction a -> b
+  Vec2 n;             // unit outward normal (left of d): points into the air
+  double length = 0;  // |b - a|
+  int material = 0;   // index into the scenario's material list
+};
+
+// How the surface turns at a vertex, independent of the travel direction.
+enum class VertexTurn : std::uint8_t { straight, convex, concave };
+
+// A problem with the input polyline; `vertex` is the 0-based index of the offending vertex.
+struct ProfileIssue {
+  std::size_t vertex = 0;
+  std::string what;
+};
+
+// Where the flight leaves the ground: the segments it departs from have c = 0 exactly
+// (model-2d.md §2). `tangent` marks a segment the block leaves along its own line (sliding
+// off a convex vertex): gravity takes the block below that line at once, so it cannot be hit.
+struct Departure {
+  int segment[2] = {-1, -1};
+  bool tangent[2] = {false, false};
+  bool concave_vertex = false;  // departing from a concave vertex: entering a neighbour is a contact at t = 0
+};
+
+struct Contact {
+  double t = 0;     // time from the start of the arc, s
+  int segment = -1;
+  double s = 0;     // distance along the segment from its start vertex, m
+};
+
+struct GroundPoint {
+  double z = 0;
+  int segment = -1;
+};
+
+class Profile {
+ public:
+  // Builds the profile; returns the issues instead when the polyline is unusable (fewer than
+  // two vertices, repeated vertex, self-intersection, non-finite coordinates).
+  static std::optional<Profile> build(const std::vector<Vec2>& vertices,
+                                      const std::vector<int>& materials,
+                                      std::vector<ProfileIssue>* issues);
+
+  std::size_t segment_count() const { return segments_.size(); }
+  const Segment& segment(std::size_t i) const { return segments_[i]; }
+  const std::vector<Segment>& segments() const { return segments_; }
+  const std::vector<Vec2>& vertices() const { return vertices_; }
+  // Turn at the vertex between segment i and i + 1.
+  VertexTurn turn_after(std::size_t i) const { return turns_[i]; }
+  double x_min() const { return x_min_; }
+  double x_max() const { return x_max_; }
+  // +1 when the profile runs towards increasing x (its source end has the smaller x).
+  int main_direction() const { return main_direction_; }
+
+  // Earliest contact of the block centre's parabola p(t) = p0 + v0 t - g t^2 / 2 (z)
+  // with a segment, entering from the air side, for 0 < t < t_max (exact roots).
+  std::optional<Contact> first_contact(Vec2 p0, Vec2 v0, double g, double t_max,
+                                       const Departure& dep) const;
+
+  // The first ground line met going straight down from (x, z) (matters under overhangs).
+  std::optional<GroundPoint> ground_below(double x, double z) const;
+  // The highest ground line at x (where a source on or below the ground is placed).
+  std::optional<GroundPoint> top_ground(double x) const;
+
+  // Largest vertical distance between the parabola and the ground directly below it over
+  // the arc 0 <= t <= t_end (model-2d.md §4). Exact: piecewise concave, maximised per segment.
+  double max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end) const;
+
+ private:
+  struct Node {  // bounding box of the segments [first, last)
+    double x_lo, x_hi, z_lo, z_hi;
+    int first, last;
+    int left = -1, right = -1;
+  };
+  int build_node(int first, int last);
+
+  std::vector<Vec2> vertices_;
+  std::vector<Segment> segments_;
+  std::vector<VertexTurn> turns_;
+  std::vector<Node> nodes_;
+  double x_min_ = 0, x_max_ = 0;
+  int main_direction_ = 1;
+  bool x_monotone_ = true;  // every vertical line meets the ground once: no overhangs
+};
+
+}  // namespace pierre::geometry

@@ -1,0 +1,52 @@
+// Per-trajectory random numbers: a counter-based Philox4x32-10 stream keyed by the seed, with
+// the global trajectory index in the counter (model-2d.md §6). A trajectory's draws do not
+// depend on the thread that runs it, on the run order, or on how the work is split.
+#pragma once
+
+#include <Random123/philox.h>
+
+#include <cstdint>
+
+#include "pierre/model/impact_law.hpp"
+
+namespace pierre::sim {
+
+class RandomStream {
+ public:
+  RandomStream(std::uint64_t seed, std::uint64_t trajectory)
+      : key_{{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}},
+        ctr_{{0u, static_cast<std::uint32_t>(trajectory),
+              static_cast<std::uint32_t>(trajectory >> 32), 0u}} {}
+
+  // The draws of the next impact: one Philox block of 128 bits gives two 53-bit uniforms
+  // in the open interval (0, 1) (Random123's u01 on 64 bits can return 1.0: library-notes.md)
+  // and one spare bit for the travel sign on level ground.
+  model::ImpactDraws impact_draws() {
+    const auto r = next();
+    const std::uint64_t w0 = (std::uint64_t{r[0]} << 32) | r[1];
+    const std::uint64_t w1 = (std::uint64_t{r[2]} << 32) | r[3];
+    model::ImpactDraws d;
+    d.roughness_u = to_open_unit(w0);
+    d.shape_u = to_open_unit(w1);
+    d.level_sign = (w0 & 1u) != 0;  // bit 0 is below the 53 bits used by roughness_u
+    return d;
+  }
+
+  std::uint64_t draws_used() const { return ctr_[0]; }
+
+  static double to_open_unit(std::uint64_t w) {
+    return (static_cast<double>(w >> 11) + 0.5) * 0x1.0p-53;
+  }
+
+ private:
+  r123::Philox4x32::ctr_type next() {
+    const auto out = gen_(ctr_, key_);
+    ++ctr_[0];
+    return out;
+  }
+  r123::Philox4x32 gen_;
+  r123::Philox4x32::key_type key_;
+  r123::Philox4x32::ctr_type ctr_;
+};
+
+}  // namespace pierre::sim

@@ -1,0 +1,68 @@
+// What a run produces, as plain data (model-2d.md §4, §5; the thesis's DIS, OBS and TR files).
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "pierre/geometry/vec2.hpp"
+#include "pierre/model/impact_law.hpp"
+
+namespace pierre::sim {
+
+enum class StopReason : std::uint8_t {
+  energy,        // energy head below H_stop after an impact (Eq 3.13)
+  friction,      // at rest on a segment no steeper than the friction angle
+  boundary,      // left the profile
+  time_limit,
+  impact_limit,
+  numerical,     // a non-finite value or a lost contact: counted and reported, never dropped
+};
+
+std::string_view to_string(StopReason r);
+
+struct TrajectorySummary {
+  std::uint64_t trajectory = 0;  // global index: fixes the random stream
+  std::uint32_t source = 0;
+  std::uint32_t block = 0;       // index into the scenario's block list
+  std::uint32_t throw_index = 0;
+  double mass = 0;               // kg
+  geometry::Vec2 start;          // m
+  geometry::Vec2 stop;           // m
+  StopReason stop_reason = StopReason::numerical;
+  double duration = 0;           // s
+  std::uint32_t impacts = 0;
+  bool has_first_impact = false;
+  geometry::Vec2 first_impact;   // m
+  double max_jump_height = 0;    // m, above the ground directly below
+  double max_speed = 0;          // m/s, translational
+  double max_energy = 0;         // J, translational + rotational
+  double runout() const;         // horizontal distance start → stop, m
+};
+
+struct Crossing {
+  std::uint64_t trajectory = 0;
+  std::uint32_t line = 0;   // index of the observation line
+  std::uint32_t block = 0;
+  double mass = 0;          // kg
+  double time = 0;          // s from release
+  int direction = 1;        // +1 towards increasing x
+  geometry::Vec2 velocity;  // m/s
+  double speed = 0;         // m/s
+  double omega = 0;         // rad/s
+  double translational_energy = 0;  // J
+  double rotational_energy = 0;     // J
+  double height = 0;        // m: block centre above the ground directly below, at the line
+  bool sliding = false;
+};
+
+struct ImpactRecord {
+  std::uint64_t trajectory = 0;
+  std::uint32_t index = 0;  // impact number within the trajectory, from 0
+  double time = 0;          // s
+  geometry::Vec2 position;  // m
+  std::uint32_t segment = 0;
+  model::ImpactResult result = model::ImpactResult::rebound;
+  model::ImpactDetail detail;
+};
+
+}  // namespace pierre::sim

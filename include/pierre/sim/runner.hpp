@@ -1,0 +1,62 @@
+// The Monte Carlo runner: trajectories in fixed chunks over worker threads, results handed to a
+// sink in trajectory order, so every output is the same for any thread count (model-2d.md §6;
+// library-notes.md: reduce in trajectory order, never in thread order).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pierre/sim/results.hpp"
+#include "pierre/sim/scenario.hpp"
+
+namespace pierre::sim {
+
+struct RunOptions {
+  unsigned threads = 0;          // 0: every hardware thread
+  bool record_impacts = false;   // keep the per-impact records (large)
+  bool all_crossings = false;    // every crossing, not only the first in the main direction
+  std::uint32_t chunk_size = 512;  // trajectories per unit of work
+};
+
+// One chunk of consecutive trajectories and what they produced, in trajectory order.
+struct ChunkResult {
+  std::uint64_t first = 0;  // global index of the first trajectory
+  std::vector<TrajectorySummary> trajectories;
+  std::vector<Crossing> crossings;
+  std::vector<ImpactRecord> impacts;
+};
+
+// Receives chunks strictly in trajectory order, one at a time (never concurrently).
+class ResultSink {
+ public:
+  virtual ~ResultSink() = default;
+  virtual void consume(ChunkResult&& chunk) = 0;
+};
+
+// Keeps everything in memory (tests, benchmarks, small runs).
+class ResultCollector : public ResultSink {
+ public:
+  void consume(ChunkResult&& chunk) override;
+  std::vector<TrajectorySummary> trajectories;
+  std::vector<Crossing> crossings;
+  std::vector<ImpactRecord> impacts;
+};
+
+struct RunReport {
+  std::uint64_t trajectories = 0;
+  std::uint64_t impacts = 0;
+  double seconds = 0;  // wall-clock time of the simulation (measured by the caller's clock)
+  std::optional<std::string> error;  // a sink failure, reported instead of thrown across threads
+};
+
+// Called after each delivered chunk with (done, total); from a worker thread, never concurrently.
+using Progress = std::function<void(std::uint64_t, std::uint64_t)>;
+
+RunReport run_simulation(const Scenario& scenario, const RunOptions& options, ResultSink& sink,
+                         const Progress& progress = {});
+
+}  // namespace pierre::sim

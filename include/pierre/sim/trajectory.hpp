@@ -1,0 +1,38 @@
+// One trajectory: flight found exactly, sliding by closed-form events, impacts by the impact
+// law (model-2d.md §2–§4). Pure: it reads prepared constants and writes plain results.
+#pragma once
+
+#include <vector>
+
+#include "pierre/model/impact_law.hpp"
+#include "pierre/sim/observation_line.hpp"
+#include "pierre/sim/random_stream.hpp"
+#include "pierre/sim/results.hpp"
+#include "pierre/sim/scenario.hpp"
+
+namespace pierre::sim {
+
+// Everything a trajectory needs, prepared once per run and shared read-only by all threads.
+class TrajectoryModel {
+ public:
+  explicit TrajectoryModel(const Scenario& scenario);
+
+  const Scenario& scenario() const { return *scenario_; }
+  const model::ImpactLaw& law() const { return law_; }
+  const model::SurfaceConstants& surface(int material) const { return surfaces_[material]; }
+  const model::BlockConstants& block(std::size_t i) const { return blocks_[i]; }
+
+ private:
+  const Scenario* scenario_;
+  model::ImpactLaw law_;
+  std::vector<model::SurfaceConstants> surfaces_;
+  std::vector<model::BlockConstants> blocks_;
+};
+
+// Runs trajectory `index` of the scenario. Crossings go to the tally (which appends to its
+// output), impact records to `impacts` when it is not null.
+TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_t index,
+                                      ObservationTally& tally,
+                                      std::vector<ImpactRecord>* impacts);
+
+}  // namespace pierre::sim

@@ -1,0 +1,103 @@
+#include "pierre/sim/observation_line.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pierre::sim {
+
+ObservationTally::ObservationTally(const std::vector<ObservationLine>& lines,
+                                   const geometry::Profile& profile, bool all_crossings)
+    : profile_(&profile), all_(all_crossings), main_direction_(profile.main_direction()) {
+  for (const ObservationLine& l : lines) {
+    Line ln{l.x, 0.0, false};
+    // Where one ground line is all there is at x, its elevation is fixed; under an overhang
+    // the ground below depends on the block's height and is looked up per crossing.
+    const auto top = profile.top_ground(l.x);
+    const auto low = profile.ground_below(l.x, top ? top->z - 1e-6 : 0.0);
+    if (top && !low) {
+      ln.ground_z = top->z;
+      ln.single_ground = true;
+    }
+    lines_.push_back(ln);
+  }
+  seen_.assign(lines_.size(), 0);
+}
+
+void ObservationTally::begin(std::uint64_t trajectory, std::uint32_t block, double mass,
+                             double inertia) {
+  trajectory_ = trajectory;
+  block_ = block;
+  mass_ = mass;
+  inertia_ = inertia;
+  std::fill(seen_.begin(), seen_.end(), 0);
+}
+
+void ObservationTally::record(std::size_t i, double time, geometry::Vec2 pos,
+                              geometry::Vec2 vel, double omega, bool sliding) {
+  const int direction = vel.x >= 0 ? 1 : -1;
+  if (!all_) {
+    if (direction != main_direction_ || seen_[i]) return;
+    seen_[i] = 1;
+  }
+  Crossing c;
+  c.trajectory = trajectory_;
+  c.line = static_cast<std::uint32_t>(i);
+  c.block = block_;
+  c.mass = mass_;
+  c.time = time;
+  c.direction = direction;
+  c.velocity = vel;
+  c.speed = norm(vel);
+  c.omega = omega;
+  c.translational_energy = 0.5 * mass_ * dot(vel, vel);
+  c.rotational_energy = 0.5 * inertia_ * omega * omega;
+  c.sliding = sliding;
+  if (sliding) {
+    c.height = 0.0;  // the centre is on the ground line (point contact)
+  } else if (lines_[i].single_ground) {
+    c.height = pos.z - lines_[i].ground_z;
+  } else {
+    const auto g = profile_->ground_below(pos.x, pos.z);
+    c.height = g ? pos.z - g->z : 0.0;
+  }
+  out_->push_back(c);
+}
+
+void ObservationTally::flight(geometry::Vec2 p0, geometry::Vec2 v0, double omega, double t0,
+                              double tau, double g) {
+  if (v0.x == 0.0) return;  // a vertical drop crosses no vertical line
+  const double x1 = p0.x + v0.x * tau;
+  for (std::size_t i = 0; i < lines_.size(); ++i) {
+    const double xc = lines_[i].x;
+    // Half-open (0, tau]: a crossing at an arc's end is not counted again by the next piece.
+    if (v0.x > 0 ? (xc <= p0.x || xc > x1) : (xc >= p0.x || xc < x1)) continue;
+    const double t = (xc - p0.x) / v0.x;
+    record(i, t0 + t, {xc, p0.z + v0.z * t - 0.5 * g * t * t}, {v0.x, v0.z - g * t}, omega,
+           false);
+  }
+}
+
+void ObservationTally::slide(geometry::Vec2 p0, geometry::Vec2 d, double w0, double acc,
+                             double omega, double t0, double tau) {
+  const double vx0 = w0 * d.x;
+  if (d.x == 0.0) return;
+  const double dist = w0 * tau + 0.5 * acc * tau * tau;
+  const double x1 = p0.x + dist * d.x;
+  for (std::size_t i = 0; i < lines_.size(); ++i) {
+    const double xc = lines_[i].x;
+    const bool forward = x1 > p0.x || (x1 == p0.x && vx0 > 0);
+    if (forward ? (xc <= p0.x || xc > x1) : (xc >= p0.x || xc < x1)) continue;
+    // Solve w0 τ + a τ²/2 = (xc − x0)/d.x for the first τ in (0, tau]: the motion is monotone
+    // between sliding events.
+    const double target = (xc - p0.x) / d.x;
+    // Stable form of the root nearest zero; the motion's sign is the target's.
+    const double disc = std::max(0.0, w0 * w0 + 2.0 * acc * target);
+    const double denom = w0 + std::copysign(std::sqrt(disc), target);
+    double t = denom != 0.0 ? 2.0 * target / denom : tau;
+    t = std::clamp(t, 0.0, tau);
+    const double w = w0 + acc * t;
+    record(i, t0 + t, {xc, p0.z + (w0 * t + 0.5 * acc * t * t) * d.z}, w * d, omega, true);
+  }
+}
+
+}  // namespace pierre::sim

@@ -1,0 +1,90 @@
+#include "pierre/sim/runner.hpp"
+
+#include <algorithm>
+#include <condition_variable>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "pierre/sim/trajectory.hpp"
+
+namespace pierre::sim {
+
+void ResultCollector::consume(ChunkResult&& c) {
+  trajectories.insert(trajectories.end(), c.trajectories.begin(), c.trajectories.end());
+  crossings.insert(crossings.end(), c.crossings.begin(), c.crossings.end());
+  impacts.insert(impacts.end(), c.impacts.begin(), c.impacts.end());
+}
+
+RunReport run_simulation(const Scenario& scenario, const RunOptions& options, ResultSink& sink,
+                         const Progress& progress) {
+  const TrajectoryModel model(scenario);
+  const std::uint64_t total = scenario.trajectory_count();
+  const std::uint64_t chunk = std::max<std::uint32_t>(1, options.chunk_size);
+  const std::uint64_t n_chunks = (total + chunk - 1) / chunk;
+  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
+  threads = static_cast<unsigned>(std::clamp<std::uint64_t>(threads, 1, std::max<std::uint64_t>(1, n_chunks)));
+  // Finished chunks wait here until every earlier one is delivered; a worker does not start a
+  // chunk more than `window` ahead of delivery, so memory stays bounded.
+  const std::uint64_t window = 4ull * threads;
+
+  std::mutex mu;
+  std::condition_variable cv;
+  std::map<std::uint64_t, ChunkResult> pending;
+  std::uint64_t next_claim = 0, next_deliver = 0, impacts = 0;
+  bool failed = false;
+  std::optional<std::string> error;
+
+  auto worker = [&] {
+    ObservationTally tally(scenario.lines, scenario.profile, options.all_crossings);
+    while (true) {
+      std::uint64_t c;
+      {
+        std::unique_lock lock(mu);
+        cv.wait(lock, [&] { return failed || next_claim < next_deliver + window || next_claim >= n_chunks; });
+        if (failed || next_claim >= n_chunks) return;
+        c = next_claim++;
+      }
+      ChunkResult res;
+      res.first = c * chunk;
+      const std::uint64_t end = std::min(total, res.first + chunk);
+      res.trajectories.reserve(end - res.first);
+      tally.output(&res.crossings);
+      std::uint64_t n_imp = 0;
+      for (std::uint64_t i = res.first; i < end; ++i) {
+        res.trajectories.push_back(
+            simulate_trajectory(model, i, tally, options.record_impacts ? &res.impacts : nullptr));
+        n_imp += res.trajectories.back().impacts;
+      }
+      std::unique_lock lock(mu);
+      impacts += n_imp;
+      pending.emplace(c, std::move(res));
+      while (!failed && !pending.empty() && pending.begin()->first == next_deliver) {
+        try {
+          sink.consume(std::move(pending.begin()->second));
+        } catch (const std::exception& e) {
+          failed = true;
+          error = e.what();
+        }
+        pending.erase(pending.begin());
+        ++next_deliver;
+        if (progress && !failed) progress(std::min(total, next_deliver * chunk), total);
+      }
+      cv.notify_all();
+    }
+  };
+
+  std::vector<std::thread> pool;
+  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+
+  RunReport rep;
+  rep.trajectories = total;
+  rep.impacts = impacts;
+  rep.error = error;
+  return rep;
+}
+
+}  // namespace pierre::sim

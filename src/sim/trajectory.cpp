@@ -1,0 +1,355 @@
+#include "pierre/sim/trajectory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pierre::sim {
+namespace {
+
+using geometry::Contact;
+using geometry::Departure;
+using geometry::Segment;
+using geometry::Vec2;
+using geometry::VertexTurn;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A contact this close to a segment end is at the vertex: its neighbour is departed from too.
+constexpr double kVertexSlack = 1e-9;
+
+bool finite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.z); }
+
+enum class Mode { flight, sliding, stopped };
+
+// The state of one block and the bookkeeping of its summary.
+class Integrator {
+ public:
+  Integrator(const TrajectoryModel& m, std::uint64_t index, ObservationTally& tally,
+             std::vector<ImpactRecord>* impacts)
+      : m_(m),
+        sc_(m.scenario()),
+        profile_(sc_.profile),
+        set_(sc_.settings),
+        g_(set_.gravity),
+        tally_(tally),
+        impacts_(impacts) {
+    const TrajectoryKey key = trajectory_key(sc_, index);
+    const Source& src = sc_.sources[key.source];
+    blk_ = &m.block(key.block);
+    out_.trajectory = index;
+    out_.source = key.source;
+    out_.block = key.block;
+    out_.throw_index = key.throw_index;
+    out_.mass = blk_->mass;
+    rng_.emplace(set_.seed, index);
+    tally_.begin(index, key.block, blk_->mass, blk_->inertia);
+    p_ = src.position;
+    v_ = src.velocity;
+    omega_ = src.omega;
+    out_.start = p_;
+  }
+
+  TrajectorySummary run() {
+    start();
+    while (mode_ != Mode::stopped) {
+      if (mode_ == Mode::flight)
+        fly();
+      else
+        slide();
+    }
+    out_.stop = p_;
+    out_.duration = t_;
+    out_.impacts = static_cast<std::uint32_t>(impacts_done_);
+    return out_;
+  }
+
+ private:
+  void stop(StopReason r) {
+    out_.stop_reason = r;
+    mode_ = Mode::stopped;
+  }
+
+  void note_speed(Vec2 v, double omega) {
+    const double e = 0.5 * blk_->mass * dot(v, v) + 0.5 * blk_->inertia * omega * omega;
+    out_.max_speed = std::max(out_.max_speed, norm(v));
+    out_.max_energy = std::max(out_.max_energy, e);
+  }
+
+  void start() {
+    note_speed(v_, omega_);
+    const auto below = profile_.ground_below(p_.x, p_.z);
+    if (below && p_.z > below->z) {  // above the ground: starts in flight
+      mode_ = Mode::flight;
+      dep_ = Departure{};
+      return;
+    }
+    // On or below the ground: placed on the ground, starts sliding (§3.2.2).
+    const auto top = below ? below : profile_.top_ground(p_.x);
+    if (!top) {
+      stop(StopReason::boundary);
+      return;
+    }
+    p_.z = top->z;
+    out_.start = p_;
+    enter_ground(top->segment, v_);
+  }
+
+  // The block is on segment j at p_ with velocity v (tangential part kept): slide where the
+  // normal points up, else fall along the face.
+  void enter_ground(int j, Vec2 v) {
+    const Segment& s = profile_.segment(j);
+    if (s.n.z <= 0.0) {  // vertical or overhanging: no sliding, flight along the face
+      v_ = v - dot(v, s.n) * s.n;
+      mode_ = Mode::flight;
+      dep_ = Departure{};
+      dep_.segment[0] = j;
+      dep_.tangent[0] = true;
+      return;
+    }
+    seg_ = j;
+    along_ = std::clamp(dot(p_ - s.a, s.d), 0.0, s.length);
+    w_ = dot(v, s.d);
+    v_ = w_ * s.d;
+    mode_ = Mode::sliding;
+  }
+
+  void fly() {
+    if (!finite(p_) || !finite(v_) || !std::isfinite(omega_)) return stop(StopReason::numerical);
+    // When the block would leave the profile's horizontal extent, or run out of time.
+    double t_leave = kInf;
+    if (v_.x > 0) t_leave = (profile_.x_max() - p_.x) / v_.x;
+    if (v_.x < 0) t_leave = (profile_.x_min() - p_.x) / v_.x;
+    t_leave = std::max(t_leave, 0.0);
+    const double t_left = set_.max_time - t_;
+    const double horizon = std::min(t_leave, t_left);
+    const auto contact = profile_.first_contact(p_, v_, g_, horizon, dep_);
+
+    double tau;
+    if (contact) {
+      tau = contact->t;
+    } else if (t_leave <= t_left) {
+      tau = t_leave;
+    } else if (profile_.first_contact(p_, v_, g_, kInf, dep_)) {
+      tau = t_left;  // the contact lies beyond the time limit
+    } else {
+      return stop(StopReason::numerical);  // no contact and no way out: lost through the ground
+    }
+    advance_flight(tau);
+    if (contact) {
+      const Segment& s = profile_.segment(contact->segment);
+      p_ = s.a + contact->s * s.d;  // snap onto the line the block hit
+      impact(contact->segment, contact->s);
+    } else if (tau == t_leave && t_leave <= t_left) {
+      stop(StopReason::boundary);
+    } else {
+      stop(StopReason::time_limit);
+    }
+  }
+
+  void advance_flight(double tau) {
+    if (!tally_.empty()) tally_.flight(p_, v_, omega_, t_, tau, g_);
+    out_.max_jump_height =
+        std::max(out_.max_jump_height, profile_.max_height_above_ground(p_, v_, g_, tau));
+    p_ = {p_.x + v_.x * tau, p_.z + v_.z * tau - 0.5 * g_ * tau * tau};
+    v_ = {v_.x, v_.z - g_ * tau};
+    t_ += tau;
+    note_speed(v_, omega_);  // a concave arc's speed is largest at one of its ends
+  }
+
+  bool count_event() {
+    if (++events_ > set_.max_impacts) {
+      stop(StopReason::impact_limit);
+      return false;
+    }
+    return true;
+  }
+
+  // An impact on segment j at p_, `along` metres from its start vertex.
+  void impact(int j, double along) {
+    if (!count_event()) return;
+    const Segment& s = profile_.segment(j);
+    if (!out_.has_first_impact) {
+      out_.has_first_impact = true;
+      out_.first_impact = p_;
+    }
+    const auto draws = rng_->impact_draws();
+    model::ImpactDetail detail;
+    const auto res = m_.law().resolve(v_, omega_, s, m_.surface(s.material), *blk_, draws,
+                                      impacts_ ? &detail : nullptr);
+    if (impacts_) {
+      ImpactRecord r;
+      r.trajectory = out_.trajectory;
+      r.index = static_cast<std::uint32_t>(impacts_done_);
+      r.time = t_;
+      r.position = p_;
+      r.segment = static_cast<std::uint32_t>(j);
+      r.result = res.result;
+      r.detail = detail;
+      impacts_->push_back(r);
+    }
+    ++impacts_done_;
+    v_ = res.v;
+    omega_ = res.omega;
+    if (!finite(v_) || !std::isfinite(omega_)) return stop(StopReason::numerical);
+    switch (res.result) {
+      case model::ImpactResult::stopped:
+        return stop(StopReason::energy);
+      case model::ImpactResult::sliding:
+        return enter_ground(j, v_);
+      case model::ImpactResult::rebound:
+        break;
+    }
+    // Rebound: flight departing from the segment, and from its neighbour at a vertex.
+    mode_ = Mode::flight;
+    dep_ = Departure{};
+    dep_.segment[0] = j;
+    const double slack = kVertexSlack * std::max(1.0, s.length);
+    if (along <= slack && j > 0) {
+      dep_.segment[1] = j - 1;
+      dep_.concave_vertex = profile_.turn_after(j - 1) == VertexTurn::concave;
+    } else if (along >= s.length - slack && j + 1 < static_cast<int>(profile_.segment_count())) {
+      dep_.segment[1] = j + 1;
+      dep_.concave_vertex = profile_.turn_after(j) == VertexTurn::concave;
+    }
+  }
+
+  void slide() {
+    const Segment& s = profile_.segment(seg_);
+    const auto& surf = m_.surface(s.material);
+    const double g_along = -g_ * s.d.z;              // gravity along d
+    const double friction = g_ * s.n.z * surf.tan_phi;  // friction deceleration (n_z > 0)
+    if (w_ == 0.0) {
+      // At rest: stays when tan β ≤ tan φ, else starts downslope (Eq 3.3).
+      if (std::abs(g_along) <= friction) return stop(StopReason::friction);
+    }
+    const double dir = w_ != 0.0 ? (w_ > 0 ? 1.0 : -1.0) : (g_along > 0 ? 1.0 : -1.0);
+    const double acc = g_along - dir * friction;
+
+    // The next event, each in closed form: end of segment, speed zero, maximum sliding speed.
+    enum class Event { end, rest, launch, time } ev = Event::time;
+    double tau = set_.max_time - t_;
+    const double target = dir > 0 ? s.length - along_ : -along_;  // signed distance to the end
+    {
+      // Solve w τ + acc τ²/2 = target for the first τ ≥ 0 (stable form).
+      const double disc = w_ * w_ + 2.0 * acc * target;
+      if (disc >= 0.0) {
+        const double denom = w_ + std::copysign(std::sqrt(disc), target);
+        const double te = denom != 0.0 ? 2.0 * target / denom : 0.0;
+        if (te >= 0.0 && te <= tau) {
+          tau = te;
+          ev = Event::end;
+        }
+      }
+    }
+    if (acc * dir < 0.0) {
+      const double tr = -w_ / acc;
+      if (tr >= 0.0 && tr < tau) {
+        tau = tr;
+        ev = Event::rest;
+      }
+    } else if (acc * dir > 0.0) {
+      const double tl = std::max(0.0, (dir * set_.max_sliding_speed - w_) / acc);
+      if (tl < tau) {
+        tau = tl;
+        ev = Event::launch;
+      }
+    }
+    if (std::abs(w_) > set_.max_sliding_speed) {  // already too fast to slide: launch now
+      tau = 0.0;
+      ev = Event::launch;
+    }
+
+    // Advance along the segment.
+    const Vec2 p0 = p_;
+    if (!tally_.empty()) tally_.slide(p0, s.d, w_, acc, omega_, t_, tau);
+    const double w0 = w_;
+    if (ev == Event::end) {
+      along_ = dir > 0 ? s.length : 0.0;
+      p_ = dir > 0 ? s.b : s.a;
+    } else {
+      along_ = std::clamp(along_ + w0 * tau + 0.5 * acc * tau * tau, 0.0, s.length);
+      p_ = s.a + along_ * s.d;
+    }
+    w_ = ev == Event::rest ? 0.0 : w0 + acc * tau;
+    if (ev == Event::launch && tau > 0.0) w_ = dir * set_.max_sliding_speed;
+    v_ = w_ * s.d;
+    t_ += tau;
+    note_speed(v_, omega_);
+    if (!finite(p_) || !std::isfinite(w_)) return stop(StopReason::numerical);
+
+    switch (ev) {
+      case Event::time:
+        return stop(StopReason::time_limit);
+      case Event::rest:
+        if (!count_event()) return;  // guards against endless rest-restart cycles
+        return;                      // next call decides: stop by friction or restart
+      case Event::launch:
+        // Forced into flight: the roughness tilts the plane so v_n' = −v sin θ < 0 (§3.2.2).
+        return impact(seg_, along_);
+      case Event::end:
+        return vertex(dir);
+    }
+  }
+
+  void vertex(double dir) {
+    const int next = seg_ + (dir > 0 ? 1 : -1);
+    if (next < 0 || next >= static_cast<int>(profile_.segment_count()))
+      return stop(StopReason::boundary);
+    const VertexTurn turn = profile_.turn_after(std::min(seg_, next));
+    const Segment& ns = profile_.segment(next);
+    if (turn == VertexTurn::straight && ns.n.z > 0.0) {  // not an event: carry on
+      seg_ = next;
+      along_ = dir > 0 ? 0.0 : ns.length;
+      return;
+    }
+    if (!count_event()) return;
+    if (turn == VertexTurn::concave) return impact(next, dir > 0 ? 0.0 : ns.length);
+    // Convex: a point mass cannot follow the bend, it flies from the vertex. At rest it simply
+    // moves on to the next segment.
+    if (w_ == 0.0) return enter_ground(next, v_);
+    mode_ = Mode::flight;
+    dep_ = Departure{};
+    dep_.segment[0] = seg_;
+    dep_.tangent[0] = true;
+    dep_.segment[1] = next;
+  }
+
+  const TrajectoryModel& m_;
+  const Scenario& sc_;
+  const geometry::Profile& profile_;
+  const SimulationSettings& set_;
+  const double g_;
+  ObservationTally& tally_;
+  std::vector<ImpactRecord>* impacts_;
+  const model::BlockConstants* blk_ = nullptr;
+  std::optional<RandomStream> rng_;
+  TrajectorySummary out_;
+
+  Mode mode_ = Mode::flight;
+  Vec2 p_, v_;
+  double omega_ = 0, t_ = 0;
+  Departure dep_;
+  int seg_ = -1;       // sliding: current segment
+  double along_ = 0;   // sliding: distance from its start vertex
+  double w_ = 0;       // sliding: signed speed along d
+  long events_ = 0;    // impacts and vertex events, against the limit
+  long impacts_done_ = 0;
+};
+
+}  // namespace
+
+TrajectoryModel::TrajectoryModel(const Scenario& scenario)
+    : scenario_(&scenario),
+      law_(scenario.settings.roughness, scenario.settings.stop_head_factor,
+           scenario.settings.gravity) {
+  for (const auto& m : scenario.materials) surfaces_.push_back(law_.surface(m));
+  for (const auto& b : scenario.blocks) blocks_.push_back(law_.block(b));
+}
+
+TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_t index,
+                                      ObservationTally& tally,
+                                      std::vector<ImpactRecord>* impacts) {
+  return Integrator(model, index, tally, impacts).run();
+}
+
+}  // namespace pierre::sim
