@@ -1,0 +1,27 @@
+// An input error: where it is (file, line), which field, what was found, what was expected.
+// Thrown by the readers; the command line turns it into a message and exit code 2.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace pierre::io {
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::filesystem::path file, long line, std::string field, std::string found,
+             std::string expected);
+  const std::filesystem::path& file() const { return file_; }
+  long line() const { return line_; }  // 1-based; 0 when the error is about the whole file
+  const std::string& field() const { return field_; }
+  const std::string& found() const { return found_; }
+  const std::string& expected() const { return expected_; }
+
+ private:
+  std::filesystem::path file_;
+  long line_;
+  std::string field_, found_, expected_;
+};
+
+}  // namespace pierre::io
