@@ -1,0 +1,194 @@
+// model-2d.md §7 tests 3 to 7: the impact law against hand computations of §3.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+
+#include "pierre/model/impact_law.hpp"
+#include "pierre/model/restitution.hpp"
+#include "support/builders.hpp"
+
+using namespace pierre::model;
+using pierre::geometry::Segment;
+using pierre::geometry::Vec2;
+
+namespace {
+constexpr double g = 9.81;
+
+Segment segment_at(double descent_deg) {  // a segment descending to +x
+  const double a = descent_deg * M_PI / 180;
+  Segment s;
+  s.a = {0, 0};
+  s.d = {std::cos(a), -std::sin(a)};
+  s.b = 10.0 * s.d;
+  s.length = 10;
+  s.n = pierre::geometry::left_normal(s.d);
+  return s;
+}
+
+// θ is fixed through the uniform distribution: X = u, tan θ = θ_scale u (no size reduction).
+ImpactLaw fixed_theta_law() {
+  RoughnessModel r;
+  r.distribution = RoughnessDistribution::uniform;
+  r.size_reduction = false;
+  return ImpactLaw(r, 0.25, g);
+}
+
+double tan_gamma_by_hand(Vec2 v, double omega, const Segment& s, double tan_theta, double f,
+                         const Block& b, const Material& m) {
+  const double c = 1 / std::sqrt(1 + tan_theta * tan_theta), sn = tan_theta * c;
+  const Vec2 t_hat = s.d;  // travel forward in these tests
+  const Vec2 n_r = c * s.n - sn * t_hat, t_r = c * t_hat + sn * s.n;
+  const double vn = dot(v, n_r), vt = dot(v, t_r);
+  const double u = omega * f * b.radius();  // arm +1 for forward travel
+  const double ed = b.radius() * vn * vn;
+  const double kn = hyperbolic_factor(ed, hyperbola_constant(m.normal_energy, m.normal_energy_k));
+  const double kt =
+      hyperbolic_factor(ed, hyperbola_constant(m.tangential_energy, m.tangential_energy_k));
+  return kt * std::abs(vt + u) / ((1 + 2.5 * f * f) * (1 + kn) * std::abs(vn));
+}
+}  // namespace
+
+TEST(Restitution, HyperbolaReturnsReferenceFactorAndTendsToOne) {
+  for (double k_ref : {0.5, 0.95, 0.2}) {
+    const double a = hyperbola_constant(15.0, k_ref);
+    EXPECT_NEAR(hyperbolic_factor(15.0, a), k_ref, 1e-15);
+    EXPECT_NEAR(hyperbolic_factor(1e-12, a), 1.0, 1e-12);
+    EXPECT_LT(hyperbolic_factor(1e6, a), 0.01);
+  }
+}
+
+class SlipBoundary : public ::testing::TestWithParam<double> {};
+
+TEST_P(SlipBoundary, ContainedAndUncontainedAgreeAtTanPhiEqualsTanGamma) {
+  const double f = GetParam();
+  const ImpactLaw law = fixed_theta_law();
+  Block b = pierre::test::make_block(2000, f, f);
+  Material m = pierre::test::make_material(15, 50, 0.4);
+  const Segment s = segment_at(32);
+  const Vec2 v{9, -7};
+  const double omega = 2.0, u = 0.5;
+  const double tg = tan_gamma_by_hand(v, omega, s, 0.4 * u, f, b, m);
+  ImpactDraws d{u, 0.5, false};
+  // Just above and just below the boundary: one contained, one not, same answer.
+  m.friction_angle_deg = std::atan(tg * (1 + 1e-12)) * 180 / M_PI;
+  ImpactDetail d1, d2;
+  const auto r1 = law.resolve(v, omega, s, law.surface(m), law.block(b), d, &d1);
+  m.friction_angle_deg = std::atan(tg * (1 - 1e-12)) * 180 / M_PI;
+  const auto r2 = law.resolve(v, omega, s, law.surface(m), law.block(b), d, &d2);
+  ASSERT_TRUE(d1.contained);
+  ASSERT_FALSE(d2.contained);
+  EXPECT_NEAR(r1.v.x, r2.v.x, 1e-9);
+  EXPECT_NEAR(r1.v.z, r2.v.z, 1e-9);
+  EXPECT_NEAR(r1.omega, r2.omega, 1e-9);
+}
+INSTANTIATE_TEST_SUITE_P(ShapeFactors, SlipBoundary, ::testing::Values(1.0, 0.7, 1.4, 2.0));
+
+TEST(ImpactLaw, ContainedReboundIsRotatedGoldsmithMatrix) {
+  // model-2d.md §7 test 4: v_re = R_θ⁻¹ G R_θ v_in on (v_t, v_n, u), f = 1, contained slip.
+  const ImpactLaw law = fixed_theta_law();
+  const Block b = pierre::test::make_block(1500);
+  const Material m = pierre::test::make_material(10, 50, 2 * std::tan(12 * M_PI / 180), 89.0);
+  const Segment s = segment_at(25);
+  const Vec2 v{8, -6};
+  const double omega = 3.0;
+  ImpactDetail det;
+  const auto r = law.resolve(v, omega, s, law.surface(m), law.block(b), {0.5, 0.5, false}, &det);
+  ASSERT_TRUE(det.contained);
+  ASSERT_EQ(r.result, ImpactResult::rebound);
+
+  const double th = 12 * M_PI / 180, c = std::cos(th), sn = std::sin(th);
+  Eigen::Matrix3d R;
+  R << c, sn, 0, -sn, c, 0, 0, 0, 1;  // Eq 3.14–3.15
+  const Eigen::Vector3d vin(dot(v, s.d), dot(v, s.n), omega * b.radius());
+  const double vn_rot = (R * vin)(1);
+  const double ed = b.radius() * vn_rot * vn_rot;
+  const double kn = hyperbolic_factor(ed, hyperbola_constant(10, 0.5));
+  const double kt = hyperbolic_factor(ed, hyperbola_constant(50, 0.95));
+  Eigen::Matrix3d G;
+  G << 5. / 7 * kt, 0, -2. / 7 * kt, 0, -kn, 0, -5. / 7 * kt, 0, 2. / 7 * kt;  // Eq 3.11
+  const Eigen::Vector3d expect = R.inverse() * G * R * vin;
+  EXPECT_NEAR(dot(r.v, s.d), expect(0), 1e-12);
+  EXPECT_NEAR(dot(r.v, s.n), expect(1), 1e-12);
+  EXPECT_NEAR(r.omega * b.radius(), expect(2), 1e-12);
+}
+
+TEST(ImpactLaw, KineticEnergyNeverIncreases) {
+  // model-2d.md §7 test 5: 10⁶ random incident states, materials and shape factors.
+  RoughnessModel rm;
+  const ImpactLaw law(rm, 0.0, g);  // no stopping: compare every rebound
+  std::mt19937_64 gen(7);  // the test's own states; the model's draws come from ImpactDraws
+  std::uniform_real_distribution<double> U(0, 1);
+  int checked = 0;
+  for (int i = 0; i < 1'000'000; ++i) {
+    const double f1 = 0.7 + 1.3 * U(gen), f2 = 0.7 + 1.3 * U(gen);
+    const Block b = pierre::test::make_block(50 + 20000 * U(gen), std::min(f1, f2), std::max(f1, f2));
+    Material m = pierre::test::make_material(1 + 50 * U(gen), 1 + 100 * U(gen), 1.5 * U(gen),
+                                             60 * U(gen));
+    m.normal_energy_k = 0.05 + 0.9 * U(gen);
+    m.tangential_energy_k = 0.05 + 0.94 * U(gen);
+    const Segment s = segment_at(-80 + 170 * U(gen));
+    const double ang = 2 * M_PI * U(gen), sp = 40 * U(gen);
+    Vec2 v{sp * std::cos(ang), sp * std::sin(ang)};
+    if (dot(v, s.n) >= 0) v = v - 2 * dot(v, s.n) * s.n;  // make it approach the surface
+    const double omega = -30 + 60 * U(gen);
+    const BlockConstants bc = law.block(b);
+    const double e_in = 0.5 * bc.mass * dot(v, v) + 0.5 * bc.inertia * omega * omega;
+    const auto r = law.resolve(v, omega, s, law.surface(m), bc, {U(gen), U(gen), U(gen) < 0.5});
+    const double e_out = 0.5 * bc.mass * dot(r.v, r.v) + 0.5 * bc.inertia * r.omega * r.omega;
+    ASSERT_LE(e_out, e_in * (1 + 1e-12)) << "state " << i;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1'000'000);
+}
+
+TEST(ImpactLaw, ShallowImpactShowsApparentNormalFactorAboveOne) {
+  // model-2d.md §7 test 6: incidence 10° to the true surface, θ = 20°.
+  const ImpactLaw law = fixed_theta_law();
+  const Block b = pierre::test::make_block(1000);
+  const Material m = pierre::test::make_material(5, 50, 2 * std::tan(20 * M_PI / 180), 30);
+  const Segment s = segment_at(0);  // level ground: n = (0, 1), t = (1, 0)
+  const double a = 10 * M_PI / 180, speed = 15;
+  const Vec2 v{speed * std::cos(a), -speed * std::sin(a)};
+  ImpactDetail det;
+  law.resolve(v, 0.0, s, law.surface(m), law.block(b), {0.5, 0.5, false}, &det);
+  // By hand (§3): rotated frame n' = cos θ n − sin θ t, t' = cos θ t + sin θ n.
+  const double th = 20 * M_PI / 180;
+  const double vn = -speed * std::sin(a) * std::cos(th) - speed * std::cos(a) * std::sin(th);
+  const double vt = speed * std::cos(a) * std::cos(th) - speed * std::sin(a) * std::sin(th);
+  const double ed = b.radius() * vn * vn;
+  const double kn = hyperbolic_factor(ed, hyperbola_constant(5, 0.5));
+  const double kt = hyperbolic_factor(ed, hyperbola_constant(50, 0.95));
+  const double tan_g = kt * std::abs(vt) / (3.5 * (1 + kn) * std::abs(vn));
+  double vt_out = tan_g <= std::tan(M_PI / 6) ? kt * (vt - vt / 3.5)
+                                              : kt * vt - std::tan(M_PI / 6) * (1 + kn) * -vn;
+  const double vn_out = -kn * vn;
+  // Back to the true frame: rebound normal = vn_out cos θ + vt_out sin θ.
+  const double true_n_out = vn_out * std::cos(th) + vt_out * std::sin(th);
+  const double expected_apparent = true_n_out / (speed * std::sin(a));
+  EXPECT_NEAR(det.kn_apparent, expected_apparent, 1e-12);
+  EXPECT_GT(det.kn_apparent, 1.0);
+  EXPECT_GT(det.kn, 0.0);
+  EXPECT_LE(det.kn, 1.0);
+  EXPECT_LE(det.kt, 1.0);
+  EXPECT_NEAR(det.kn, kn, 1e-15);
+}
+
+TEST(ImpactLaw, StopsWhenEnergyHeadBelowQuarterRadius) {
+  const ImpactLaw law = fixed_theta_law();
+  const Block b = pierre::test::make_block(2650);  // 1 m³: R = 0.6204 m
+  const Material m = pierre::test::make_material(5, 50, 0.0, 30);
+  const Segment s = segment_at(0);
+  // A vertical drop with no roughness: rebound v_n⁺ = k_n |v_n|, H = v_n⁺²/2g.
+  for (double vin : {0.3, 3.0}) {
+    const auto r = law.resolve({0, -vin}, 0, s, law.surface(m), law.block(b), {0.5, 0.5, false});
+    const double ed = b.radius() * vin * vin;
+    const double vout = hyperbolic_factor(ed, hyperbola_constant(5, 0.5)) * vin;
+    const bool stops = vout * vout / (2 * g) < 0.25 * b.radius();
+    EXPECT_EQ(r.result == ImpactResult::stopped, stops) << vin;
+    if (!stops) {
+      EXPECT_NEAR(r.v.z, vout, 1e-12);
+    }
+  }
+}

@@ -1,0 +1,164 @@
+// model-2d.md §7 tests 9 and 10, and whole-trajectory invariants.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "pierre/sim/runner.hpp"
+#include "pierre/sim/trajectory.hpp"
+#include "support/builders.hpp"
+
+using namespace pierre;
+using namespace pierre::sim;
+using geometry::Vec2;
+
+namespace {
+
+ResultCollector run(const Scenario& s, unsigned threads, bool impacts = false,
+                    std::uint32_t chunk = 512) {
+  ResultCollector c;
+  RunOptions o;
+  o.threads = threads;
+  o.record_impacts = impacts;
+  o.chunk_size = chunk;
+  run_simulation(s, o, c);
+  return c;
+}
+
+Scenario slope_scenario(std::uint64_t seed = 42) {
+  // A 35° talus slope, a break to 10°, then a level floor: blocks fly, roll, slide and stop.
+  const double t35 = std::tan(35 * M_PI / 180), t10 = std::tan(10 * M_PI / 180);
+  auto prof = test::make_profile(
+      {{0, 100}, {100, 100 - 100 * t35}, {140, 100 - 100 * t35 - 40 * t10}, {400, 100 - 100 * t35 - 40 * t10}});
+  std::vector<model::Block> blocks{test::make_block(500, 1.0, 1.5), test::make_block(3000, 1.0, 1.5)};
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.7), blocks,
+                                   {0, 101}, 200, seed);
+  s.lines = {{"upper", 50}, {"lower", 120}};
+  return s;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+TEST(Runner, IdenticalResultsForOneTwoAndEightThreads) {
+  const Scenario s = slope_scenario();
+  const auto r1 = run(s, 1, true, 7), r2 = run(s, 2, true, 7), r8 = run(s, 8, true, 7);
+  ASSERT_EQ(r1.trajectories.size(), 400u);
+  for (const auto* r : {&r2, &r8}) {
+    ASSERT_EQ(r->trajectories.size(), r1.trajectories.size());
+    ASSERT_EQ(r->crossings.size(), r1.crossings.size());
+    ASSERT_EQ(r->impacts.size(), r1.impacts.size());
+    for (std::size_t i = 0; i < r1.trajectories.size(); ++i) {
+      const auto &a = r1.trajectories[i], &b = r->trajectories[i];
+      EXPECT_EQ(a.trajectory, b.trajectory);
+      EXPECT_TRUE(same_bits(a.stop.x, b.stop.x) && same_bits(a.stop.z, b.stop.z));
+      EXPECT_TRUE(same_bits(a.duration, b.duration));
+      EXPECT_TRUE(same_bits(a.max_jump_height, b.max_jump_height));
+      EXPECT_EQ(a.impacts, b.impacts);
+    }
+    for (std::size_t i = 0; i < r1.crossings.size(); ++i) {
+      EXPECT_TRUE(same_bits(r1.crossings[i].speed, r->crossings[i].speed));
+      EXPECT_TRUE(same_bits(r1.crossings[i].height, r->crossings[i].height));
+    }
+    for (std::size_t i = 0; i < r1.impacts.size(); i += 97)
+      EXPECT_TRUE(same_bits(r1.impacts[i].detail.roughness_deg, r->impacts[i].detail.roughness_deg));
+  }
+  // And a different seed gives different trajectories.
+  const auto other = run(slope_scenario(43), 2);
+  int differ = 0;
+  for (std::size_t i = 0; i < other.trajectories.size(); ++i)
+    differ += other.trajectories[i].stop.x != r1.trajectories[i].stop.x;
+  EXPECT_GT(differ, 300);
+}
+
+TEST(Trajectory, EveryTrajectoryEndsFiniteOnTheSlope) {
+  const Scenario s = slope_scenario();
+  const auto r = run(s, 2);
+  for (const auto& t : r.trajectories) {
+    EXPECT_NE(t.stop_reason, StopReason::numerical);
+    EXPECT_TRUE(std::isfinite(t.stop.x) && std::isfinite(t.stop.z));
+    const auto ground = s.profile.top_ground(t.stop.x);
+    if (t.stop_reason == StopReason::energy || t.stop_reason == StopReason::friction) {
+      ASSERT_TRUE(ground);
+      EXPECT_NEAR(t.stop.z, ground->z, 1e-6);  // stopped on the ground, not in it
+    }
+    EXPECT_GE(t.max_jump_height, 0.0);
+    EXPECT_GT(t.impacts, 0u);
+  }
+}
+
+TEST(Trajectory, BlocksOnALongLevelFloorAllStop) {
+  auto prof = test::make_profile({{0, 0}, {5000, 0}});
+  std::vector<model::Block> blocks{test::make_block(200), test::make_block(5000, 0.8, 1.6)};
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(5, 50, 0.35), blocks,
+                                   {10, 3}, 100);
+  s.sources[0].velocity = {12, 0};
+  for (const auto& t : run(s, 2).trajectories) {
+    EXPECT_TRUE(t.stop_reason == StopReason::energy || t.stop_reason == StopReason::friction)
+        << to_string(t.stop_reason);
+    EXPECT_LT(t.stop.x, 5000);
+  }
+}
+
+TEST(Trajectory, BlockInAVNotchStopsInFiniteTime) {
+  // Two 40° flanks meeting at (50, 0); φ = 30° < 40°, so it cannot rest on a flank.
+  const double t40 = std::tan(40 * M_PI / 180);
+  auto prof = test::make_profile({{0, 50 * t40}, {50, 0}, {100, 50 * t40}});
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.5, 30),
+                                   {test::make_block(1000)}, {20, 30 * t40}, 50);
+  for (const auto& t : run(s, 1).trajectories) {
+    EXPECT_TRUE(t.stop_reason == StopReason::energy || t.stop_reason == StopReason::friction)
+        << to_string(t.stop_reason);
+    EXPECT_LT(t.duration, 600.0);
+    // It ends in the notch, below where it started (the energy criterion may stop it on a
+    // flank: a stop is an impact whose rebound head is below c_stop R, wherever it is).
+    EXPECT_GT(t.stop.x, 20.0);
+    EXPECT_LT(t.stop.x, 80.0);
+    EXPECT_LT(t.stop.z, 30 * t40);
+  }
+}
+
+TEST(Trajectory, BlockOnA45DegreeSlopeSlidesLaunchesAndKeepsGoing) {
+  // Placed on the ground (source below it) with φ = 30°: a = g (sin 45 − cos 45 tan 30) > 0.
+  auto prof = test::make_profile({{0, 200}, {200, 0}, {600, 0}});
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3, 30),
+                                   {test::make_block(1000)}, {10, 150}, 20);
+  const auto r = run(s, 1, true);
+  for (const auto& t : r.trajectories) {
+    EXPECT_NEAR(t.start.z, 190.0, 1e-9);  // placed on the ground
+    EXPECT_GT(t.stop.x, 200.0);           // went all the way down
+    EXPECT_NE(t.stop_reason, StopReason::numerical);
+  }
+  // The first impact is the launch at the maximum sliding speed (5 m/s), after sliding
+  // s = v²/2a along the slope: exactly where the closed form puts it.
+  const double a = 9.81 * (std::sin(M_PI / 4) - std::cos(M_PI / 4) * std::tan(M_PI / 6));
+  const double s_launch = 25.0 / (2 * a);
+  const auto& first = r.impacts.front();
+  EXPECT_EQ(first.index, 0u);
+  EXPECT_NEAR(first.time, 5.0 / a, 1e-9);
+  EXPECT_NEAR(first.position.x, 10 + s_launch / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(std::hypot(first.detail.vt_in, first.detail.vn_in), 5.0, 1e-9);
+}
+
+TEST(Trajectory, BlockAtRestOnAGentleSlopeStopsByFriction) {
+  auto prof = test::make_profile({{0, 20}, {100, 0}});  // 11.3° < φ = 30°
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3, 30),
+                                   {test::make_block(1000)}, {10, 0}, 3);
+  for (const auto& t : run(s, 1).trajectories) {
+    EXPECT_EQ(t.stop_reason, StopReason::friction);
+    EXPECT_EQ(t.duration, 0.0);
+    EXPECT_EQ(t.impacts, 0u);
+  }
+}
+
+TEST(Trajectory, FlyingOffTheProfileEndsAtTheBoundary) {
+  auto prof = test::make_profile({{0, 100}, {10, 0}});
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3),
+                                   {test::make_block(1000)}, {0, 101}, 1);
+  s.sources[0].velocity = {30, 0};  // clears the whole 10 m section
+  const auto t = run(s, 1).trajectories.at(0);
+  EXPECT_EQ(t.stop_reason, StopReason::boundary);
+  EXPECT_NEAR(t.stop.x, 10.0, 1e-12);
+  EXPECT_EQ(t.impacts, 0u);
+}
