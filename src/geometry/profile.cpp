@@ -30,22 +30,26 @@ bool segments_intersect(const Segment& p, const Segment& q) {
          (d3 == 0 && on(p.a, p.b, q.a)) || (d4 == 0 && on(p.a, p.b, q.b));
 }
 
-// The time window in which the parabola's x lies in [lo, hi], clipped to [t0, t1].
-bool x_window(double x0, double vx, double lo, double hi, double t0, double t1, double& ta,
-              double& tb) {
-  if (vx > 0) {
-    ta = std::max(t0, (lo - x0) / vx);
-    tb = std::min(t1, (hi - x0) / vx);
-  } else if (vx < 0) {
-    ta = std::max(t0, (hi - x0) / vx);
-    tb = std::min(t1, (lo - x0) / vx);
-  } else {
-    if (x0 < lo || x0 > hi) return false;
-    ta = t0;
-    tb = t1;
+// The horizontal motion of an arc, x(t) = x0 + vx t, with 1/vx kept: the time window in which
+// x lies in [lo, hi], clipped to [0, t1], costs two multiplications.
+struct ArcX {
+  double x0, vx, inv;
+  ArcX(double x, double v) : x0(x), vx(v), inv(v != 0.0 ? 1.0 / v : 0.0) {}
+  bool window(double lo, double hi, double t1, double& ta, double& tb) const {
+    if (vx > 0) {
+      ta = std::max(0.0, (lo - x0) * inv);
+      tb = std::min(t1, (hi - x0) * inv);
+    } else if (vx < 0) {
+      ta = std::max(0.0, (hi - x0) * inv);
+      tb = std::min(t1, (lo - x0) * inv);
+    } else {
+      if (x0 < lo || x0 > hi) return false;
+      ta = 0.0;
+      tb = t1;
+    }
+    return ta <= tb;
   }
-  return ta <= tb;
-}
+};
 
 }  // namespace
 
@@ -103,6 +107,16 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
 
   p.nodes_.reserve(2 * p.segments_.size() / kLeafSize + 4);
   p.build_node(0, static_cast<int>(p.segments_.size()));
+  p.parents_.assign(p.nodes_.size(), -1);
+  p.leaf_of_.assign(p.segments_.size(), 0);
+  for (std::size_t k = 0; k < p.nodes_.size(); ++k) {
+    const Node& nd = p.nodes_[k];
+    if (nd.left >= 0) {
+      p.parents_[nd.left] = p.parents_[nd.right] = static_cast<int>(k);
+    } else {
+      for (int j = nd.first; j < nd.last; ++j) p.leaf_of_[j] = static_cast<int>(k);
+    }
+  }
 
   // Self-intersection: every pair of non-adjacent segments whose boxes overlap.
   for (std::size_t i = 0; i < p.segments_.size() && found.empty(); ++i) {
@@ -137,14 +151,29 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
 
 int Profile::build_node(int first, int last) {
   const int id = static_cast<int>(nodes_.size());
-  nodes_.push_back({kInf, -kInf, kInf, -kInf, first, last});
-  Node nd = nodes_[id];
+  Node nd;
+  nd.x_lo = nd.z_lo = kInf;
+  nd.x_hi = nd.z_hi = -kInf;
+  nd.first = first;
+  nd.last = last;
+  nodes_.push_back(nd);
   for (int i = first; i < last; ++i) {
     const Segment& s = segments_[i];
     nd.x_lo = std::min({nd.x_lo, s.a.x, s.b.x});
     nd.x_hi = std::max({nd.x_hi, s.a.x, s.b.x});
     nd.z_lo = std::min({nd.z_lo, s.a.z, s.b.z});
     nd.z_hi = std::max({nd.z_hi, s.a.z, s.b.z});
+  }
+  const Vec2 v0 = segments_[first].a, v1 = segments_[last - 1].b;
+  nd.slope = std::abs(v1.x - v0.x) > 1e-9 * (1 + std::abs(v1.z - v0.z)) ? (v1.z - v0.z) / (v1.x - v0.x) : 0.0;
+  nd.icpt = v0.z - nd.slope * v0.x;
+  nd.off_lo = kInf;
+  nd.off_hi = -kInf;
+  for (int i = first; i <= last; ++i) {  // the offset is affine: its extremes are at vertices
+    const Vec2 v = i < last ? segments_[i].a : segments_[last - 1].b;
+    const double off = v.z - (nd.icpt + nd.slope * v.x);
+    nd.off_lo = std::min(nd.off_lo, off);
+    nd.off_hi = std::max(nd.off_hi, off);
   }
   if (last - first > kLeafSize) {
     const int mid = first + (last - first) / 2;
@@ -160,6 +189,7 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
   Contact best;
   double t_best = t_max;
   bool found = false;
+  const ArcX ax(p0.x, v0.x);
 
   auto test_segment = [&](int j) {
     const Segment& s = segments_[j];
@@ -208,36 +238,64 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
     }
   };
 
-  // Best-first walk of the tree: the child the block reaches first is visited first, and
-  // a box is skipped when the arc cannot reach it before the best contact so far.
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& nd = nodes_[stack[--top]];
-    double ta, tb;
-    if (!x_window(p0.x, v0.x, nd.x_lo - kEps, nd.x_hi + kEps, 0.0, t_best, ta, tb)) continue;
-    const double za = p0.z + v0.z * ta - 0.5 * g * ta * ta;
-    const double zb = p0.z + v0.z * tb - 0.5 * g * tb * tb;
-    if (std::min(za, zb) > nd.z_hi + kEps) continue;  // concave arc: lowest at an end
-    const double t_apex = std::clamp(v0.z / g, ta, tb);
-    const double z_top = p0.z + v0.z * t_apex - 0.5 * g * t_apex * t_apex;
-    if (z_top < nd.z_lo - kEps) continue;
-    if (nd.left < 0) {
-      for (int j = nd.first; j < nd.last; ++j) test_segment(j);
-      continue;
+  // Best-first walk of a subtree: the child the block reaches first is visited first, and a
+  // node is skipped when the arc cannot meet its segments before the best contact so far.
+  auto search = [&](int root) {
+    int stack[128];
+    int top = 0;
+    stack[top++] = root;
+    while (top > 0) {
+      const Node& nd = nodes_[stack[--top]];
+      double ta, tb;
+      if (!ax.window(nd.x_lo - kEps, nd.x_hi + kEps, t_best, ta, tb)) continue;
+      // q(t) = z(t) − chord(x(t)) is a concave quadratic: a contact needs q in [off_lo, off_hi].
+      const double q0 = p0.z - nd.icpt - nd.slope * p0.x, q1 = v0.z - nd.slope * v0.x;
+      auto q = [&](double t) { return q0 + q1 * t - 0.5 * g * t * t; };
+      if (std::min(q(ta), q(tb)) > nd.off_hi + kEps) continue;  // lowest at an end
+      if (q(std::clamp(q1 / g, ta, tb)) < nd.off_lo - kEps) continue;
+      if (nd.left < 0) {
+        for (int j = nd.first; j < nd.last; ++j)
+          if (j != dep.segment[0] && j != dep.segment[1]) test_segment(j);  // tested first
+        continue;
+      }
+      const Node& l = nodes_[nd.left];
+      const Node& r = nodes_[nd.right];
+      // Push the later child first: along the flight, the one nearer in x is reached first.
+      const double kl = v0.x >= 0 ? l.x_lo : -l.x_hi;
+      const double kr = v0.x >= 0 ? r.x_lo : -r.x_hi;
+      if (kl <= kr) {
+        stack[top++] = nd.right;
+        stack[top++] = nd.left;
+      } else {
+        stack[top++] = nd.left;
+        stack[top++] = nd.right;
+      }
     }
-    const Node& l = nodes_[nd.left];
-    const Node& r = nodes_[nd.right];
-    // Push the later child first: along the flight, the one nearer in x is reached first.
-    const double kl = v0.x >= 0 ? l.x_lo : -l.x_hi;
-    const double kr = v0.x >= 0 ? r.x_lo : -r.x_hi;
-    if (kl <= kr) {
-      stack[top++] = nd.right;
-      stack[top++] = nd.left;
-    } else {
-      stack[top++] = nd.left;
-      stack[top++] = nd.right;
+  };
+
+  int seed = -1;
+  for (int k = 0; k < 2; ++k)
+    if (dep.segment[k] >= 0) {
+      test_segment(dep.segment[k]);  // a concave neighbour may be entered at once
+      seed = std::max(seed, dep.segment[k]);
+    }
+  if (!x_monotone_ || v0.x == 0.0 || seed < 0) {
+    search(0);
+  } else {
+    // On a section without overhangs x grows with the segment index (times main_direction),
+    // and along a flight x changes monotonically with time: the first contact is in the
+    // departure's leaf or in the nearest subtree beyond it. Climb from the leaf and search
+    // only the siblings ahead, which keeps a short hop on a 10 000-vertex section cheap.
+    const bool ahead_is_right = (v0.x > 0) == (main_direction_ > 0);
+    if (!ahead_is_right) seed = std::min(dep.segment[0], dep.segment[1] >= 0 ? dep.segment[1] : dep.segment[0]);
+    int node = leaf_of_[seed];
+    search(node);
+    while (!found && node != 0) {
+      const int parent = parents_[node];
+      const Node& pn = nodes_[parent];
+      if (ahead_is_right && pn.left == node) search(pn.right);
+      if (!ahead_is_right && pn.right == node) search(pn.left);
+      node = parent;
     }
   }
   if (!found) return std::nullopt;
@@ -274,14 +332,16 @@ std::optional<GroundPoint> Profile::ground_below(double x, double z) const {
 
 std::optional<GroundPoint> Profile::top_ground(double x) const { return ground_below(x, kInf); }
 
-double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end) const {
+double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end,
+                                        double at_least) const {
   auto z_at = [&](double t) { return p0.z + v0.z * t - 0.5 * g * t * t; };
   if (v0.x == 0.0) {  // vertical drop: one ground point under the whole arc
     const double t_apex = std::clamp(v0.z / g, 0.0, t_end);
     const auto ground = ground_below(p0.x, p0.z);
-    return ground ? z_at(t_apex) - ground->z : 0.0;
+    return std::max(at_least, ground ? z_at(t_apex) - ground->z : 0.0);
   }
-  double best = 0.0;
+  double best = std::max(0.0, at_least);
+  const ArcX ax(p0.x, v0.x);
   auto consider = [&](double t, int seg) {
     const double x = p0.x + v0.x * t, z = z_at(t);
     const auto ground = ground_below(x, z);
@@ -293,26 +353,45 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     best = std::max(best, z - ground->z);
   };
 
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& nd = nodes_[stack[--top]];
+  // Upper bound of h over a node: the arc's highest point over the node's window minus the
+  // node's lowest ground; -inf when the arc does not pass over the node.
+  auto bound = [&](const Node& nd) {
     double ta, tb;
-    if (!x_window(p0.x, v0.x, nd.x_lo, nd.x_hi, 0.0, t_end, ta, tb)) continue;
-    const double t_apex = std::clamp(v0.z / g, ta, tb);
-    if (z_at(t_apex) - nd.z_lo <= best) continue;  // cannot beat the best so far
+    if (!ax.window(nd.x_lo, nd.x_hi, t_end, ta, tb)) return -kInf;
+    // h ≤ q(t) − off_lo with q(t) = z(t) − chord(x(t)), a concave quadratic.
+    const double q0 = p0.z - nd.icpt - nd.slope * p0.x, q1 = v0.z - nd.slope * v0.x;
+    const double t = std::clamp(q1 / g, ta, tb);
+    return q0 + q1 * t - 0.5 * g * t * t - nd.off_lo;
+  };
+  struct Item {
+    int node;
+    double bound;
+  };
+  Item stack[128];
+  int top = 0;
+  stack[top++] = {0, bound(nodes_[0])};
+  while (top > 0) {
+    const Item it = stack[--top];
+    if (it.bound <= best) continue;  // cannot beat the best so far
+    const Node& nd = nodes_[it.node];
     if (nd.left >= 0) {
-      stack[top++] = nd.left;
-      stack[top++] = nd.right;
+      // Best first: the child with the larger bound is popped first, so `best` rises early
+      // and most of the other nodes are cut.
+      const Item l{nd.left, bound(nodes_[nd.left])}, r{nd.right, bound(nodes_[nd.right])};
+      if (l.bound > r.bound) {
+        stack[top++] = r;
+        stack[top++] = l;
+      } else {
+        stack[top++] = l;
+        stack[top++] = r;
+      }
       continue;
     }
     for (int j = nd.first; j < nd.last; ++j) {
       const Segment& s = segments_[j];
       if (s.d.x == 0.0) continue;
       double sa, sb;
-      if (!x_window(p0.x, v0.x, std::min(s.a.x, s.b.x), std::max(s.a.x, s.b.x), 0.0, t_end, sa,
-                    sb))
+      if (!ax.window(std::min(s.a.x, s.b.x), std::max(s.a.x, s.b.x), t_end, sa, sb))
         continue;
       // h(t) = z(t) - ground(x(t)) is a concave quadratic on this segment.
       const double slope = s.d.z / s.d.x;

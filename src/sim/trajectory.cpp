@@ -148,8 +148,7 @@ class Integrator {
 
   void advance_flight(double tau) {
     if (!tally_.empty()) tally_.flight(p_, v_, omega_, t_, tau, g_);
-    out_.max_jump_height =
-        std::max(out_.max_jump_height, profile_.max_height_above_ground(p_, v_, g_, tau));
+    out_.max_jump_height = profile_.max_height_above_ground(p_, v_, g_, tau, out_.max_jump_height);
     p_ = {p_.x + v_.x * tau, p_.z + v_.z * tau - 0.5 * g_ * tau * tau};
     v_ = {v_.x, v_.z - g_ * tau};
     t_ += tau;

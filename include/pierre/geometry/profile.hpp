@@ -83,12 +83,19 @@ class Profile {
 
   // Largest vertical distance between the parabola and the ground directly below it over
   // the arc 0 <= t <= t_end (model-2d.md §4). Exact: piecewise concave, maximised per segment.
-  double max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end) const;
+  // Returns at_least when the arc cannot exceed it (the trajectory's running maximum), which
+  // lets the search skip every part of the section that cannot hold a new maximum.
+  double max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end,
+                                 double at_least = 0.0) const;
 
  private:
-  struct Node {  // bounding box of the segments [first, last)
-    double x_lo, x_hi, z_lo, z_hi;
-    int first, last;
+  // Bounds of the segments [first, last): their box, and a band about the chord from the
+  // first to the last vertex — every point of them has z − (icpt + slope·x) in [off_lo, off_hi].
+  // On a sloping or finely subdivided section the band is far tighter than the box.
+  struct Node {
+    double x_lo = 0, x_hi = 0, z_lo = 0, z_hi = 0;
+    double slope = 0, icpt = 0, off_lo = 0, off_hi = 0;
+    int first = 0, last = 0;
     int left = -1, right = -1;
   };
   int build_node(int first, int last);
@@ -97,6 +104,8 @@ class Profile {
   std::vector<Segment> segments_;
   std::vector<VertexTurn> turns_;
   std::vector<Node> nodes_;
+  std::vector<int> parents_;  // parent of each node (-1 for the root)
+  std::vector<int> leaf_of_;  // leaf node holding each segment
   double x_min_ = 0, x_max_ = 0;
   int main_direction_ = 1;
   bool x_monotone_ = true;  // every vertical line meets the ground once: no overhangs
