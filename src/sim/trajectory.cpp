@@ -172,20 +172,18 @@ class Integrator {
       out_.first_impact = p_;
     }
     const auto draws = rng_->impact_draws();
-    model::ImpactDetail detail;
-    const auto res = m_.law().resolve(v_, omega_, s, m_.surface(s.material), *blk_, draws,
-                                      impacts_ ? &detail : nullptr);
+    ImpactRecord* rec = nullptr;  // the TR record, only when asked for
     if (impacts_) {
-      ImpactRecord r;
-      r.trajectory = out_.trajectory;
-      r.index = static_cast<std::uint32_t>(impacts_done_);
-      r.time = t_;
-      r.position = p_;
-      r.segment = static_cast<std::uint32_t>(j);
-      r.result = res.result;
-      r.detail = detail;
-      impacts_->push_back(r);
+      rec = &impacts_->emplace_back();
+      rec->trajectory = out_.trajectory;
+      rec->index = static_cast<std::uint32_t>(impacts_done_);
+      rec->time = t_;
+      rec->position = p_;
+      rec->segment = static_cast<std::uint32_t>(j);
     }
+    const auto res = m_.law().resolve(v_, omega_, s, m_.surface(s.material), *blk_, draws,
+                                      rec ? &rec->detail : nullptr);
+    if (rec) rec->result = res.result;
     ++impacts_done_;
     v_ = res.v;
     omega_ = res.omega;

@@ -1,0 +1,142 @@
+// Throughput of the simulator (issue: speed is measured here, never asserted in tests).
+//
+//   build/bench/bench_sim [--quick]
+//
+// For each shipped example, on one thread and on all threads: trajectories/s and impacts/s of
+// the simulation alone (summaries and crossings kept in memory, no text output), the same for
+// a whole `pierre run` with its files written, the bare impact-law loop (random draws +
+// restitution + Goldsmith on a fixed plane: the limit the simulator approaches), the
+// quarry section subdivided into collinear pieces to 10 000 vertices, and peak memory.
+#include <fmt/core.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <thread>
+
+#include "pierre/io/scenario_reader.hpp"
+#include "pierre/sim/runner.hpp"
+
+using namespace pierre;
+namespace fs = std::filesystem;
+
+namespace {
+
+double now() {
+  using clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(clock::now().time_since_epoch()).count();
+}
+
+struct Rate {
+  double traj_per_s, impacts_per_s, seconds;
+};
+
+Rate simulate(const sim::Scenario& s, unsigned threads) {
+  sim::ResultCollector sink;
+  sim::RunOptions o;
+  o.threads = threads;
+  const double t0 = now();
+  const auto rep = sim::run_simulation(s, o, sink);
+  const double dt = now() - t0;
+  return {rep.trajectories / dt, rep.impacts / dt, dt};
+}
+
+// The same geometry with every segment cut into equal collinear pieces (model-2d.md §2: the
+// same physics, so the same numbers).
+sim::Scenario subdivided(const sim::Scenario& s, std::size_t target_vertices) {
+  const auto& segs = s.profile.segments();
+  const std::size_t per = std::max<std::size_t>(1, (target_vertices - 1) / segs.size());
+  std::vector<geometry::Vec2> pts;
+  std::vector<int> mats;
+  for (const auto& g : segs)
+    for (std::size_t k = 0; k < per; ++k) {
+      const double u = double(k) / per;
+      pts.push_back({g.a.x + u * (g.b.x - g.a.x), g.a.z + u * (g.b.z - g.a.z)});
+      mats.push_back(g.material);
+    }
+  pts.push_back(segs.back().b);
+  sim::Scenario out = s;
+  out.profile = *geometry::Profile::build(pts, mats, nullptr);
+  return out;
+}
+
+double bare_impact_loop(const sim::Scenario& s, long n) {
+  const model::ImpactLaw law(s.settings.roughness, s.settings.stop_head_factor,
+                             s.settings.gravity);
+  const auto surf = law.surface(s.materials.front());
+  const auto blk = law.block(s.blocks.front());
+  const auto& seg = s.profile.segment(0);
+  sim::RandomStream rng(s.settings.seed, 0);
+  double sink = 0;
+  const geometry::Vec2 v = 12.0 * seg.d - 6.0 * seg.n;
+  const double t0 = now();
+  for (long i = 0; i < n; ++i) {
+    const auto r = law.resolve(v, 1.5, seg, surf, blk, rng.impact_draws());
+    sink += r.v.x + r.omega;
+  }
+  const double dt = now() - t0;
+  if (sink == 42.0) fmt::print("");  // keep the loop
+  return n / dt;
+}
+
+double peak_rss_mb() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return ru.ru_maxrss / 1024.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
+  const fs::path root = PIERRE_SOURCE_DIR;
+  const unsigned all = std::max(1u, std::thread::hardware_concurrency());
+  fmt::print("pierre bench_sim — {} hardware threads{}\n\n", all, quick ? " (quick)" : "");
+
+  struct Case {
+    const char* name;
+    std::uint32_t throws;
+  };
+  const Case cases[] = {{"quarry-preg", quick ? 4000u : 40000u}, {"vaujany-2d", quick ? 200u : 2000u}};
+  for (const Case& c : cases) {
+    const fs::path file = root / "examples" / c.name / "scenario.toml";
+    auto loaded = io::load_scenario(file, root / "rules");
+    sim::Scenario s = loaded.scenario;
+    s.settings.throws = c.throws;
+    fmt::print("== {} : {} trajectories, {} profile vertices\n", c.name, s.trajectory_count(),
+               s.profile.vertices().size());
+    const Rate r1 = simulate(s, 1);
+    fmt::print("  simulation, 1 thread   : {:>10.0f} trajectories/s {:>11.0f} impacts/s ({:.2f} impacts/trajectory)\n",
+               r1.traj_per_s, r1.impacts_per_s, r1.impacts_per_s / r1.traj_per_s);
+    const Rate rn = simulate(s, all);
+    fmt::print("  simulation, {} threads  : {:>10.0f} trajectories/s {:>11.0f} impacts/s (x{:.2f})\n", all,
+               rn.traj_per_s, rn.impacts_per_s, rn.traj_per_s / r1.traj_per_s);
+    const double bare = bare_impact_loop(s, quick ? 2'000'000 : 20'000'000);
+    fmt::print("  bare impact-law loop   : {:>10.0f} impacts/s; simulator/bare = {:.2f}\n", bare,
+               r1.impacts_per_s / bare);
+    if (std::string(c.name) == "quarry-preg") {
+      const sim::Scenario fine = subdivided(s, 10000);
+      const Rate rf = simulate(fine, 1);
+      fmt::print("  subdivided to {} vertices, 1 thread: {:>10.0f} trajectories/s; cost x{:.2f} of the original\n",
+                 fine.profile.vertices().size(), rf.traj_per_s, r1.traj_per_s / rf.traj_per_s);
+    }
+    // A whole run with its files written, through the command line, one and all threads.
+    for (unsigned th : {1u, all}) {
+      const fs::path out = fs::temp_directory_path() / fmt::format("pierre-bench-{}-{}", c.name, th);
+      fs::remove_all(out);
+      const std::string cmd =
+          fmt::format("\"{}\" run \"{}\" --out \"{}\" --throws {} --threads {} --quiet > /dev/null",
+                      PIERRE_BINARY, file.string(), out.string(), c.throws, th);
+      const double t0 = now();
+      const int rc = std::system(cmd.c_str());
+      const double dt = now() - t0;
+      fmt::print("  pierre run, {} thread(s): {:>10.0f} trajectories/s (exit {}, {:.2f} s)\n", th,
+                 s.trajectory_count() / dt, rc, dt);
+      fs::remove_all(out);
+    }
+  }
+  fmt::print("\npeak resident memory of this benchmark: {:.0f} MB\n", peak_rss_mb());
+  return 0;
+}
