@@ -1,1 +1,64 @@
-int main() { return 0; }
+// pierre: the command line. Sub-commands live in their own files (commands.hpp); this file
+// parses, dispatches and turns every failure into a message and an exit code:
+// help and --version 0, usage errors and bad input 2, anything unexpected 3.
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "pierre/io/input_error.hpp"
+
+#ifndef PIERRE_VERSION
+#define PIERRE_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace pierre::app;
+  try {
+    CLI::App app{"pierre " PIERRE_VERSION
+                 " — stochastic lumped-mass rockfall simulation (PIERRE 2) and protection design",
+                 "pierre"};
+    app.set_version_flag("--version", "pierre " PIERRE_VERSION);
+    app.require_subcommand(1);
+    app.footer(
+        "Example:\n"
+        "  pierre validate examples/vaujany/scenario.toml\n"
+        "  pierre run examples/vaujany/scenario.toml --out results/vaujany --seed 42\n"
+        "Run `pierre <command> --help` for a command's options. Exit codes: 0 ran, 2 bad\n"
+        "input or usage, 3 internal error.");
+
+    std::vector<std::unique_ptr<Command>> commands;
+    commands.push_back(make_run_command());
+    commands.push_back(make_validate_command());
+    // (`pierre check` joins this list.)
+    std::vector<CLI::App*> subs;
+    for (auto& c : commands) subs.push_back(c->add_to(app));
+
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --help-all, --version
+      app.exit(e);
+      return kExitOk;
+    } catch (const CLI::ParseError& e) {
+      app.exit(e);
+      return kExitInput;
+    }
+    for (std::size_t i = 0; i < commands.size(); ++i)
+      if (subs[i]->parsed()) return commands[i]->run();
+    return kExitInput;
+  } catch (const pierre::io::InputError& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "{}\n", e.what());
+    return kExitInput;
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "internal error: {}\n", e.what());
+    return kExitInternal;
+  } catch (...) {
+    fmt::print(stderr, "internal error: unknown exception\n");
+    return kExitInternal;
+  }
+}

@@ -30,11 +30,18 @@ struct LoadedScenario {
   std::filesystem::path materials_file;  // where the presets came from
 };
 
-// `rules_dir` holds materials.toml (and, later, design rule sets).
+// `rules_dir` holds materials.toml (and, later, design rule sets); it is only read when a
+// material names a preset and the scenario gives no `materials_file`.
+// Numbers: an integer is accepted where a float is expected (`mass = 1500`); nothing else
+// converts (`throws = "5"` or `throws = 5.0` is an error). NaN and infinities are errors.
 LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
                              const std::filesystem::path& rules_dir);
 
-// The rules/ folder: $PIERRE_RULES if set, else the source tree's rules/ compiled in.
+// The rules/ folder when the caller has none: $PIERRE_RULES if set and not empty; else
+// `<executable's folder>/../rules` or `<executable's folder>/../share/pierre/rules` when it holds
+// materials.toml (a build folder inside the source tree, or an installation); else "rules"
+// (relative to the working folder). The io library has no compiled-in source path: the
+// `pierre` program passes its own (--rules, $PIERRE_RULES, then the source tree's rules/).
 std::filesystem::path default_rules_dir();
 
 }  // namespace pierre::io

@@ -1,0 +1,90 @@
+// Statistics of a run for the console table and summary.json: per observation line the
+// speed, passing height and translational energy of the crossings (model-2d.md §5: the first
+// crossing of each trajectory in the main travel direction), the runout distribution and the
+// stop-reason counts. Pure: samples in, plain structs out. Percentiles are the empirical
+// type-7 estimator (Hyndman & Fan 1996; R's and NumPy's default).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pierre/sim/observation_line.hpp"
+#include "pierre/sim/results.hpp"
+
+namespace pierre::design {
+
+inline constexpr std::size_t kStopReasonCount = 6;  // the values of sim::StopReason
+
+// Samples kept while a run streams by: only what the statistics need.
+struct LineSamples {
+  std::vector<double> speed;                 // m/s
+  std::vector<double> height;                // m, passing height
+  std::vector<double> translational_energy;  // J
+};
+
+class RunSamples {
+ public:
+  RunSamples() = default;
+  // `main_direction`: +1 when the profile runs towards increasing x (Profile::main_direction).
+  RunSamples(std::size_t line_count, int main_direction);
+
+  void add(const sim::TrajectorySummary& t);
+  // Keeps the crossing when it is its trajectory's first on that line in the main direction.
+  // Crossings must arrive in trajectory order (as the runner delivers them).
+  void add(const sim::Crossing& c);
+
+  const std::vector<LineSamples>& lines() const { return lines_; }
+  const std::vector<double>& runout() const { return runout_; }  // m, one per trajectory
+  const std::array<std::uint64_t, kStopReasonCount>& stop_reasons() const { return stops_; }
+  std::uint64_t trajectories() const { return runout_.size(); }
+
+ private:
+  std::vector<LineSamples> lines_;
+  std::vector<std::uint64_t> last_kept_;  // per line: 1 + trajectory of the last kept crossing
+  int main_direction_ = 1;
+  std::vector<double> runout_;
+  std::array<std::uint64_t, kStopReasonCount> stops_{};
+};
+
+// count, mean, P50, P95 and max of one quantity; NaN statistics when count is 0.
+struct QuantityStatistics {
+  std::uint64_t count = 0;
+  double mean = 0, p50 = 0, p95 = 0, max = 0;
+};
+
+struct LineStatistics {
+  std::string name;
+  double chainage = 0;            // m
+  std::uint64_t count = 0;        // trajectories that crossed in the main direction
+  std::uint64_t not_reached = 0;  // trajectories that did not
+  QuantityStatistics speed;                 // m/s
+  QuantityStatistics height;                // m
+  QuantityStatistics translational_energy;  // J
+};
+
+struct RunoutStatistics {
+  std::uint64_t count = 0;
+  double p50 = 0, p95 = 0, p99 = 0, max = 0;  // m; NaN when count is 0
+};
+
+struct StopReasonCount {
+  sim::StopReason reason;
+  std::uint64_t count = 0;
+};
+
+struct RunStatistics {
+  std::uint64_t trajectories = 0;
+  std::vector<LineStatistics> lines;
+  RunoutStatistics runout;
+  std::vector<StopReasonCount> stop_reasons;  // every reason, in enum order, zeros included
+};
+
+RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
+                             const RunSamples& samples);
+QuantityStatistics quantity_statistics(std::vector<double> values);
+// Type-7 percentile of sorted values, p in [0, 1]; NaN when empty.
+double percentile_sorted(const std::vector<double>& sorted, double p);
+
+}  // namespace pierre::design

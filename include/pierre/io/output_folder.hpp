@@ -1,0 +1,41 @@
+// Atomic output: a run writes into a staging folder inside the output folder
+// (`DIR/.pierre-partial-<pid>/`) and moves each file into DIR only once the run has succeeded
+// (commit). Without a commit — an exception, a failed sink — the destructor removes the
+// staging folder, and DIR too when this object created it and it is left empty, so a failed
+// run leaves nothing behind.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pierre::io {
+
+class OutputFolder {
+ public:
+  // Creates DIR (and its parents) when missing, then the staging folder. Throws
+  // std::filesystem::filesystem_error when DIR cannot be created or is not a folder.
+  explicit OutputFolder(std::filesystem::path dir);
+  ~OutputFolder();
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+
+  const std::filesystem::path& dir() const { return dir_; }
+  const std::filesystem::path& staging() const { return staging_; }
+  std::filesystem::path staged(std::string_view name) const { return staging_ / name; }
+
+  // Moves every staged file into DIR (replacing files of the same name), removes the files of
+  // DIR named in `stale` that this run did not produce (outputs of an earlier run with other
+  // options), removes the staging folder. Returns the final paths, sorted by name.
+  std::vector<std::filesystem::path> commit(const std::vector<std::string>& stale = {});
+  // Removes the staging folder (and DIR when created here and empty); never throws.
+  void discard() noexcept;
+
+ private:
+  std::filesystem::path dir_, staging_;
+  bool created_dir_ = false;
+  bool done_ = false;
+};
+
+}  // namespace pierre::io

@@ -1,0 +1,80 @@
+// The run's result files, streamed as the runner delivers chunks (in trajectory order):
+//
+// trajectories.csv — one row per trajectory (model-2d.md §4):
+//   trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,runout_m,
+//   stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,max_jump_height_m,
+//   max_speed_m_s,max_energy_kJ
+//   (trajectory: the global index that keys the random stream, from 0; throw from 0; the
+//   first impact is empty when there was none)
+// crossings.csv — one row per recorded crossing (model-2d.md §5):
+//   trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,speed_m_s,
+//   omega_rad_s,translational_energy_kJ,rotational_energy_kJ,passing_height_m,sliding
+//   (line: the observation line's name; direction +1 towards increasing x; sliding 0/1)
+// impacts.csv (optional) — one row per impact (the thesis's TR file, model-2d.md §3 step 9):
+//   trajectory,impact,time_s,x_m,z_m,segment,material,result,slope_deg,roughness_deg,r_eff_m,
+//   vt_in_m_s,vn_in_m_s,vt_out_m_s,vn_out_m_s,vt_in_rot_m_s,vn_in_rot_m_s,vt_out_rot_m_s,
+//   vn_out_rot_m_s,kn,kt,kn_apparent,kt_apparent,incidence_deg,contained,energy_in_kJ,
+//   energy_out_kJ
+//
+// Numbers are written with 9 significant digits ({:.9g}): the same seed gives the same bytes.
+// Only what the statistics need stays in memory (design::RunSamples).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pierre/design/run_statistics.hpp"
+#include "pierre/sim/runner.hpp"
+#include "pierre/sim/scenario.hpp"
+
+namespace pierre::io {
+
+inline constexpr const char* kTrajectoriesCsv = "trajectories.csv";
+inline constexpr const char* kCrossingsCsv = "crossings.csv";
+inline constexpr const char* kImpactsCsv = "impacts.csv";
+inline constexpr const char* kSummaryJson = "summary.json";
+
+class ResultFiles final : public sim::ResultSink {
+ public:
+  // Opens the CSV files in `folder` and writes their headers; `impacts` adds impacts.csv.
+  // Throws std::runtime_error when a file cannot be opened.
+  ResultFiles(const std::filesystem::path& folder, const sim::Scenario& scenario, bool impacts);
+  ~ResultFiles() override;
+
+  void consume(sim::ChunkResult&& chunk) override;  // throws std::runtime_error on write errors
+  // Flushes and closes every file; throws std::runtime_error when a write failed.
+  void close();
+
+  const design::RunSamples& samples() const { return samples_; }
+
+  class Csv;  // a buffered file
+
+ private:
+  const sim::Scenario& scenario_;
+  std::unique_ptr<Csv> trajectories_, crossings_, impacts_;
+  design::RunSamples samples_;
+};
+
+// What summary.json says about the run besides the statistics.
+struct RunInfo {
+  std::string scenario_name;
+  std::filesystem::path scenario_file;
+  std::filesystem::path materials_file;
+  std::uint64_t seed = 0;
+  std::uint32_t throws = 0;
+  std::uint64_t trajectories = 0;
+  std::uint64_t blocks = 0, sources = 0;
+  unsigned threads = 0;  // worker threads used
+  bool all_crossings = false;
+};
+
+// summary.json's text (pretty-printed, NaN as null): pierre version, scenario, seed, throws,
+// trajectories, threads, stop-reason counts, per-line statistics (energies in kJ), runout.
+std::string summary_json(const RunInfo& info, const design::RunStatistics& stats);
+void write_summary_json(const std::filesystem::path& file, const RunInfo& info,
+                        const design::RunStatistics& stats);
+
+}  // namespace pierre::io

@@ -1,0 +1,36 @@
+// The sub-commands of `pierre`. Each registers itself on the main CLI11 app and runs when it
+// was selected; adding one (e.g. `pierre check`) means one more make_*_command() and one more
+// line in main.cpp's list.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace pierre::app {
+
+// Exit codes (architecture.md): 0 ran, 1 a check failed, 2 bad input or usage, 3 internal.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInput = 2;
+inline constexpr int kExitInternal = 3;
+
+class Command {
+ public:
+  virtual ~Command() = default;
+  // Adds the sub-command and its options to `parent`; returns it.
+  virtual CLI::App* add_to(CLI::App& parent) = 0;
+  // Runs after a successful parse when this sub-command was chosen; returns the exit code.
+  // May throw io::InputError (exit 2) or anything else (exit 3).
+  virtual int run() = 0;
+};
+
+std::unique_ptr<Command> make_run_command();
+std::unique_ptr<Command> make_validate_command();
+
+// The rules folder: `option` (--rules) when given, else $PIERRE_RULES, else the source tree's
+// rules/ compiled in (PIERRE_SOURCE_DIR).
+std::filesystem::path rules_dir(const std::string& option);
+
+}  // namespace pierre::app

@@ -1,0 +1,87 @@
+#include "console.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace pierre::app {
+
+ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), start_(clock::now()), last_(start_) {}
+
+void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
+  if (!enabled_ || total == 0) return;
+  const auto now = clock::now();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  if (done < total && (now - last_ < std::chrono::milliseconds(200) || elapsed < 0.3)) return;
+  last_ = now;
+  const double frac = static_cast<double>(done) / static_cast<double>(total);
+  const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
+  const double eta = rate > 0 ? static_cast<double>(total - done) / rate : 0.0;
+  constexpr int width = 30;
+  const int filled = static_cast<int>(frac * width);
+  const auto eta_s = static_cast<long>(std::lround(eta));
+  fmt::print(stderr, "\r[{}{}] {:5.1f}%  {:.0f} trajectories/s  ETA {}:{:02d}:{:02d} ",
+             std::string(static_cast<std::size_t>(filled), '#'),
+             std::string(static_cast<std::size_t>(width - filled), ' '), 100.0 * frac, rate,
+             eta_s / 3600, (eta_s / 60) % 60, eta_s % 60);
+  std::fflush(stderr);
+  drawn_ = true;
+}
+
+void ProgressBar::finish() {
+  if (!drawn_) return;
+  fmt::print(stderr, "\r{}\r", std::string(79, ' '));
+  std::fflush(stderr);
+  drawn_ = false;
+}
+
+namespace {
+
+std::string cell(double v, int width) {
+  if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
+  return fmt::format("{:>{}.2f}", v, width);
+}
+
+}  // namespace
+
+void print_results(std::FILE* out, const design::RunStatistics& s, double seconds,
+                   const std::vector<std::filesystem::path>& files) {
+  fmt::print(out, "{} trajectories in {:.1f} s\n\n", s.trajectories, seconds);
+  if (!s.lines.empty()) {
+    fmt::print(out, "Observation lines (first crossing of each trajectory in the main direction)\n");
+    fmt::print(out, "{:<16} {:>9} {:>8} {:>8}  {:<26} {:>10} {:>10} {:>10} {:>10}\n", "line",
+               "x (m)", "count", "missed", "quantity", "mean", "P50", "P95", "max");
+    for (const auto& l : s.lines) {
+      struct Row {
+        const char* label;
+        const design::QuantityStatistics* q;
+        double scale;
+      };
+      const Row rows[] = {{"speed (m/s)", &l.speed, 1.0},
+                          {"passing height (m)", &l.height, 1.0},
+                          {"transl. energy (kJ)", &l.translational_energy, 1e-3}};
+      bool first = true;
+      for (const Row& r : rows) {
+        if (first)
+          fmt::print(out, "{:<16} {:>9.2f} {:>8} {:>8}  ", l.name, l.chainage, l.count,
+                     l.not_reached);
+        else
+          fmt::print(out, "{:<16} {:>9} {:>8} {:>8}  ", "", "", "", "");
+        first = false;
+        fmt::print(out, "{:<26} {} {} {} {}\n", r.label, cell(r.q->mean * r.scale, 10),
+                   cell(r.q->p50 * r.scale, 10), cell(r.q->p95 * r.scale, 10),
+                   cell(r.q->max * r.scale, 10));
+      }
+    }
+    fmt::print(out, "\n");
+  }
+  fmt::print(out, "Runout (m):   P50 {}   P95 {}   P99 {}   max {}\n", cell(s.runout.p50, 0),
+             cell(s.runout.p95, 0), cell(s.runout.p99, 0), cell(s.runout.max, 0));
+  fmt::print(out, "Stop reasons:");
+  for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
+  fmt::print(out, "\n\nWritten:\n");
+  for (const auto& f : files) fmt::print(out, "  {}\n", f.string());
+}
+
+}  // namespace pierre::app

@@ -1,0 +1,56 @@
+// pierre validate SCENARIO: every check of `run`, no simulation, a one-paragraph summary.
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "pierre/io/scenario_reader.hpp"
+
+namespace pierre::app {
+namespace {
+
+class ValidateCommand final : public Command {
+ public:
+  CLI::App* add_to(CLI::App& parent) override {
+    CLI::App* c = parent.add_subcommand("validate", "Check a scenario without running it");
+    c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
+        ->required();
+    c->add_option("--rules", rules_, "Rules folder holding materials.toml");
+    c->footer(
+        "Example:\n"
+        "  pierre validate examples/vaujany/scenario.toml\n"
+        "prints a summary and exits 0 when the scenario is valid; else names the file, line and\n"
+        "field at fault and exits 2.");
+    return c;
+  }
+
+  int run() override {
+    const io::LoadedScenario l = io::load_scenario(scenario_, rules_dir(rules_));
+    const sim::Scenario& s = l.scenario;
+    std::string mats;
+    for (const auto& m : s.materials)
+      mats += fmt::format("{}{} ({})", mats.empty() ? "" : ", ", m.name, m.source);
+    std::string lines;
+    for (const auto& o : s.lines)
+      lines += fmt::format("{}{} at x = {} m", lines.empty() ? "" : ", ", o.name, o.x);
+    fmt::print(
+        "{}: valid. \"{}\": a profile of {} vertices from x = {} to {} m; {} material{}: {}; "
+        "{} block{} in {} group{}; {} source{}; {} observation line{}{}{}. {} throw{} per block "
+        "and source with seed {}: {} trajectories to run.\n",
+        l.file.string(), s.name, s.profile.vertices().size(), s.profile.x_min(),
+        s.profile.x_max(), s.materials.size(), s.materials.size() == 1 ? "" : "s", mats,
+        s.blocks.size(), s.blocks.size() == 1 ? "" : "s", l.block_groups.size(),
+        l.block_groups.size() == 1 ? "" : "s", s.sources.size(), s.sources.size() == 1 ? "" : "s",
+        s.lines.size(), s.lines.size() == 1 ? "" : "s", lines.empty() ? "" : ": ", lines,
+        s.settings.throws, s.settings.throws == 1 ? "" : "s", s.settings.seed,
+        s.trajectory_count());
+    return kExitOk;
+  }
+
+ private:
+  std::string scenario_, rules_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_validate_command() { return std::make_unique<ValidateCommand>(); }
+
+}  // namespace pierre::app

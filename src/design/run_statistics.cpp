@@ -1,0 +1,91 @@
+#include "pierre/design/run_statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pierre::design {
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}
+
+RunSamples::RunSamples(std::size_t line_count, int main_direction)
+    : lines_(line_count), last_kept_(line_count, 0), main_direction_(main_direction) {}
+
+void RunSamples::add(const sim::TrajectorySummary& t) {
+  runout_.push_back(t.runout());
+  const auto r = static_cast<std::size_t>(t.stop_reason);
+  if (r < stops_.size()) ++stops_[r];
+}
+
+void RunSamples::add(const sim::Crossing& c) {
+  if (c.line >= lines_.size() || c.direction != main_direction_) return;
+  if (last_kept_[c.line] == c.trajectory + 1) return;  // not the first of its trajectory
+  last_kept_[c.line] = c.trajectory + 1;
+  LineSamples& l = lines_[c.line];
+  l.speed.push_back(c.speed);
+  l.height.push_back(c.height);
+  l.translational_energy.push_back(c.translational_energy);
+}
+
+// PRIVATE HELPER: the stats layer (pierre::stats, being written in parallel) will offer the
+// empirical percentile; until then this is the type-7 estimator: h = (n − 1) p,
+// x[⌊h⌋] + (h − ⌊h⌋)(x[⌊h⌋ + 1] − x[⌊h⌋]).
+double percentile_sorted(const std::vector<double>& x, double p) {
+  if (x.empty()) return kNaN;
+  const double h = (static_cast<double>(x.size()) - 1.0) * std::clamp(p, 0.0, 1.0);
+  const auto lo = static_cast<std::size_t>(std::floor(h));
+  if (lo + 1 >= x.size()) return x.back();
+  return x[lo] + (h - static_cast<double>(lo)) * (x[lo + 1] - x[lo]);
+}
+
+QuantityStatistics quantity_statistics(std::vector<double> v) {
+  QuantityStatistics q;
+  q.count = v.size();
+  if (v.empty()) {
+    q.mean = q.p50 = q.p95 = q.max = kNaN;
+    return q;
+  }
+  std::sort(v.begin(), v.end());
+  double sum = 0;  // in sorted order: independent of how the run was split
+  for (double x : v) sum += x;
+  q.mean = sum / static_cast<double>(v.size());
+  q.p50 = percentile_sorted(v, 0.50);
+  q.p95 = percentile_sorted(v, 0.95);
+  q.max = v.back();
+  return q;
+}
+
+RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
+                             const RunSamples& samples) {
+  RunStatistics s;
+  s.trajectories = samples.trajectories();
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    LineStatistics l;
+    l.name = lines[i].name;
+    l.chainage = lines[i].x;
+    if (i < samples.lines().size()) {
+      const LineSamples& ls = samples.lines()[i];
+      l.speed = quantity_statistics(ls.speed);
+      l.height = quantity_statistics(ls.height);
+      l.translational_energy = quantity_statistics(ls.translational_energy);
+    } else {
+      l.speed = l.height = l.translational_energy = quantity_statistics({});
+    }
+    l.count = l.speed.count;
+    l.not_reached = s.trajectories >= l.count ? s.trajectories - l.count : 0;
+    s.lines.push_back(std::move(l));
+  }
+  std::vector<double> r = samples.runout();
+  std::sort(r.begin(), r.end());
+  s.runout.count = r.size();
+  s.runout.p50 = percentile_sorted(r, 0.50);
+  s.runout.p95 = percentile_sorted(r, 0.95);
+  s.runout.p99 = percentile_sorted(r, 0.99);
+  s.runout.max = r.empty() ? kNaN : r.back();
+  for (std::size_t k = 0; k < kStopReasonCount; ++k)
+    s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
+  return s;
+}
+
+}  // namespace pierre::design

@@ -1,0 +1,119 @@
+#include "csv_table.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "pierre/io/input_error.hpp"
+
+namespace pierre::io::detail {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string> split(std::string_view line) {
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    std::string_view cell = trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"') cell = cell.substr(1, cell.size() - 2);
+    cells.emplace_back(cell);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return cells;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
+  return s;
+}
+
+}  // namespace
+
+std::optional<std::size_t> CsvTable::column(std::string_view name) const {
+  const auto it = std::find(header.begin(), header.end(), name);
+  if (it == header.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - header.begin());
+}
+
+double CsvTable::number(const CsvRow& row, std::size_t col) const {
+  const std::string& cell = row.cells[col];
+  double v = 0;
+  const char* end = cell.data() + cell.size();
+  const auto [ptr, ec] = std::from_chars(cell.data(), end, v);
+  if (cell.empty())
+    throw InputError(file, row.line, header[col], "an empty cell", "a number");
+  if (ec != std::errc{} || ptr != end)
+    throw InputError(file, row.line, header[col], fmt::format("\"{}\"", cell), "a number");
+  if (!std::isfinite(v))
+    throw InputError(file, row.line, header[col], fmt::format("\"{}\"", cell), "a finite number");
+  return v;
+}
+
+CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
+                  std::string_view expected_header) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(file, ec);
+    throw InputError(file, 0, "file", exists ? "a file that cannot be read" : "no such file",
+                     fmt::format("a readable CSV file with header {}", expected_header));
+  }
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string text = buf.str();
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
+
+  CsvTable t;
+  t.file = file;
+  long line_no = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) nl = text.size();
+    const std::string_view line = trim(std::string_view(text).substr(pos, nl - pos));
+    pos = nl + 1;
+    ++line_no;
+    if (line.empty() || line.front() == '#') continue;
+    std::vector<std::string> cells = split(line);
+    if (t.header.empty()) {
+      t.header_line = line_no;
+      for (const std::string& h : cells) {
+        if (std::find(allowed.begin(), allowed.end(), h) == allowed.end())
+          throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
+                           fmt::format("only the columns {}", join(allowed)));
+        if (std::count(cells.begin(), cells.end(), h) > 1)
+          throw InputError(file, line_no, "header", fmt::format("column \"{}\" twice", h),
+                           "each column once");
+      }
+      t.header = std::move(cells);
+      continue;
+    }
+    if (cells.size() < t.header.size())
+      throw InputError(file, line_no, t.header[cells.size()],
+                       fmt::format("nothing (the row has {} of {} columns)", cells.size(),
+                                   t.header.size()),
+                       fmt::format("a value in every column of {}", join(t.header)));
+    if (cells.size() > t.header.size())
+      throw InputError(file, line_no, "row", fmt::format("{} columns", cells.size()),
+                       fmt::format("{} columns ({})", t.header.size(), join(t.header)));
+    t.rows.push_back({line_no, std::move(cells)});
+  }
+  if (t.header.empty())
+    throw InputError(file, 0, "header", "an empty file",
+                     fmt::format("a header line {} and data rows", expected_header));
+  return t;
+}
+
+}  // namespace pierre::io::detail

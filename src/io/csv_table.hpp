@@ -1,0 +1,37 @@
+// A small CSV reader for the input tables (profile, blocks): a header line, then rows with
+// exactly as many cells. Blank lines and lines starting with '#' are ignored; cells are
+// trimmed and may be enclosed in double quotes. Every problem is an InputError with the
+// CSV line number.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pierre::io::detail {
+
+struct CsvRow {
+  long line = 0;  // 1-based line in the file
+  std::vector<std::string> cells;
+};
+
+struct CsvTable {
+  std::filesystem::path file;
+  long header_line = 0;
+  std::vector<std::string> header;
+  std::vector<CsvRow> rows;
+
+  // Index of a column, or nullopt when the header does not have it.
+  std::optional<std::size_t> column(std::string_view name) const;
+  // A cell as a finite number; InputError naming the file, the row's line and the column.
+  double number(const CsvRow& row, std::size_t col) const;
+};
+
+// Reads `file`; every header name must be one of `allowed` (no duplicates). `what` names the
+// table in messages ("profile", "blocks").
+CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
+                  std::string_view expected_header);
+
+}  // namespace pierre::io::detail

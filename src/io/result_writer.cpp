@@ -1,0 +1,230 @@
+#include "pierre/io/result_writer.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iterator>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#ifndef PIERRE_VERSION
+#define PIERRE_VERSION "unknown"
+#endif
+
+namespace pierre::io {
+namespace {
+
+constexpr std::size_t kFlushBytes = 1 << 20;
+
+// RFC 4180: quote a text cell that holds a comma, a quote or a line break.
+void text_cell(fmt::memory_buffer& b, const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) {
+    b.append(s.data(), s.data() + s.size());
+    return;
+  }
+  b.push_back('"');
+  for (char c : s) {
+    if (c == '"') b.push_back('"');
+    b.push_back(c);
+  }
+  b.push_back('"');
+}
+
+void num(fmt::memory_buffer& b, double v) { fmt::format_to(std::back_inserter(b), "{:.9g}", v); }
+
+std::string_view to_string(model::ImpactResult r) {
+  switch (r) {
+    case model::ImpactResult::rebound: return "rebound";
+    case model::ImpactResult::sliding: return "sliding";
+    case model::ImpactResult::stopped: return "stopped";
+  }
+  return "rebound";
+}
+
+}  // namespace
+
+class ResultFiles::Csv {
+ public:
+  Csv(std::filesystem::path path, std::string_view header) : path_(std::move(path)) {
+    f_ = std::fopen(path_.c_str(), "wb");
+    if (!f_)
+      throw std::runtime_error(
+          fmt::format("cannot create {}: {}", path_.string(), std::strerror(errno)));
+    buf.append(header.data(), header.data() + header.size());
+    buf.push_back('\n');
+  }
+  ~Csv() {
+    if (f_) std::fclose(f_);
+  }
+  void maybe_flush() {
+    if (buf.size() >= kFlushBytes) flush();
+  }
+  void flush() {
+    if (buf.size() && std::fwrite(buf.data(), 1, buf.size(), f_) != buf.size())
+      throw std::runtime_error(
+          fmt::format("cannot write {}: {}", path_.string(), std::strerror(errno)));
+    buf.clear();
+  }
+  void close() {
+    flush();
+    std::FILE* f = f_;
+    f_ = nullptr;
+    if (std::fclose(f) != 0)
+      throw std::runtime_error(
+          fmt::format("cannot write {}: {}", path_.string(), std::strerror(errno)));
+  }
+  fmt::memory_buffer buf;
+
+ private:
+  std::filesystem::path path_;
+  std::FILE* f_ = nullptr;
+};
+
+ResultFiles::ResultFiles(const std::filesystem::path& folder, const sim::Scenario& scenario,
+                         bool impacts)
+    : scenario_(scenario),
+      samples_(scenario.lines.size(), scenario.profile.main_direction()) {
+  trajectories_ = std::make_unique<Csv>(
+      folder / kTrajectoriesCsv,
+      "trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,runout_m,"
+      "stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,max_jump_height_m,"
+      "max_speed_m_s,max_energy_kJ");
+  crossings_ = std::make_unique<Csv>(
+      folder / kCrossingsCsv,
+      "trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,speed_m_s,"
+      "omega_rad_s,translational_energy_kJ,rotational_energy_kJ,passing_height_m,sliding");
+  if (impacts)
+    impacts_ = std::make_unique<Csv>(
+        folder / kImpactsCsv,
+        "trajectory,impact,time_s,x_m,z_m,segment,material,result,slope_deg,roughness_deg,"
+        "r_eff_m,vt_in_m_s,vn_in_m_s,vt_out_m_s,vn_out_m_s,vt_in_rot_m_s,vn_in_rot_m_s,"
+        "vt_out_rot_m_s,vn_out_rot_m_s,kn,kt,kn_apparent,kt_apparent,incidence_deg,contained,"
+        "energy_in_kJ,energy_out_kJ");
+}
+
+ResultFiles::~ResultFiles() = default;
+
+void ResultFiles::consume(sim::ChunkResult&& chunk) {
+  auto out = [](fmt::memory_buffer& b) { return std::back_inserter(b); };
+  {
+    fmt::memory_buffer& b = trajectories_->buf;
+    for (const sim::TrajectorySummary& t : chunk.trajectories) {
+      samples_.add(t);
+      fmt::format_to(out(b), "{},", t.trajectory);
+      text_cell(b, t.source < scenario_.sources.size() ? scenario_.sources[t.source].name : "");
+      b.push_back(',');
+      text_cell(b, t.block < scenario_.blocks.size() ? scenario_.blocks[t.block].id : "");
+      fmt::format_to(out(b), ",{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},",
+                     t.throw_index, t.mass, t.start.x, t.start.z, t.stop.x, t.stop.z, t.runout(),
+                     sim::to_string(t.stop_reason), t.duration, t.impacts);
+      if (t.has_first_impact)
+        fmt::format_to(out(b), "{:.9g},{:.9g}", t.first_impact.x, t.first_impact.z);
+      else
+        b.push_back(',');
+      fmt::format_to(out(b), ",{:.9g},{:.9g},{:.9g}\n", t.max_jump_height, t.max_speed,
+                     t.max_energy / 1000.0);
+    }
+    trajectories_->maybe_flush();
+  }
+  {
+    fmt::memory_buffer& b = crossings_->buf;
+    for (const sim::Crossing& c : chunk.crossings) {
+      samples_.add(c);
+      fmt::format_to(out(b), "{},", c.trajectory);
+      const bool known = c.line < scenario_.lines.size();
+      text_cell(b, known ? scenario_.lines[c.line].name : "");
+      b.push_back(',');
+      if (known) num(b, scenario_.lines[c.line].x);
+      b.push_back(',');
+      text_cell(b, c.block < scenario_.blocks.size() ? scenario_.blocks[c.block].id : "");
+      fmt::format_to(out(b), ",{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n",
+                     c.mass, c.time, c.direction, c.velocity.x, c.velocity.z, c.speed, c.omega,
+                     c.translational_energy / 1000.0, c.rotational_energy / 1000.0, c.height,
+                     c.sliding ? 1 : 0);
+    }
+    crossings_->maybe_flush();
+  }
+  if (impacts_) {
+    fmt::memory_buffer& b = impacts_->buf;
+    for (const sim::ImpactRecord& r : chunk.impacts) {
+      const model::ImpactDetail& d = r.detail;
+      fmt::format_to(out(b), "{},{},{:.9g},{:.9g},{:.9g},{},", r.trajectory, r.index, r.time,
+                     r.position.x, r.position.z, r.segment);
+      std::string material;
+      if (r.segment < scenario_.profile.segment_count()) {
+        const int m = scenario_.profile.segment(r.segment).material;
+        if (m >= 0 && static_cast<std::size_t>(m) < scenario_.materials.size())
+          material = scenario_.materials[static_cast<std::size_t>(m)].name;
+      }
+      text_cell(b, material);
+      fmt::format_to(out(b), ",{},{:.9g},{:.9g},{:.9g},", to_string(r.result), d.slope_deg,
+                     d.roughness_deg, d.r_eff);
+      fmt::format_to(out(b), "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},", d.vt_in,
+                     d.vn_in, d.vt_out, d.vn_out, d.vt_in_rot, d.vn_in_rot, d.vt_out_rot,
+                     d.vn_out_rot);
+      fmt::format_to(out(b), "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g}\n", d.kn, d.kt,
+                     d.kn_apparent, d.kt_apparent, d.incidence_deg, d.contained ? 1 : 0,
+                     d.energy_in / 1000.0, d.energy_out / 1000.0);
+    }
+    impacts_->maybe_flush();
+  }
+}
+
+void ResultFiles::close() {
+  trajectories_->close();
+  crossings_->close();
+  if (impacts_) impacts_->close();
+}
+
+std::string summary_json(const RunInfo& info, const design::RunStatistics& s) {
+  using json = nlohmann::ordered_json;
+  auto q = [](const design::QuantityStatistics& v, double scale) {
+    return json{{"mean", v.mean * scale}, {"p50", v.p50 * scale}, {"p95", v.p95 * scale},
+                {"max", v.max * scale}};
+  };
+  json j;
+  j["pierre_version"] = PIERRE_VERSION;
+  j["scenario"] = {{"name", info.scenario_name},
+                   {"file", info.scenario_file.string()},
+                   {"materials_file", info.materials_file.string()}};
+  j["seed"] = info.seed;
+  j["throws"] = info.throws;
+  j["blocks"] = info.blocks;
+  j["sources"] = info.sources;
+  j["trajectories"] = info.trajectories;
+  j["threads"] = info.threads;
+  j["crossing_statistics"] = "first crossing of each trajectory in the main travel direction";
+  j["all_crossings_in_csv"] = info.all_crossings;
+  json stops = json::object();
+  for (const auto& r : s.stop_reasons) stops[std::string(sim::to_string(r.reason))] = r.count;
+  j["stop_reasons"] = stops;
+  json lines = json::array();
+  for (const auto& l : s.lines)
+    lines.push_back({{"name", l.name},
+                     {"chainage_m", l.chainage},
+                     {"count", l.count},
+                     {"not_reached", l.not_reached},
+                     {"speed_m_s", q(l.speed, 1.0)},
+                     {"passing_height_m", q(l.height, 1.0)},
+                     {"translational_energy_kJ", q(l.translational_energy, 1e-3)}});
+  j["lines"] = lines;
+  j["runout_m"] = {{"p50", s.runout.p50}, {"p95", s.runout.p95}, {"p99", s.runout.p99},
+                   {"max", s.runout.max}};
+  return j.dump(2) + "\n";
+}
+
+void write_summary_json(const std::filesystem::path& file, const RunInfo& info,
+                        const design::RunStatistics& stats) {
+  const std::string text = summary_json(info, stats);
+  std::FILE* f = std::fopen(file.c_str(), "wb");
+  if (!f)
+    throw std::runtime_error(fmt::format("cannot create {}: {}", file.string(), std::strerror(errno)));
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !ok)
+    throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), std::strerror(errno)));
+}
+
+}  // namespace pierre::io

@@ -1,0 +1,149 @@
+#include "toml_fields.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "pierre/io/input_error.hpp"
+
+namespace pierre::io::detail {
+
+std::string describe(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::string: return fmt::format("\"{}\"", n.as_string()->get());
+    case toml::node_type::integer: return fmt::format("{}", n.as_integer()->get());
+    case toml::node_type::floating_point: {
+      const double v = n.as_floating_point()->get();
+      if (std::isnan(v)) return "nan";
+      if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+      return fmt::format("{}", v);
+    }
+    case toml::node_type::boolean: return n.as_boolean()->get() ? "true" : "false";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::table: return "a table";
+    case toml::node_type::date:
+    case toml::node_type::time:
+    case toml::node_type::date_time: return "a date or time";
+    case toml::node_type::none: break;
+  }
+  return "nothing";
+}
+
+long line_of(const toml::node& n) { return static_cast<long>(n.source().begin.line); }
+
+TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::string prefix,
+                     long line, std::initializer_list<std::string_view> allowed)
+    : file_(std::move(file)), t_(&t), prefix_(std::move(prefix)), line_(line) {
+  if (allowed.size() == 0) return;
+  const toml::key* worst = nullptr;
+  for (auto&& [k, v] : t) {
+    if (std::find(allowed.begin(), allowed.end(), k.str()) != allowed.end()) continue;
+    if (!worst || k.source().begin.line < worst->source().begin.line) worst = &k;
+  }
+  if (worst) {
+    std::string names;
+    for (std::string_view a : allowed) names += (names.empty() ? "" : ", ") + std::string(a);
+    throw InputError(file_, static_cast<long>(worst->source().begin.line),
+                     field(worst->str()), "an unknown key",
+                     fmt::format("one of {}", names));
+  }
+}
+
+std::string TomlTable::field(std::string_view key) const {
+  return prefix_.empty() ? std::string(key) : prefix_ + "." + std::string(key);
+}
+
+const toml::node* TomlTable::find(std::string_view key) const { return t_->get(key); }
+
+void TomlTable::fail(std::string_view key, std::string_view expected) const {
+  const toml::node* n = find(key);
+  if (!n) missing(key, expected);
+  throw InputError(file_, line_of(*n), field(key), describe(*n), std::string(expected));
+}
+
+void TomlTable::missing(std::string_view key, std::string_view expected) const {
+  throw InputError(file_, line_, field(key), "nothing", std::string(expected));
+}
+
+std::optional<double> TomlTable::number(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return std::nullopt;
+  double v;
+  if (const auto* i = n->as_integer())
+    v = static_cast<double>(i->get());
+  else if (const auto* f = n->as_floating_point())
+    v = f->get();
+  else
+    fail(key, "a number");
+  if (!std::isfinite(v)) fail(key, "a finite number");
+  return v;
+}
+
+double TomlTable::number(std::string_view key, double fallback) const {
+  return number(key).value_or(fallback);
+}
+
+double TomlTable::required_number(std::string_view key, std::string_view expected) const {
+  const auto v = number(key);
+  if (!v) missing(key, expected);
+  return *v;
+}
+
+std::optional<std::int64_t> TomlTable::integer(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return std::nullopt;
+  const auto* i = n->as_integer();
+  if (!i) fail(key, "an integer");
+  return i->get();
+}
+
+std::optional<bool> TomlTable::boolean(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return std::nullopt;
+  const auto* b = n->as_boolean();
+  if (!b) fail(key, "true or false");
+  return b->get();
+}
+
+std::optional<std::string> TomlTable::string(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return std::nullopt;
+  const auto* s = n->as_string();
+  if (!s) fail(key, "a string");
+  return s->get();
+}
+
+std::string TomlTable::required_string(std::string_view key, std::string_view expected) const {
+  auto s = string(key);
+  if (!s) missing(key, expected);
+  return *s;
+}
+
+std::optional<TomlTable> TomlTable::subtable(std::string_view key,
+                                             std::initializer_list<std::string_view> allowed) const {
+  const toml::node* n = find(key);
+  if (!n) return std::nullopt;
+  const auto* t = n->as_table();
+  if (!t) fail(key, "a table");
+  return TomlTable(file_, *t, field(key), line_of(*n), allowed);
+}
+
+const toml::array* TomlTable::array_of_tables(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return nullptr;
+  const auto* a = n->as_array();
+  if (!a || !a->is_array_of_tables())
+    fail(key, fmt::format("an array of tables ([[{}]])", field(key)));
+  return a;
+}
+
+const toml::array* TomlTable::array(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return nullptr;
+  const auto* a = n->as_array();
+  if (!a) fail(key, "an array");
+  return a;
+}
+
+}  // namespace pierre::io::detail
