@@ -79,6 +79,8 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
     s.length = norm(s.b - s.a);
     s.d = (1.0 / s.length) * (s.b - s.a);
     s.n = left_normal(s.d);
+    s.x_lo = std::min(s.a.x, s.b.x);
+    s.x_hi = std::max(s.a.x, s.b.x);
     s.material = i < materials.size() ? materials[i] : 0;
     p.segments_.push_back(s);
   }
@@ -175,6 +177,10 @@ int Profile::build_node(int first, int last) {
     nd.off_lo = std::min(nd.off_lo, off);
     nd.off_hi = std::max(nd.off_hi, off);
   }
+  // Straight: more than one segment, no vertex turning by 1e-9 rad or more, all on the chord.
+  nd.straight = last - first > 1 && nd.off_hi - nd.off_lo <= kEps;
+  for (int i = first; nd.straight && i + 1 < last; ++i)
+    nd.straight = turns_[i] == VertexTurn::straight;
   if (last - first > kLeafSize) {
     const int mid = first + (last - first) / 2;
     nd.left = build_node(first, mid);
@@ -191,29 +197,31 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
   bool found = false;
   const ArcX ax(p0.x, v0.x);
 
-  auto test_segment = [&](int j) {
-    const Segment& s = segments_[j];
-    double c = dot(p0 - s.a, s.n);
-    const double b = dot(v0, s.n);
-    const double a = -0.5 * g * s.n.z;
-    int departed = -1;
-    for (int k = 0; k < 2; ++k)
-      if (dep.segment[k] == j) departed = k;
+  // Earliest entering root on a line (point A, unit direction d, air-side normal n) whose
+  // piece of interest spans [0, length] along d; kind: 0 plain, 1 departed (c = 0 exactly:
+  // drop the trivial root t = 0, model-2d.md §2), 2 left tangentially (cannot be hit).
+  auto solve = [&](Vec2 A, Vec2 n, Vec2 d, double length, double xlo, double xhi, int kind,
+                   double& t_out, double& along_out) {
+    if (kind == 2) return false;
+    double c = dot(p0 - A, n);
+    const double b = dot(v0, n);
+    const double a = -0.5 * g * n.z;
     double roots[2];
     int nroots = 0;
-    if (departed >= 0) {
-      if (dep.tangent[departed]) return;
-      c = 0.0;  // exactly on the line: drop the trivial root t = 0 (model-2d.md §2)
+    if (kind == 1) {
+      c = 0.0;
       if (b < 0 && dep.concave_vertex) {
         roots[nroots++] = 0.0;  // entering the neighbour at a concave vertex at once
       } else if (a != 0.0) {
         roots[nroots++] = -b / a;
       }
+    } else if (double ta, tb; !ax.window(xlo - kEps, xhi + kEps, t_best, ta, tb)) {
+      return false;  // the arc does not pass over this piece before the best contact so far
     } else if (a == 0.0) {
       if (b != 0.0) roots[nroots++] = -c / b;
     } else {
       const double disc = b * b - 4 * a * c;
-      if (disc < 0) return;
+      if (disc < 0) return false;
       const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
       if (q == 0.0) {
         roots[nroots++] = 0.0;
@@ -228,14 +236,49 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       if (!(t >= 0.0) || t >= t_best) continue;
       if (!(b + 2 * a * t < 0.0)) continue;  // must enter from the air side
       const Vec2 pt{p0.x + v0.x * t, p0.z + v0.z * t - 0.5 * g * t * t};
-      const double along = dot(pt - s.a, s.d);
-      const double slack = kEps * std::max(1.0, s.length);
-      if (along < -slack || along > s.length + slack) continue;
-      t_best = t;
-      best = {t, j, std::clamp(along, 0.0, s.length)};
-      found = true;
-      return;
+      const double along = dot(pt - A, d);
+      const double slack = kEps * std::max(1.0, length);
+      if (along < -slack || along > length + slack) continue;
+      t_out = t;
+      along_out = std::clamp(along, 0.0, length);
+      return true;
     }
+    return false;
+  };
+  auto kind_of = [&](int j) {
+    for (int k = 0; k < 2; ++k)
+      if (dep.segment[k] == j) return dep.tangent[k] ? 2 : 1;
+    return 0;
+  };
+  auto test_segment = [&](int j) {
+    const Segment& s = segments_[j];
+    double t, along;
+    if (solve(s.a, s.n, s.d, s.length, s.x_lo, s.x_hi, kind_of(j), t, along)) {
+      t_best = t;
+      best = {t, j, along};
+      found = true;
+    }
+  };
+  // A straight run of collinear segments is one line for the search; the segment hit is then
+  // found by bisection along it. (A finely digitised straight face costs what one segment does.)
+  auto test_run = [&](const Node& nd) {
+    const Segment& s0 = segments_[nd.first];
+    int kind = 0;
+    for (int k = 0; k < 2; ++k)
+      if (dep.segment[k] >= nd.first && dep.segment[k] < nd.last)
+        kind = std::max(kind, dep.tangent[k] ? 2 : 1);
+    const double length = dot(segments_[nd.last - 1].b - s0.a, s0.d);
+    double t, along;
+    if (!solve(s0.a, s0.n, s0.d, length, nd.x_lo, nd.x_hi, kind, t, along)) return;
+    int lo = nd.first, hi = nd.last - 1;  // last segment whose start is at or before `along`
+    while (lo < hi) {
+      const int mid = (lo + hi + 1) / 2;
+      if (dot(segments_[mid].a - s0.a, s0.d) <= along) lo = mid; else hi = mid - 1;
+    }
+    const Segment& sj = segments_[lo];
+    t_best = t;
+    best = {t, lo, std::clamp(along - dot(sj.a - s0.a, s0.d), 0.0, sj.length)};
+    found = true;
   };
 
   // Best-first walk of a subtree: the child the block reaches first is visited first, and a
@@ -253,6 +296,10 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       auto q = [&](double t) { return q0 + q1 * t - 0.5 * g * t * t; };
       if (std::min(q(ta), q(tb)) > nd.off_hi + kEps) continue;  // lowest at an end
       if (q(std::clamp(q1 / g, ta, tb)) < nd.off_lo - kEps) continue;
+      if (nd.straight) {
+        test_run(nd);
+        continue;
+      }
       if (nd.left < 0) {
         for (int j = nd.first; j < nd.last; ++j)
           if (j != dep.segment[0] && j != dep.segment[1]) test_segment(j);  // tested first
@@ -333,7 +380,7 @@ std::optional<GroundPoint> Profile::ground_below(double x, double z) const {
 std::optional<GroundPoint> Profile::top_ground(double x) const { return ground_below(x, kInf); }
 
 double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end,
-                                        double at_least) const {
+                                        double at_least, int seg_a, int seg_b) const {
   auto z_at = [&](double t) { return p0.z + v0.z * t - 0.5 * g * t * t; };
   if (v0.x == 0.0) {  // vertical drop: one ground point under the whole arc
     const double t_apex = std::clamp(v0.z / g, 0.0, t_end);
@@ -355,7 +402,15 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
 
   // Upper bound of h over a node: the arc's highest point over the node's window minus the
   // node's lowest ground; -inf when the arc does not pass over the node.
+  // Without overhangs the ground under the arc is exactly the segments between those under its
+  // two ends: nodes outside that index range are skipped without a look.
+  int lo = 0, hi = static_cast<int>(segments_.size()) - 1;
+  if (x_monotone_ && seg_a >= 0 && seg_b >= 0) {
+    lo = std::min(seg_a, seg_b);
+    hi = std::max(seg_a, seg_b);
+  }
   auto bound = [&](const Node& nd) {
+    if (nd.last <= lo || nd.first > hi) return -kInf;
     double ta, tb;
     if (!ax.window(nd.x_lo, nd.x_hi, t_end, ta, tb)) return -kInf;
     // h ≤ q(t) − off_lo with q(t) = z(t) − chord(x(t)), a concave quadratic.
@@ -367,13 +422,24 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     int node;
     double bound;
   };
+  // Start at the smallest subtree that holds the whole range (found by climbing from the
+  // leaf of its first segment): a short hop then never looks at the top of the tree.
+  int start = 0;
+  if (lo > 0 || hi < static_cast<int>(segments_.size()) - 1) {
+    start = leaf_of_[lo];
+    while (start != 0 && nodes_[start].last <= hi) start = parents_[start];
+  }
   Item stack[128];
   int top = 0;
-  stack[top++] = {0, bound(nodes_[0])};
+  stack[top++] = {start, bound(nodes_[start])};
   while (top > 0) {
     const Item it = stack[--top];
     if (it.bound <= best) continue;  // cannot beat the best so far
     const Node& nd = nodes_[it.node];
+    if (nd.straight && x_monotone_) {  // the ground is the chord itself: the bound is the value
+      best = it.bound;
+      continue;
+    }
     if (nd.left >= 0) {
       // Best first: the child with the larger bound is popped first, so `best` rises early
       // and most of the other nodes are cut.
@@ -387,12 +453,11 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
       }
       continue;
     }
-    for (int j = nd.first; j < nd.last; ++j) {
+    for (int j = std::max(nd.first, lo); j < std::min(nd.last, hi + 1); ++j) {
       const Segment& s = segments_[j];
       if (s.d.x == 0.0) continue;
       double sa, sb;
-      if (!ax.window(std::min(s.a.x, s.b.x), std::max(s.a.x, s.b.x), t_end, sa, sb))
-        continue;
+      if (!ax.window(s.x_lo, s.x_hi, t_end, sa, sb)) continue;
       // h(t) = z(t) - ground(x(t)) is a concave quadratic on this segment.
       const double slope = s.d.z / s.d.x;
       const double t_star = std::clamp((v0.z - v0.x * slope) / g, sa, sb);

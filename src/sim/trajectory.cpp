@@ -134,7 +134,12 @@ class Integrator {
     } else {
       return stop(StopReason::numerical);  // no contact and no way out: lost through the ground
     }
-    advance_flight(tau);
+    // The segments under the arc's ends: where it departs (if on the ground) and lands.
+    const int seg_from = dep_.segment[0] >= 0 ? dep_.segment[0] : -1;
+    const int seg_to = contact ? contact->segment : (v_.x * profile_.main_direction() > 0
+                                                         ? static_cast<int>(profile_.segment_count()) - 1
+                                                         : 0);
+    advance_flight(tau, seg_from, seg_to);
     if (contact) {
       const Segment& s = profile_.segment(contact->segment);
       p_ = s.a + contact->s * s.d;  // snap onto the line the block hit
@@ -146,9 +151,10 @@ class Integrator {
     }
   }
 
-  void advance_flight(double tau) {
+  void advance_flight(double tau, int seg_from, int seg_to) {
     if (!tally_.empty()) tally_.flight(p_, v_, omega_, t_, tau, g_);
-    out_.max_jump_height = profile_.max_height_above_ground(p_, v_, g_, tau, out_.max_jump_height);
+    out_.max_jump_height = profile_.max_height_above_ground(p_, v_, g_, tau, out_.max_jump_height,
+                                                            seg_from, seg_to);
     p_ = {p_.x + v_.x * tau, p_.z + v_.z * tau - 0.5 * g_ * tau * tau};
     v_ = {v_.x, v_.z - g_ * tau};
     t_ += tau;

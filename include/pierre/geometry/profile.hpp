@@ -20,6 +20,7 @@ struct Segment {
   Vec2 d;             // unit direction a -> b
   Vec2 n;             // unit outward normal (left of d): points into the air
   double length = 0;  // |b - a|
+  double x_lo = 0, x_hi = 0;  // horizontal extent
   int material = 0;   // index into the scenario's material list
 };
 
@@ -84,9 +85,10 @@ class Profile {
   // Largest vertical distance between the parabola and the ground directly below it over
   // the arc 0 <= t <= t_end (model-2d.md §4). Exact: piecewise concave, maximised per segment.
   // Returns at_least when the arc cannot exceed it (the trajectory's running maximum), which
-  // lets the search skip every part of the section that cannot hold a new maximum.
+  // lets the search skip every part of the section that cannot hold a new maximum. seg_a and
+  // seg_b, when known, are the segments under the arc's two ends (where it departs and lands).
   double max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end,
-                                 double at_least = 0.0) const;
+                                 double at_least = 0.0, int seg_a = -1, int seg_b = -1) const;
 
  private:
   // Bounds of the segments [first, last): their box, and a band about the chord from the
@@ -96,6 +98,7 @@ class Profile {
     double x_lo = 0, x_hi = 0, z_lo = 0, z_hi = 0;
     double slope = 0, icpt = 0, off_lo = 0, off_hi = 0;
     int first = 0, last = 0;
+    bool straight = false;  // collinear segments: one line for the search
     int left = -1, right = -1;
   };
   int build_node(int first, int last);

@@ -1,6 +1,8 @@
-// Per-trajectory random numbers: a counter-based Philox4x32-10 stream keyed by the seed, with
+// Per-trajectory random numbers: a counter-based Philox2x64-10 stream keyed by the seed, with
 // the global trajectory index in the counter (model-2d.md §6). A trajectory's draws do not
 // depend on the thread that runs it, on the run order, or on how the work is split.
+// Philox2x64 rather than 4x32: the same 128 bits per call from 64-bit multiplies, about half
+// the instructions on x86-64 (measured with callgrind).
 #pragma once
 
 #include <Random123/philox.h>
@@ -14,17 +16,14 @@ namespace pierre::sim {
 class RandomStream {
  public:
   RandomStream(std::uint64_t seed, std::uint64_t trajectory)
-      : key_{{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}},
-        ctr_{{0u, static_cast<std::uint32_t>(trajectory),
-              static_cast<std::uint32_t>(trajectory >> 32), 0u}} {}
+      : key_{{seed}}, ctr_{{0u, trajectory}} {}
 
   // The draws of the next impact: one Philox block of 128 bits gives two 53-bit uniforms
   // in the open interval (0, 1) (Random123's u01 on 64 bits can return 1.0: library-notes.md)
   // and one spare bit for the travel sign on level ground.
   model::ImpactDraws impact_draws() {
     const auto r = next();
-    const std::uint64_t w0 = (std::uint64_t{r[0]} << 32) | r[1];
-    const std::uint64_t w1 = (std::uint64_t{r[2]} << 32) | r[3];
+    const std::uint64_t w0 = r[0], w1 = r[1];
     model::ImpactDraws d;
     d.roughness_u = to_open_unit(w0);
     d.shape_u = to_open_unit(w1);
@@ -39,14 +38,14 @@ class RandomStream {
   }
 
  private:
-  r123::Philox4x32::ctr_type next() {
+  r123::Philox2x64::ctr_type next() {
     const auto out = gen_(ctr_, key_);
     ++ctr_[0];
     return out;
   }
-  r123::Philox4x32 gen_;
-  r123::Philox4x32::key_type key_;
-  r123::Philox4x32::ctr_type ctr_;
+  r123::Philox2x64 gen_;
+  r123::Philox2x64::key_type key_;
+  r123::Philox2x64::ctr_type ctr_;
 };
 
 }  // namespace pierre::sim
