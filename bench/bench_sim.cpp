@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "pierre/io/scenario_reader.hpp"
+#include "pierre/sim/random_stream.hpp"
 #include "pierre/sim/runner.hpp"
 
 using namespace pierre;
