@@ -1,0 +1,31 @@
+// One design check, as every check reports it (design-checks.md: id, what, value, limit, unit,
+// rule, status). FAIL makes `pierre check` exit 1; WARN is advisory and never does.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pierre::design {
+
+enum class CheckStatus { pass, fail, warn, not_applicable };
+
+std::string_view to_string(CheckStatus s);  // "PASS", "FAIL", "WARN", "N/A"
+
+struct CheckLine {
+  std::string subject;  // what is checked: a barrier or a quarry section, by name
+  std::string id;       // e.g. "energy.mel", "height.interception", "zone.crusher"
+  std::string what;     // a sentence an engineer reads: what the value and the limit are
+  double value = std::numeric_limits<double>::quiet_NaN();
+  double limit = std::numeric_limits<double>::quiet_NaN();
+  std::string unit;     // of value and limit: "kJ", "m", "%", "" …
+  std::string rule;     // rule set and clause, e.g. "peila-ronco-2009 §4 (γE,MEL)"
+  CheckStatus status = CheckStatus::not_applicable;
+  std::string reason;   // why it passes or fails, in words ("candidate MEL 2000 kJ < required 2241 kJ")
+};
+
+// True when any line FAILs: the exit code of `pierre check`.
+bool any_failure(const std::vector<CheckLine>& lines);
+
+}  // namespace pierre::design
