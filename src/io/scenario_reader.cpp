@@ -232,7 +232,7 @@ std::vector<Vertex> read_inline_points(const TomlTable& prof) {
   }
   if (out.size() < 2)
     throw InputError(prof.file(), line_of(*prof.find("points")), prof.field("points"),
-                     fmt::format("{} vertices", out.size()), "at least two vertices");
+                     out.size() == 1 ? std::string("1 vertex") : fmt::format("{} vertices", out.size()), "at least two vertices");
   return out;
 }
 

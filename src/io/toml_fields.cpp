@@ -17,7 +17,9 @@ std::string describe(const toml::node& n) {
       const double v = n.as_floating_point()->get();
       if (std::isnan(v)) return "nan";
       if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-      return fmt::format("{}", v);
+      std::string t = fmt::format("{}", v);
+      if (t.find_first_of(".e") == std::string::npos) t += ".0";  // 2.0 stays a float
+      return t;
     }
     case toml::node_type::boolean: return n.as_boolean()->get() ? "true" : "false";
     case toml::node_type::array: return "an array";

@@ -1,0 +1,237 @@
+// The result files: exact headers, one row per trajectory / crossing / impact with units
+// converted (J → kJ), empty first-impact cells, CSV quoting; the samples kept for the
+// statistics; summary.json; the atomic output folder.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "pierre/io/output_folder.hpp"
+#include "pierre/io/result_writer.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using namespace pierre;
+using pierre::test::read_file;
+using pierre::test::TempDir;
+
+sim::Scenario scenario() {
+  sim::Scenario s;
+  s.name = "w";
+  std::vector<geometry::ProfileIssue> issues;
+  s.profile = *geometry::Profile::build({{0, 10}, {10, 0}, {20, 0}}, {0, 0}, &issues);
+  s.materials.push_back(model::Material{"rock", "scenario", 5, 0.5, 50, 0.95, 0.5, 30});
+  model::Block b;
+  b.id = "big, round";  // needs quoting
+  b.mass = 100;
+  s.blocks.push_back(b);
+  s.sources.push_back({"top", {1, 11}, {0, 0}, 0});
+  s.lines.push_back({"L1", 15});
+  s.lines.push_back({"L2", 18});
+  s.settings.throws = 2;
+  return s;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t p = 0;
+  while (p < text.size()) {
+    const auto n = text.find('\n', p);
+    out.push_back(text.substr(p, n - p));
+    p = n + 1;
+  }
+  return out;
+}
+
+sim::ChunkResult chunk() {
+  sim::ChunkResult c;
+  sim::TrajectorySummary t;
+  t.trajectory = 0;
+  t.mass = 100;
+  t.start = {1, 11};
+  t.stop = {16.5, 0};
+  t.stop_reason = sim::StopReason::energy;
+  t.duration = 3.25;
+  t.impacts = 4;
+  t.has_first_impact = true;
+  t.first_impact = {2, 8};
+  t.max_jump_height = 1.5;
+  t.max_speed = 12;
+  t.max_energy = 7200;  // J
+  c.trajectories.push_back(t);
+  t.trajectory = 1;
+  t.throw_index = 1;
+  t.stop = {21, -1};
+  t.stop_reason = sim::StopReason::boundary;
+  t.has_first_impact = false;
+  c.trajectories.push_back(t);
+  sim::Crossing x;
+  x.trajectory = 0;
+  x.line = 0;
+  x.mass = 100;
+  x.time = 2;
+  x.direction = 1;
+  x.velocity = {6, -8};
+  x.speed = 10;
+  x.translational_energy = 5000;
+  x.rotational_energy = 250;
+  x.height = 0.75;
+  c.crossings.push_back(x);
+  x.direction = -1;  // backwards: not kept for the statistics
+  x.speed = 99;
+  c.crossings.push_back(x);
+  x.direction = 1;  // a second forward crossing of the same line: not kept either
+  x.speed = 98;
+  c.crossings.push_back(x);
+  x.trajectory = 1;
+  x.speed = 20;
+  c.crossings.push_back(x);
+  sim::ImpactRecord r;
+  r.trajectory = 0;
+  r.index = 0;
+  r.time = 0.5;
+  r.position = {2, 8};
+  r.segment = 0;
+  r.detail.energy_in = 3000;
+  r.detail.energy_out = 1000;
+  r.detail.contained = true;
+  c.impacts.push_back(r);
+  return c;
+}
+
+TEST(ResultFiles, WritesHeadersRowsAndUnits) {
+  TempDir dir;
+  const sim::Scenario s = scenario();
+  sim::ResultCollector dummy;
+  io::ResultFiles files(dir.path(), s, true);
+  files.consume(chunk());
+  files.close();
+
+  const auto traj = lines_of(read_file(dir.path() / "trajectories.csv"));
+  ASSERT_EQ(traj.size(), 3u);
+  EXPECT_EQ(traj[0],
+            "trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,"
+            "runout_m,stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,"
+            "max_jump_height_m,max_speed_m_s,max_energy_kJ");
+  EXPECT_EQ(traj[1], "0,top,\"big, round\",0,100,1,11,16.5,0,15.5,energy,3.25,4,2,8,1.5,12,7.2");
+  EXPECT_EQ(traj[2], "1,top,\"big, round\",1,100,1,11,21,-1,20,boundary,3.25,4,,,1.5,12,7.2");
+
+  const auto cross = lines_of(read_file(dir.path() / "crossings.csv"));
+  ASSERT_EQ(cross.size(), 5u);
+  EXPECT_EQ(cross[0],
+            "trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,"
+            "speed_m_s,omega_rad_s,translational_energy_kJ,rotational_energy_kJ,"
+            "passing_height_m,sliding");
+  EXPECT_EQ(cross[1], "0,L1,15,\"big, round\",100,2,1,6,-8,10,0,5,0.25,0.75,0");
+
+  const auto imp = lines_of(read_file(dir.path() / "impacts.csv"));
+  ASSERT_EQ(imp.size(), 2u);
+  EXPECT_EQ(imp[0].rfind("trajectory,impact,time_s,x_m,z_m,segment,material,result,slope_deg,", 0), 0u);
+  EXPECT_NE(imp[0].find("energy_in_kJ,energy_out_kJ"), std::string::npos);
+  EXPECT_EQ(imp[1].rfind("0,0,0.5,2,8,0,rock,rebound,", 0), 0u) << imp[1];
+  EXPECT_NE(imp[1].find(",1,3,1"), std::string::npos) << imp[1];  // contained, 3 kJ in, 1 kJ out
+
+  // Statistics samples: the first forward crossing of each trajectory on each line only.
+  const auto& smp = files.samples();
+  ASSERT_EQ(smp.lines().size(), 2u);
+  EXPECT_EQ(smp.lines()[0].speed, (std::vector<double>{10, 20}));
+  EXPECT_TRUE(smp.lines()[1].speed.empty());
+  EXPECT_EQ(smp.runout(), (std::vector<double>{15.5, 20}));
+  EXPECT_EQ(smp.stop_reasons()[static_cast<int>(sim::StopReason::energy)], 1u);
+  EXPECT_EQ(smp.stop_reasons()[static_cast<int>(sim::StopReason::boundary)], 1u);
+}
+
+TEST(ResultFiles, NoImpactsFileUnlessAsked) {
+  TempDir dir;
+  const sim::Scenario s = scenario();
+  io::ResultFiles files(dir.path(), s, false);
+  files.consume(chunk());
+  files.close();
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "impacts.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "crossings.csv"));
+}
+
+TEST(SummaryJson, CarriesRunInfoAndStatistics) {
+  const sim::Scenario s = scenario();
+  design::RunSamples smp(2, 1);
+  sim::ChunkResult c = chunk();
+  for (const auto& t : c.trajectories) smp.add(t);
+  for (const auto& x : c.crossings) smp.add(x);
+  const auto stats = design::run_statistics(s.lines, smp);
+  io::RunInfo info;
+  info.scenario_name = "w";
+  info.scenario_file = "w.toml";
+  info.seed = 7;
+  info.throws = 2;
+  info.trajectories = 2;
+  info.threads = 3;
+  const auto j = nlohmann::json::parse(io::summary_json(info, stats));
+  EXPECT_EQ(j["pierre_version"], PIERRE_VERSION);
+  EXPECT_EQ(j["scenario"]["name"], "w");
+  EXPECT_EQ(j["seed"], 7);
+  EXPECT_EQ(j["trajectories"], 2);
+  EXPECT_EQ(j["threads"], 3);
+  EXPECT_EQ(j["stop_reasons"]["energy"], 1);
+  EXPECT_EQ(j["stop_reasons"]["boundary"], 1);
+  EXPECT_EQ(j["stop_reasons"]["numerical"], 0);
+  ASSERT_EQ(j["lines"].size(), 2u);
+  EXPECT_EQ(j["lines"][0]["name"], "L1");
+  EXPECT_EQ(j["lines"][0]["chainage_m"], 15.0);
+  EXPECT_EQ(j["lines"][0]["count"], 2);
+  EXPECT_EQ(j["lines"][0]["not_reached"], 0);
+  EXPECT_DOUBLE_EQ(j["lines"][0]["speed_m_s"]["mean"].get<double>(), 15.0);
+  EXPECT_DOUBLE_EQ(j["lines"][0]["speed_m_s"]["max"].get<double>(), 20.0);
+  EXPECT_DOUBLE_EQ(j["lines"][0]["translational_energy_kJ"]["p50"].get<double>(), 5.0);
+  EXPECT_EQ(j["lines"][1]["count"], 0);
+  EXPECT_EQ(j["lines"][1]["not_reached"], 2);
+  EXPECT_TRUE(j["lines"][1]["speed_m_s"]["mean"].is_null());  // no crossing: null, not 0
+  EXPECT_DOUBLE_EQ(j["runout_m"]["max"].get<double>(), 20.0);
+  EXPECT_DOUBLE_EQ(j["runout_m"]["p50"].get<double>(), 17.75);
+}
+
+TEST(OutputFolder, CommitMovesFilesAndRemovesStaging) {
+  TempDir dir;
+  const auto out = dir.path() / "new" / "out";
+  std::filesystem::create_directories(dir.path() / "old");
+  {
+    io::OutputFolder f(out);
+    EXPECT_TRUE(std::filesystem::is_directory(f.staging()));
+    EXPECT_EQ(f.staging().parent_path(), out);
+    std::ofstream(f.staged("a.csv")) << "a\n";
+    std::ofstream(out / "impacts.csv") << "stale\n";
+    const auto written = f.commit({"impacts.csv"});
+    ASSERT_EQ(written.size(), 1u);
+    EXPECT_EQ(written[0], out / "a.csv");
+    EXPECT_FALSE(std::filesystem::exists(f.staging()));
+  }
+  EXPECT_EQ(read_file(out / "a.csv"), "a\n");
+  EXPECT_FALSE(std::filesystem::exists(out / "impacts.csv"));  // stale output of another run
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), {}), 1);
+}
+
+TEST(OutputFolder, WithoutCommitNothingIsLeft) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  {
+    io::OutputFolder f(out);
+    std::ofstream(f.staged("a.csv")) << "a\n";
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));  // created by the run, removed with it
+
+  std::filesystem::create_directories(out);
+  std::ofstream(out / "keep.txt") << "mine\n";
+  {
+    io::OutputFolder f(out);
+    std::ofstream(f.staged("a.csv")) << "a\n";
+  }
+  EXPECT_TRUE(std::filesystem::exists(out / "keep.txt"));  // a folder of the user's stays
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), {}), 1);
+}
+
+TEST(OutputFolder, OutputPathThatIsAFileIsRefused) {
+  TempDir dir;
+  const auto f = dir.write("file", "x");
+  EXPECT_THROW(io::OutputFolder{f}, std::filesystem::filesystem_error);
+}
+
+}  // namespace

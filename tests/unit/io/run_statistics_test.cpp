@@ -1,0 +1,70 @@
+// design::run_statistics (tested here: the io test program links the design layer): type-7
+// percentiles against hand values, counts, not-reached, NaN when a line is never crossed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pierre/design/run_statistics.hpp"
+
+namespace {
+
+using namespace pierre;
+
+TEST(RunStatistics, Type7Percentiles) {
+  std::vector<double> x{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.5), 5.5);
+  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.95), 9.55);  // h = 8.55
+  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.99), 9.91);
+  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 1.0), 10.0);
+  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(design::percentile_sorted({4.0}, 0.95), 4.0);
+  EXPECT_TRUE(std::isnan(design::percentile_sorted({}, 0.5)));
+}
+
+TEST(RunStatistics, LinesRunoutAndStops) {
+  design::RunSamples s(2, -1);  // a profile running towards decreasing x
+  for (int i = 0; i < 4; ++i) {
+    sim::TrajectorySummary t;
+    t.trajectory = static_cast<std::uint64_t>(i);
+    t.start = {100, 0};
+    t.stop = {100.0 - 10.0 * (i + 1), 0};
+    t.stop_reason = i == 3 ? sim::StopReason::friction : sim::StopReason::energy;
+    s.add(t);
+    if (i < 3) {
+      sim::Crossing c;
+      c.trajectory = t.trajectory;
+      c.line = 0;
+      c.direction = -1;
+      c.speed = 2.0 * (i + 1);
+      c.height = 1.0;
+      c.translational_energy = 1000.0 * (i + 1);
+      s.add(c);
+      c.direction = +1;  // against the main direction: ignored
+      c.speed = 100;
+      s.add(c);
+    }
+  }
+  const auto st = design::run_statistics({{"A", 50}, {"B", 10}}, s);
+  EXPECT_EQ(st.trajectories, 4u);
+  ASSERT_EQ(st.lines.size(), 2u);
+  EXPECT_EQ(st.lines[0].name, "A");
+  EXPECT_EQ(st.lines[0].count, 3u);
+  EXPECT_EQ(st.lines[0].not_reached, 1u);
+  EXPECT_DOUBLE_EQ(st.lines[0].speed.mean, 4.0);
+  EXPECT_DOUBLE_EQ(st.lines[0].speed.p50, 4.0);
+  EXPECT_DOUBLE_EQ(st.lines[0].speed.p95, 5.8);  // 4 + 0.9 × 2
+  EXPECT_DOUBLE_EQ(st.lines[0].speed.max, 6.0);
+  EXPECT_DOUBLE_EQ(st.lines[0].translational_energy.max, 3000.0);
+  EXPECT_EQ(st.lines[1].count, 0u);
+  EXPECT_EQ(st.lines[1].not_reached, 4u);
+  EXPECT_TRUE(std::isnan(st.lines[1].speed.mean));
+  EXPECT_DOUBLE_EQ(st.runout.p50, 25.0);
+  EXPECT_DOUBLE_EQ(st.runout.max, 40.0);
+  EXPECT_DOUBLE_EQ(st.runout.p95, 38.5);  // h = 2.85 over {10, 20, 30, 40}
+  ASSERT_EQ(st.stop_reasons.size(), 6u);
+  EXPECT_EQ(st.stop_reasons[0].reason, sim::StopReason::energy);
+  EXPECT_EQ(st.stop_reasons[0].count, 3u);
+  EXPECT_EQ(st.stop_reasons[1].count, 1u);
+}
+
+}  // namespace

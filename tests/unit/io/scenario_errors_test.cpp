@@ -1,0 +1,187 @@
+// Every input error of the scenario format (docs/scenario-format.md): each case writes a bad
+// input, loads it, and asserts the file, the line, the field and the value found that the
+// InputError carries, and the message format "<file>:<line>: <field>: found <value>, expected".
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pierre/io/scenario_reader.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using pierre::io::InputError;
+using pierre::io::load_scenario;
+using pierre::test::base_lines;
+using pierre::test::TempDir;
+
+const std::filesystem::path kRules = PIERRE_SOURCE_DIR "/rules";
+
+struct Case {
+  std::string name;
+  std::vector<std::pair<int, std::string>> replace;  // base line → new text
+  std::vector<std::pair<std::string, std::string>> files;  // other files in the folder
+  std::string file;   // file named by the error
+  long line;
+  std::string field;
+  std::string found;  // a substring of found()
+};
+
+std::string scenario_text(const Case& c) {
+  auto lines = base_lines();
+  for (const auto& [n, text] : c.replace) lines.at(static_cast<std::size_t>(n - 1)) = text;
+  std::string s;
+  for (const auto& l : lines) s += l + "\n";
+  return s;
+}
+
+class ScenarioError : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ScenarioError, NamesFileLineFieldAndValue) {
+  const Case& c = GetParam();
+  TempDir dir;
+  const auto scenario = dir.write("s.toml", scenario_text(c));
+  for (const auto& [name, text] : c.files) dir.write(name, text);
+  try {
+    (void)load_scenario(scenario, kRules);
+    FAIL() << "no InputError for " << c.name;
+  } catch (const InputError& e) {
+    SCOPED_TRACE(e.what());
+    EXPECT_EQ(e.file(), dir.path() / c.file);
+    EXPECT_EQ(e.line(), c.line);
+    EXPECT_EQ(e.field(), c.field);
+    EXPECT_NE(e.found().find(c.found), std::string::npos) << "found: " << e.found();
+    EXPECT_FALSE(e.expected().empty());
+    const std::string where = c.line > 0 ? (dir.path() / c.file).string() + ":" + std::to_string(c.line)
+                                         : (dir.path() / c.file).string();
+    EXPECT_EQ(std::string(e.what()),
+              where + ": " + c.field + ": found " + e.found() + ", expected " + e.expected());
+  }
+}
+
+const std::string kCsvProfile = "file = \"p.csv\"";
+const std::string kCrossingRows = "x,z,material\n0,10,rock\n10,0,rock\n10,10,rock\n0,0,\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Reader, ScenarioError,
+    ::testing::Values(
+        // syntax and missing things
+        Case{"toml_syntax", {{6, "throws = = 2"}}, {}, "s.toml", 6, "TOML syntax", "column"},
+        Case{"missing_simulation_table", {{4, ""}, {5, ""}, {6, ""}}, {}, "s.toml", 0, "simulation", "nothing"},
+        Case{"missing_seed", {{5, ""}}, {}, "s.toml", 4, "simulation.seed", "nothing"},
+        Case{"missing_name", {{2, ""}}, {}, "s.toml", 1, "scenario.name", "nothing"},
+        Case{"missing_material_roughness", {{14, ""}}, {}, "s.toml", 11, "materials.rock.roughness", "nothing"},
+        Case{"missing_source_z", {{22, ""}}, {}, "s.toml", 20, "sources[0].z", "nothing"},
+        Case{"missing_block_mass", {{18, ""}}, {}, "s.toml", 17, "blocks.table[0].mass", "neither mass nor volume"},
+        Case{"missing_line_name", {{25, ""}}, {}, "s.toml", 24, "observation_lines[0].name", "nothing"},
+        // unknown keys, in every table
+        Case{"unknown_root", {{1, "colour = 1\n[scenario]"}}, {}, "s.toml", 1, "colour", "an unknown key"},
+        Case{"unknown_scenario", {{2, "name = \"t\"\ntitle = \"x\""}}, {}, "s.toml", 3, "scenario.title", "an unknown key"},
+        Case{"unknown_simulation", {{6, "thows = 2"}}, {}, "s.toml", 6, "simulation.thows", "an unknown key"},
+        Case{"unknown_profile", {{9, base_lines()[8] + "\nstep = 1"}}, {}, "s.toml", 10, "profile.step", "an unknown key"},
+        Case{"unknown_material", {{14, "roughness = 0.5\nrougness = 0.6"}}, {}, "s.toml", 15, "materials.rock.rougness", "an unknown key"},
+        Case{"unknown_blocks", {{16, "[blocks]\ncolour = 1"}}, {}, "s.toml", 17, "blocks.colour", "an unknown key"},
+        Case{"unknown_block_row", {{18, "mass = 100.0\nmas = 1"}}, {}, "s.toml", 19, "blocks.table[0].mas", "an unknown key"},
+        Case{"unknown_source", {{22, "z = 11.0\ny = 0"}}, {}, "s.toml", 23, "sources[0].y", "an unknown key"},
+        Case{"unknown_line", {{26, "x = 15.0\nz = 1"}}, {}, "s.toml", 27, "observation_lines[0].z", "an unknown key"},
+        // wrong types: exact-type accessors
+        Case{"seed_string", {{5, "seed = \"1\""}}, {}, "s.toml", 5, "simulation.seed", "\"1\""},
+        Case{"throws_float", {{6, "throws = 1.5"}}, {}, "s.toml", 6, "simulation.throws", "1.5"},
+        Case{"throws_integral_float", {{6, "throws = 2.0"}}, {}, "s.toml", 6, "simulation.throws", "2.0"},
+        Case{"bool_string", {{6, "throws = 2\nsize_reduction = \"yes\""}}, {}, "s.toml", 7, "simulation.size_reduction", "\"yes\""},
+        Case{"roughness_string", {{14, "roughness = \"0.5\""}}, {}, "s.toml", 14, "materials.rock.roughness", "\"0.5\""},
+        Case{"name_integer", {{2, "name = 5"}}, {}, "s.toml", 2, "scenario.name", "5"},
+        Case{"mass_bool", {{18, "mass = true"}}, {}, "s.toml", 18, "blocks.table[0].mass", "true"},
+        Case{"point_string", {{9, "points = [[\"0\", 10.0, \"rock\"], [10.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "\"0\""},
+        Case{"distribution_name", {{6, "throws = 2\nroughness_distribution = \"normal\""}}, {}, "s.toml", 7, "simulation.roughness_distribution", "\"normal\""},
+        // out of range
+        Case{"mass_negative", {{18, "mass = -5.0"}}, {}, "s.toml", 18, "blocks.table[0].mass", "-5.0"},
+        Case{"mass_zero", {{18, "mass = 0.0"}}, {}, "s.toml", 18, "blocks.table[0].mass", "0.0"},
+        Case{"volume_zero", {{18, "volume = 0.0"}}, {}, "s.toml", 18, "blocks.table[0].volume", "0.0"},
+        Case{"density_negative", {{16, "[blocks]\ndensity = -2650.0"}}, {}, "s.toml", 17, "blocks.density", "-2650.0"},
+        Case{"row_density_zero", {{18, "volume = 1.0\ndensity = 0"}}, {}, "s.toml", 19, "blocks.table[0].density", "0"},
+        Case{"friction_90", {{14, "roughness = 0.5\nfriction_angle = 90.0"}}, {}, "s.toml", 15, "materials.rock.friction_angle", "90.0"},
+        Case{"friction_negative", {{14, "roughness = 0.5\nfriction_angle = -1.0"}}, {}, "s.toml", 15, "materials.rock.friction_angle", "-1.0"},
+        Case{"kn_ref_one", {{12, "normal_energy = 5.0\nnormal_energy_k = 1.0"}}, {}, "s.toml", 13, "materials.rock.normal_energy_k", "1.0"},
+        Case{"kt_ref_zero", {{13, "tangential_energy = 50.0\ntangential_energy_k = 0.0"}}, {}, "s.toml", 14, "materials.rock.tangential_energy_k", "0.0"},
+        Case{"normal_energy_zero", {{12, "normal_energy = 0.0"}}, {}, "s.toml", 12, "materials.rock.normal_energy", "0.0"},
+        Case{"tangential_energy_negative", {{13, "tangential_energy = -50.0"}}, {}, "s.toml", 13, "materials.rock.tangential_energy", "-50.0"},
+        Case{"roughness_negative", {{14, "roughness = -0.1"}}, {}, "s.toml", 14, "materials.rock.roughness", "-0.1"},
+        Case{"throws_zero", {{6, "throws = 0"}}, {}, "s.toml", 6, "simulation.throws", "0"},
+        Case{"seed_negative", {{5, "seed = -1"}}, {}, "s.toml", 5, "simulation.seed", "-1"},
+        Case{"max_time_zero", {{6, "throws = 2\nmax_time = 0.0"}}, {}, "s.toml", 7, "simulation.max_time", "0.0"},
+        Case{"count_zero", {{18, "mass = 100.0\ncount = 0"}}, {}, "s.toml", 19, "blocks.table[0].count", "0"},
+        // NaN and infinities (TOML allows the literals)
+        Case{"roughness_nan", {{14, "roughness = nan"}}, {}, "s.toml", 14, "materials.rock.roughness", "nan"},
+        Case{"source_x_inf", {{21, "x = inf"}}, {}, "s.toml", 21, "sources[0].x", "inf"},
+        Case{"mass_minus_inf", {{18, "mass = -inf"}}, {}, "s.toml", 18, "blocks.table[0].mass", "-inf"},
+        Case{"point_nan", {{9, "points = [[0.0, nan, \"rock\"], [10.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "nan"},
+        // profile CSV: empty, truncated, non-numeric
+        Case{"csv_empty", {{9, kCsvProfile}}, {{"p.csv", ""}}, "p.csv", 0, "header", "an empty file"},
+        Case{"csv_missing", {{9, kCsvProfile}}, {}, "p.csv", 0, "file", "no such file"},
+        Case{"csv_header_only", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n"}}, "p.csv", 1, "profile", "0 vertex rows"},
+        Case{"csv_missing_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,0\n20,0,\n"}}, "p.csv", 3, "material", "2 of 3"},
+        Case{"csv_extra_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock,1\n20,0,\n"}}, "p.csv", 2, "row", "4 columns"},
+        Case{"csv_non_numeric", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,abc,rock\n20,0,\n"}}, "p.csv", 3, "z", "\"abc\""},
+        Case{"csv_nan", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,nan,rock\n20,0,\n"}}, "p.csv", 2, "z", "\"nan\""},
+        Case{"csv_unknown_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material,colour\n0,10,rock,red\n"}}, "p.csv", 1, "header", "colour"},
+        Case{"csv_missing_header_column", {{9, kCsvProfile}}, {{"p.csv", "x,material\n0,rock\n"}}, "p.csv", 1, "header", "no column \"z\""},
+        // profile geometry: crossing, too few vertices (vertex → CSV line or points entry)
+        Case{"csv_crosses_itself", {{9, kCsvProfile}}, {{"p.csv", kCrossingRows}}, "p.csv", 3, "x,z", "crosses itself"},
+        Case{"inline_crosses_itself",
+             {{9, "points = [\n  [0.0, 10.0, \"rock\"],\n  [10.0, 0.0, \"rock\"],\n  [10.0, 10.0, \"rock\"],\n  [0.0, 0.0, \"\"],\n]"}},
+             {}, "s.toml", 11, "profile.points[1]", "crosses itself"},
+        Case{"inline_one_vertex", {{9, "points = [[0.0, 10.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points", "1 vertex"},
+        Case{"csv_one_vertex", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n\n# c\n0,10,\n"}}, "p.csv", 4, "profile", "1 vertex row"},
+        Case{"inline_repeated_vertex", {{9, "points = [[0.0, 10.0, \"rock\"], [0.0, 10.0, \"rock\"], [20.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[1]", "repeats"},
+        Case{"profile_file_and_points", {{9, base_lines()[8] + "\n" + kCsvProfile}}, {}, "s.toml", 8, "profile.points", "both file and points"},
+        // materials
+        Case{"inline_material_undefined", {{9, "points = [[0.0, 10.0, \"rok\"], [20.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "\"rok\""},
+        Case{"inline_material_empty_not_last", {{9, "points = [[0.0, 10.0, \"\"], [10.0, 0.0, \"rock\"], [20.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "\"\""},
+        Case{"csv_material_undefined", {{9, kCsvProfile}}, {{"p.csv", "# comment\n\nx,z,material\n0,10,rock\n10,0,rok\n20,0,\n"}}, "p.csv", 5, "material", "\"rok\""},
+        Case{"preset_unknown", {{12, "preset = \"talsu\""}}, {}, "s.toml", 12, "materials.rock.preset", "\"talsu\""},
+        Case{"materials_file_bad_preset",
+             {{2, "name = \"t\"\nmaterials_file = \"m.toml\""}, {12, "preset = \"x\""}},
+             {{"m.toml", "[x]\nsource = \"s\"\nnormal_energy = 5.0\ntangential_energy = 50.0\nroughness = -1.0\n"}},
+             "m.toml", 5, "x.roughness", "-1.0"},
+        Case{"materials_file_unknown_key",
+             {{2, "name = \"t\"\nmaterials_file = \"m.toml\""}, {12, "preset = \"x\""}},
+             {{"m.toml", "[x]\nsource = \"s\"\nnormal_energy = 5.0\ntangential_energy = 50.0\nroughness = 1.0\ncolour = 1\n"}},
+             "m.toml", 6, "x.colour", "an unknown key"},
+        // shape factors 0.7 <= min <= max <= 2.0
+        Case{"shape_below", {{18, "mass = 100.0\nshape_factor = [0.6, 1.0]"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "[0.6, 1"},
+        Case{"shape_min_above_max", {{18, "mass = 100.0\nshape_factor = [1.5, 1.2]"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "[1.5, 1.2]"},
+        Case{"shape_above", {{18, "mass = 100.0\nshape_factor = [1.0, 2.1]"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "2.1]"},
+        Case{"shape_default_above", {{16, "[blocks]\nshape_factor = [1.0, 2.5]"}}, {}, "s.toml", 17, "blocks.shape_factor", "2.5]"},
+        Case{"shape_csv", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "mass,shape_min,shape_max\n100,1.0,1.5\n200,0.5,1.0\n"}}, "b.csv", 3, "shape_min", "0.5"},
+        // blocks CSV
+        Case{"blocks_csv_mass_negative", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "mass\n-3\n"}}, "b.csv", 2, "mass", "-3"},
+        Case{"blocks_csv_count_float", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "mass,count\n100,1.5\n"}}, "b.csv", 2, "count", "\"1.5\""},
+        Case{"blocks_csv_header_only", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,volume\n"}}, "b.csv", 1, "blocks", "no block rows"},
+        Case{"blocks_csv_truncated", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,volume\na,1.0\nb\n"}}, "b.csv", 3, "volume", "1 of 2"},
+        Case{"block_mass_and_volume", {{18, "mass = 100.0\nvolume = 1.0"}}, {}, "s.toml", 17, "blocks.table[0].volume", "both mass and volume"},
+        Case{"block_duplicate_id", {{18, "mass = 100.0\nid = \"a\"\n[[blocks.table]]\nid = \"a\"\nmass = 5.0"}}, {}, "s.toml", 21, "blocks.table[1].id", "\"a\""},
+        // sources and observation lines inside the profile's horizontal extent [0, 20]
+        Case{"source_outside", {{21, "x = -1.0"}}, {}, "s.toml", 21, "sources[0].x", "-1.0"},
+        Case{"line_outside", {{26, "x = 25.0"}}, {}, "s.toml", 26, "observation_lines[0].x", "25.0"},
+        Case{"line_duplicate_name", {{26, "x = 15.0\n[[observation_lines]]\nname = \"L\"\nx = 16.0"}}, {}, "s.toml", 28, "observation_lines[1].name", "\"L\""}),
+    [](const ::testing::TestParamInfo<Case>& i) { return i.param.name; });
+
+TEST(ScenarioReader, MissingScenarioFile) {
+  TempDir dir;
+  try {
+    (void)load_scenario(dir.path() / "nope.toml", kRules);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), dir.path() / "nope.toml");
+    EXPECT_EQ(e.line(), 0);
+    EXPECT_EQ(e.field(), "file");
+    EXPECT_EQ(e.found(), "no such file");
+    EXPECT_EQ(std::string(e.what()),
+              (dir.path() / "nope.toml").string() + ": file: found no such file, expected " + e.expected());
+  }
+}
+
+}  // namespace

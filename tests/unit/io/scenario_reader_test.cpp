@@ -1,0 +1,173 @@
+// What the reader builds from valid input: presets and overrides, block expansion, defaults,
+// accepted forms (an integer where a float is expected, a source below the ground), and the
+// presets of rules/materials.toml against the thesis's tables.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "pierre/io/scenario_reader.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using pierre::io::InputError;
+using pierre::io::load_scenario;
+using pierre::test::base_with;
+using pierre::test::TempDir;
+
+const std::filesystem::path kRules = PIERRE_SOURCE_DIR "/rules";
+
+TEST(ScenarioReader, BaseScenarioWithDefaults) {
+  TempDir dir;
+  const auto l = load_scenario(dir.write("s.toml", pierre::test::base()), kRules);
+  const auto& s = l.scenario;
+  EXPECT_EQ(s.name, "t");
+  EXPECT_EQ(s.settings.seed, 1u);
+  EXPECT_EQ(s.settings.throws, 2u);
+  EXPECT_EQ(s.settings.max_time, 600.0);
+  EXPECT_EQ(s.settings.stop_head_factor, 0.25);
+  EXPECT_TRUE(s.settings.roughness.size_reduction);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].name, "rock");
+  EXPECT_EQ(s.materials[0].source, "scenario");
+  EXPECT_EQ(s.materials[0].normal_energy_k, 0.5);
+  EXPECT_EQ(s.materials[0].tangential_energy_k, 0.95);
+  EXPECT_EQ(s.materials[0].friction_angle_deg, 30.0);
+  EXPECT_EQ(s.profile.vertices().size(), 3u);
+  ASSERT_EQ(s.blocks.size(), 1u);
+  EXPECT_EQ(s.blocks[0].id, "B1");
+  EXPECT_EQ(s.blocks[0].density, 2650.0);
+  EXPECT_EQ(s.blocks[0].shape_min, 1.0);
+  ASSERT_EQ(s.sources.size(), 1u);
+  EXPECT_EQ(s.sources[0].name, "S1");
+  ASSERT_EQ(s.lines.size(), 1u);
+  EXPECT_EQ(s.lines[0].x, 15.0);
+  EXPECT_EQ(s.trajectory_count(), 2u);
+  EXPECT_EQ(l.materials_file, kRules / "materials.toml");
+  EXPECT_NE(l.text.find("[simulation]"), std::string::npos);
+}
+
+TEST(ScenarioReader, IntegerAcceptedWhereFloatExpected) {
+  TempDir dir;
+  const auto l = load_scenario(dir.write("s.toml", base_with(14, "roughness = 1")), kRules);
+  EXPECT_EQ(l.scenario.materials[0].roughness, 1.0);
+}
+
+TEST(ScenarioReader, SourceBelowGroundIsNotAnError) {
+  TempDir dir;
+  const auto l = load_scenario(dir.write("s.toml", base_with(22, "z = -50.0")), kRules);
+  EXPECT_EQ(l.scenario.sources[0].position.z, -50.0);
+}
+
+TEST(ScenarioReader, PresetWithOverrideAndSource) {
+  TempDir dir;
+  const auto l = load_scenario(
+      dir.write("s.toml", base_with(12, "preset = \"talus\"\n").replace(
+                              base_with(12, "preset = \"talus\"\n").find("tangential_energy = 50.0\n"),
+                              25, "")),
+      kRules);
+  const auto& m = l.scenario.materials[0];
+  EXPECT_EQ(m.normal_energy, 15.0);
+  EXPECT_EQ(m.tangential_energy, 50.0);
+  EXPECT_EQ(m.roughness, 0.5);  // overridden by the scenario
+  EXPECT_NE(m.source.find("Table 4.3"), std::string::npos) << m.source;
+  EXPECT_NE(m.source.find("(overridden: roughness)"), std::string::npos) << m.source;
+}
+
+TEST(ScenarioReader, BlockGroupsExpandAndMassFromVolume) {
+  TempDir dir;
+  dir.write("b.csv", "id,volume,density,count,shape_min,shape_max\ncsv,2.0,2000,2,0.8,1.2\n,1.0,,,,\n");
+  const auto l = load_scenario(
+      dir.write("s.toml", base_with(18, "volume = 0.5\ncount = 3\nid = \"a\"\n"
+                                         "[[blocks.table]]\nmass = 10")
+                              .replace(base_with(18, "").find("[blocks]"), 8,
+                                       "[blocks]\nfile = \"b.csv\"\ndensity = 3000\nshape_factor = [1.0, 1.5]")),
+      kRules);
+  const auto& b = l.scenario.blocks;
+  ASSERT_EQ(l.block_groups.size(), 4u);
+  ASSERT_EQ(b.size(), 2u + 1u + 3u + 1u);
+  EXPECT_EQ(b[0].id, "csv.1");
+  EXPECT_EQ(b[1].id, "csv.2");
+  EXPECT_DOUBLE_EQ(b[0].mass, 4000.0);
+  EXPECT_EQ(b[0].shape_min, 0.8);
+  EXPECT_EQ(b[0].shape_max, 1.2);
+  EXPECT_EQ(b[2].id, "B2");  // CSV row 2 without id: the blocks default
+  EXPECT_DOUBLE_EQ(b[2].mass, 3000.0);
+  EXPECT_EQ(b[2].shape_max, 1.5);
+  EXPECT_EQ(b[3].id, "a.1");
+  EXPECT_EQ(b[5].id, "a.3");
+  EXPECT_DOUBLE_EQ(b[3].mass, 1500.0);  // 0.5 m³ × 3000 kg/m³
+  EXPECT_DOUBLE_EQ(b[3].volume(), 0.5);
+  EXPECT_EQ(b[6].id, "B4");
+  EXPECT_EQ(b[6].mass, 10.0);
+}
+
+TEST(ScenarioReader, ProfileCsvWithCommentsAndMaterials) {
+  TempDir dir;
+  dir.write("p.csv", "# a comment\n\nx, z, material\n0,10,rock\n10,0,rock\n20,0,\n");
+  const auto l = load_scenario(dir.write("s.toml", base_with(9, "file = \"p.csv\"")), kRules);
+  ASSERT_EQ(l.scenario.profile.segment_count(), 2u);
+  EXPECT_EQ(l.scenario.profile.segment(1).material, 0);
+  EXPECT_EQ(l.scenario.profile.x_max(), 20.0);
+}
+
+TEST(ScenarioReader, DefaultRulesDirHonoursEnvironment) {
+  ::setenv("PIERRE_RULES", "/some/where", 1);
+  EXPECT_EQ(pierre::io::default_rules_dir(), std::filesystem::path("/some/where"));
+  ::unsetenv("PIERRE_RULES");
+  EXPECT_NE(pierre::io::default_rules_dir(), std::filesystem::path("/some/where"));
+}
+
+TEST(ScenarioReader, TestDataScenarioIsValid) {
+  const auto l = load_scenario(PIERRE_TEST_DATA "/small/scenario.toml", kRules);
+  EXPECT_EQ(l.scenario.blocks.size(), 2u);
+  EXPECT_EQ(l.scenario.lines.size(), 2u);
+  EXPECT_EQ(l.scenario.trajectory_count(), 600u);
+  EXPECT_DOUBLE_EQ(l.scenario.blocks[1].mass, 1.2 * 2650.0);
+}
+
+// Every preset of rules/materials.toml, loaded through the reader, against the thesis.
+struct PresetCase {
+  const char* name;
+  double en, et, roughness;
+  const char* cites;
+};
+
+class Preset : public ::testing::TestWithParam<PresetCase> {};
+
+TEST_P(Preset, MatchesTheThesis) {
+  const PresetCase& p = GetParam();
+  TempDir dir;
+  std::string text = base_with(12, std::string("preset = \"") + p.name + "\"");
+  text.replace(text.find("tangential_energy = 50.0\n"), 25, "");
+  text.replace(text.find("roughness = 0.5\n"), 16, "");
+  const auto l = load_scenario(dir.write("s.toml", text), kRules);
+  const auto& m = l.scenario.materials[0];
+  EXPECT_EQ(m.normal_energy, p.en);
+  EXPECT_EQ(m.tangential_energy, p.et);
+  EXPECT_EQ(m.roughness, p.roughness);
+  EXPECT_EQ(m.normal_energy_k, 0.5);
+  EXPECT_EQ(m.tangential_energy_k, 0.95);
+  EXPECT_EQ(m.friction_angle_deg, 30.0);
+  EXPECT_NE(m.source.find(p.cites), std::string::npos) << m.source;
+  EXPECT_EQ(m.source.find("overridden"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    RulesMaterials, Preset,
+    ::testing::Values(PresetCase{"talus", 15, 50, 0.65, "Table 4.3"},
+                      PresetCase{"talus-vaujany", 15, 50, 0.72, "§4.4.1"},
+                      PresetCase{"vaujany-road", 15, 50, 0.4, "§4.4.1"},
+                      PresetCase{"rock-face", 5, 50, 0.65, "Table 8.1"},
+                      PresetCase{"quarry-face", 5, 50, 0.65, "Table 6.1"},
+                      PresetCase{"quarry-floor", 5, 50, 0.35, "Table 6.1"},
+                      PresetCase{"preg-initial-face", 20, 50, 0.7, "§4.4.2"},
+                      PresetCase{"preg-initial-bench", 20, 50, 0.3, "§4.4.2"}),
+    [](const ::testing::TestParamInfo<PresetCase>& i) {
+      std::string n = i.param.name;
+      for (char& c : n)
+        if (c == '-') c = '_';
+      return n;
+    });
+
+}  // namespace
