@@ -30,7 +30,8 @@ class RunCommand final : public Command {
     c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
         ->required();
     c->add_option("--out,-o", out_, "Output folder (created when missing)")->required();
-    seed_opt_ = c->add_option("--seed", seed_, "Seed (overrides simulation.seed)");
+    seed_opt_ = c->add_option("--seed", seed_, "Seed, an integer >= 0 (overrides simulation.seed)")
+                    ->check(CLI::NonNegativeNumber);
     c->add_option("--threads", threads_, "Worker threads (0: every hardware thread)")
         ->check(CLI::Range(0u, 4096u));
     throws_opt_ = c->add_option("--throws", throws_, "Throws per block and source (overrides simulation.throws)")
@@ -53,7 +54,7 @@ class RunCommand final : public Command {
     // 1. Everything about the input is checked before DIR is touched.
     io::LoadedScenario loaded = io::load_scenario(scenario_, rules_dir(rules_));
     sim::Scenario& sc = loaded.scenario;
-    if (seed_opt_->count()) sc.settings.seed = seed_;
+    if (seed_opt_->count()) sc.settings.seed = static_cast<std::uint64_t>(seed_);
     if (throws_opt_->count()) sc.settings.throws = throws_;
 
     sim::RunOptions opt;
@@ -106,7 +107,7 @@ class RunCommand final : public Command {
 
  private:
   std::string scenario_, out_, rules_;
-  std::uint64_t seed_ = 0;
+  std::int64_t seed_ = 0;  // signed, so that a negative seed is refused, not wrapped
   std::uint32_t throws_ = 1;
   unsigned threads_ = 0;
   bool quiet_ = false, impacts_ = false, all_crossings_ = false;

@@ -1,0 +1,235 @@
+// The real `pierre` binary: exit codes, files written, CSV headers, row counts, summary.json,
+// nothing written on bad input, --help examples, usage errors, reproducibility across runs and
+// thread counts.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScenario = PIERRE_TEST_DATA "/small/scenario.toml";
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static std::atomic<int> n{0};
+    dir_ = fs::temp_directory_path() /
+           ("pierre-app-test-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs `pierre ARGS` with stdout and stderr captured in files.
+  Result pierre(const std::string& args) {
+    const fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
+    const std::string cmd =
+        std::string("'") + PIERRE_BINARY + "' " + args + " >'" + o.string() + "' 2>'" + e.string() + "'";
+    const int st = std::system(cmd.c_str());
+    Result r;
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    r.out = slurp(o);
+    r.err = slurp(e);
+    return r;
+  }
+  static std::string q(const fs::path& p) {
+    std::string s(1, '\'');
+    s += p.string();
+    s += '\'';
+    return s;
+  }
+  fs::path dir_;
+};
+
+std::size_t count_lines(const std::string& s) {
+  std::size_t n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+TEST_F(Cli, RunWritesTheResults) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("run " + kScenario + " --out " + q(out) + " --threads 2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;  // stderr is not a terminal: no progress bar
+  for (const char* f : {"trajectories.csv", "crossings.csv", "summary.json"})
+    EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
+  EXPECT_FALSE(fs::exists(out / "impacts.csv"));
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(out)) {
+    ++entries;
+    EXPECT_EQ(e.path().filename().string().rfind(".pierre-partial", 0), std::string::npos);
+  }
+  EXPECT_EQ(entries, 3u);  // no staging folder left
+
+  const std::string traj = slurp(out / "trajectories.csv");
+  EXPECT_EQ(first_line(traj),
+            "trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,"
+            "runout_m,stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,"
+            "max_jump_height_m,max_speed_m_s,max_energy_kJ");
+  EXPECT_EQ(count_lines(traj), 1u + 600u);  // header + 2 blocks × 300 throws
+  const std::string cross = slurp(out / "crossings.csv");
+  EXPECT_EQ(first_line(cross),
+            "trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,"
+            "speed_m_s,omega_rad_s,translational_energy_kJ,rotational_energy_kJ,"
+            "passing_height_m,sliding");
+  EXPECT_GT(count_lines(cross), 100u);
+
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(j["trajectories"], 600);
+  EXPECT_EQ(j["seed"], 12345);
+  EXPECT_EQ(j["throws"], 300);
+  EXPECT_EQ(j["scenario"]["name"], "Small talus test");
+  ASSERT_EQ(j["lines"].size(), 2u);
+  EXPECT_EQ(j["lines"][0]["name"], "Screen 1");
+  EXPECT_EQ(j["lines"][0]["count"].get<int>() + j["lines"][0]["not_reached"].get<int>(), 600);
+  int stops = 0;
+  for (const auto& [k, v] : j["stop_reasons"].items()) stops += v.get<int>();
+  EXPECT_EQ(stops, 600);
+  EXPECT_GT(j["runout_m"]["p95"].get<double>(), j["runout_m"]["p50"].get<double>());
+
+  // The console table names the lines, the runout percentiles and the files written.
+  EXPECT_NE(r.out.find("Screen 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("speed (m/s)"), std::string::npos);
+  EXPECT_NE(r.out.find("P99"), std::string::npos);
+  EXPECT_NE(r.out.find((out / "trajectories.csv").string()), std::string::npos);
+}
+
+TEST_F(Cli, OptionsOverrideTheScenario) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("run " + kScenario + " --out " + q(out) +
+                          " --throws 3 --seed 99 --quiet --impacts --all-crossings");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;  // --quiet
+  EXPECT_EQ(count_lines(slurp(out / "trajectories.csv")), 1u + 6u);
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(j["seed"], 99);
+  EXPECT_EQ(j["trajectories"], 6);
+  const std::string imp = slurp(out / "impacts.csv");
+  EXPECT_EQ(imp.rfind("trajectory,impact,time_s,x_m,z_m,segment,material,result,", 0), 0u);
+  EXPECT_GT(count_lines(imp), 6u);
+
+  // A second run without --impacts into the same folder removes the stale impacts.csv.
+  ASSERT_EQ(pierre("run " + kScenario + " --out " + q(out) + " --throws 3 --quiet").code, 0);
+  EXPECT_FALSE(fs::exists(out / "impacts.csv"));
+}
+
+TEST_F(Cli, BadInputExitsTwoAndCreatesNothing) {
+  std::string text = slurp(kScenario);
+  text.replace(text.find("throws = 300"), 12, "throws = \"300\"");
+  std::ofstream(dir_ / "bad.toml") << text;
+  fs::copy_file(PIERRE_TEST_DATA "/small/profile.csv", dir_ / "profile.csv");
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("run " + q(dir_ / "bad.toml") + " --out " + q(out));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_NE(r.err.find((dir_ / "bad.toml").string() + ":9: simulation.throws: found \"300\", expected"),
+            std::string::npos)
+      << r.err;
+
+  // An existing output folder is left as it was.
+  fs::create_directories(out);
+  EXPECT_EQ(pierre("run " + q(dir_ / "bad.toml") + " --out " + q(out)).code, 2);
+  EXPECT_TRUE(fs::is_empty(out));
+
+  const Result v = pierre("validate " + q(dir_ / "bad.toml"));
+  EXPECT_EQ(v.code, 2);
+  EXPECT_NE(v.err.find("simulation.throws"), std::string::npos);
+}
+
+TEST_F(Cli, MissingScenarioExitsTwo) {
+  const Result r = pierre("run " + q(dir_ / "none.toml") + " --out " + q(dir_ / "out"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no such file"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(Cli, ValidatePrintsASummary) {
+  const Result r = pierre("validate " + kScenario);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("valid"), std::string::npos);
+  EXPECT_NE(r.out.find("5 vertices"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 materials"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("600 trajectories"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, HelpShowsExamplesAndExitsZero) {
+  for (const char* args : {"--help", "run --help", "validate --help"}) {
+    const Result r = pierre(args);
+    EXPECT_EQ(r.code, 0) << args;
+    EXPECT_NE(r.out.find("Example"), std::string::npos) << args << "\n" << r.out;
+  }
+  const Result run_help = pierre("run --help");
+  EXPECT_NE(run_help.out.find("--out"), std::string::npos);
+  EXPECT_NE(run_help.out.find("--all-crossings"), std::string::npos);
+}
+
+TEST_F(Cli, VersionExitsZero) {
+  const Result r = pierre("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find(PIERRE_VERSION), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, UsageErrorsExitTwo) {
+  const std::string run = "run " + kScenario + " --out " + q(dir_ / "x");
+  for (const std::string& args : {run + " --bogus",
+                                  "run " + kScenario,  // --out missing
+                                  run + " --throws 0", run + " --seed -1", run + " --threads x",
+                                  std::string("frobnicate"), std::string()}) {
+    const Result r = pierre(args);
+    EXPECT_EQ(r.code, 2) << "pierre " << args << "\n" << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
+}
+
+TEST_F(Cli, SameSeedSameFiles) {
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --out " + q(dir_ / "a")).code, 0);
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --out " + q(dir_ / "b")).code, 0);
+  for (const char* f : {"trajectories.csv", "crossings.csv", "summary.json"})
+    EXPECT_EQ(slurp(dir_ / "a" / f), slurp(dir_ / "b" / f)) << f;
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --seed 1 --out " + q(dir_ / "c")).code, 0);
+  EXPECT_NE(slurp(dir_ / "a" / "trajectories.csv"), slurp(dir_ / "c" / "trajectories.csv"));
+}
+
+TEST_F(Cli, ThreadCountDoesNotChangeResults) {
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --impacts --threads 1 --out " + q(dir_ / "t1")).code, 0);
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --impacts --threads 2 --out " + q(dir_ / "t2")).code, 0);
+  for (const char* f : {"trajectories.csv", "crossings.csv", "impacts.csv"})
+    EXPECT_EQ(slurp(dir_ / "t1" / f), slurp(dir_ / "t2" / f)) << f;
+  auto j1 = nlohmann::json::parse(slurp(dir_ / "t1" / "summary.json"));
+  auto j2 = nlohmann::json::parse(slurp(dir_ / "t2" / "summary.json"));
+  EXPECT_EQ(j1["threads"], 1);
+  EXPECT_EQ(j2["threads"], 2);  // 600 trajectories = two chunks of 512: two workers really ran
+  j1.erase("threads");
+  j2.erase("threads");
+  EXPECT_EQ(j1, j2);
+}
+
+}  // namespace
