@@ -25,8 +25,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.footer(
         "Example:\n"
-        "  pierre validate examples/vaujany/scenario.toml\n"
-        "  pierre run examples/vaujany/scenario.toml --out results/vaujany --seed 42\n"
+        "  pierre validate examples/vaujany-2d/scenario.toml\n"
+        "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42\n"
         "Run `pierre <command> --help` for a command's options. Exit codes: 0 ran, 2 bad\n"
         "input or usage, 3 internal error.");
 

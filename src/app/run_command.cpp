@@ -44,7 +44,7 @@ class RunCommand final : public Command {
     c->add_option("--rules", rules_, "Rules folder holding materials.toml");
     c->footer(
         "Example:\n"
-        "  pierre run examples/vaujany/scenario.toml --out results/vaujany --seed 42 --threads 8\n"
+        "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42 --threads 8\n"
         "writes results/vaujany/{trajectories.csv, crossings.csv, summary.json}; with --impacts\n"
         "also impacts.csv. Exit code 0 when it ran, 2 on bad input, 3 on an internal error.");
     return c;

@@ -16,7 +16,7 @@ class ValidateCommand final : public Command {
     c->add_option("--rules", rules_, "Rules folder holding materials.toml");
     c->footer(
         "Example:\n"
-        "  pierre validate examples/vaujany/scenario.toml\n"
+        "  pierre validate examples/vaujany-2d/scenario.toml\n"
         "prints a summary and exits 0 when the scenario is valid; else names the file, line and\n"
         "field at fault and exits 2.");
     return c;
