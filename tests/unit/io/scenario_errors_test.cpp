@@ -29,6 +29,8 @@ struct Case {
   std::string found;  // a substring of found()
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 std::string scenario_text(const Case& c) {
   auto lines = base_lines();
   for (const auto& [n, text] : c.replace) lines.at(static_cast<std::size_t>(n - 1)) = text;
