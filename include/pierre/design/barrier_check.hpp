@@ -1,0 +1,124 @@
+// The barrier procedure at an observation line (design-checks.md §1, thesis §4.7 and
+// appendix D): characteristic values from Weibull fits and empirically, design values with
+// partial factors, required MEL/SEL, energy class, interception height, exceedance, bootstrap
+// confidence, and the check lines. Pure: samples and rules in, a BarrierDesign out.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pierre/design/barrier_rules.hpp"
+#include "pierre/design/check_line.hpp"
+#include "pierre/stats/bootstrap.hpp"
+#include "pierre/stats/kolmogorov_smirnov.hpp"
+#include "pierre/stats/lognormal_fit.hpp"
+#include "pierre/stats/sample_summary.hpp"
+#include "pierre/stats/weibull_fit.hpp"
+
+namespace pierre::design {
+
+// The design block: given, or a rule over the blocks thrown.
+struct DesignBlock {
+  enum class Kind { given, largest, percentile } kind = Kind::largest;
+  double volume = 0;    // m³ (given)
+  double density = 0;   // kg/m³ (given; else the block's own)
+  double percentile = 95;  // of the block volumes (Kind::percentile)
+};
+
+struct CandidateBarrier {
+  std::optional<int> energy_class;
+  std::optional<double> mel_kJ, sel_kJ;   // declared capacities (override the class's)
+  std::optional<double> height;           // vertical interception height at the line, m
+  std::optional<double> elongation_mel, elongation_sel;  // declared maximum elongations, m
+  std::optional<double> distance_to_object;              // m
+  std::optional<double> residual_height;                 // m, for the residual height category
+};
+
+// Everything a scenario says about one barrier (io parses it from [[barriers]]).
+struct BarrierSpec {
+  std::string name;
+  std::string line;          // observation line name
+  std::string rules;         // rule set name
+  DesignBlock design_block;
+  std::optional<double> free_board_diameter;  // D_f, m; default: mean equivalent diameter thrown
+  std::map<std::string, std::string> data_quality;  // e.g. trajectory = "back-analysed"
+  std::optional<CandidateBarrier> candidate;        // absent: a design, not a check
+  std::optional<double> acceptable_energy_exceedance;  // probability (0..1)
+  std::optional<double> acceptable_height_exceedance;
+  std::string observed_file;  // optional CSV of observed speeds, heights, energies (echo only)
+};
+
+// The sample at the line (design-checks.md §1 step 1): first crossings in the main direction.
+struct BarrierSample {
+  std::vector<double> speed;               // m/s
+  std::vector<double> height;              // m, vertical passing height
+  std::vector<double> energy;              // J, translational, each block's own mass
+  std::vector<double> rotational_energy;   // J
+  std::uint64_t not_reached = 0;           // trajectories that never crossed
+  std::vector<double> block_volumes;       // m³, every block thrown (for the design block rule)
+  std::vector<double> block_diameters;     // m, every block thrown (default D_f)
+  std::vector<double> block_densities;     // kg/m³
+};
+
+// Observed data at the line (optional; as at Vaujany): any column may be empty.
+struct ObservedSample {
+  std::vector<double> speed, height, energy;  // m/s, m, J
+};
+
+struct QuantityFit {  // one quantity's sample statistics and fits
+  stats::SampleSummary summary;
+  std::optional<stats::WeibullFit> weibull;
+  std::optional<stats::KolmogorovSmirnovTest> weibull_ks;
+  std::optional<stats::LognormalFit> lognormal;
+  std::optional<stats::KolmogorovSmirnovTest> lognormal_ks;
+  std::string error;  // why a fit is missing
+};
+
+struct Characteristic {  // v_k or h_k
+  double weibull = 0, empirical = 0, value = 0;  // value: the governing one
+  std::optional<stats::BootstrapInterval> interval;
+};
+
+struct ExceedanceRow {  // one column of Table 4.2
+  std::string what;        // "P(E > SEL_req)"
+  double threshold = 0;    // in the quantity's unit (kJ or m)
+  std::string unit;
+  double simulated_weibull = 0, simulated_empirical = 0;
+  std::optional<double> observed_weibull;
+};
+
+struct BarrierDesign {
+  BarrierSpec spec;
+  std::string rules_title, rules_source;
+  double chainage = 0;  // m
+  std::uint64_t crossings = 0, not_reached = 0;
+  QuantityFit speed, height, energy;  // energy in kJ
+  stats::SampleSummary rotational_energy;  // kJ
+  Characteristic v_k, h_k;
+  ResolvedFactor gamma_F, gamma_M, gamma_h;
+  double gamma_E_MEL = 1, gamma_E_SEL = 1;
+  double design_volume = 0, design_density = 0;  // m³, kg/m³
+  double v_d = 0, m_d = 0, E_d_kJ = 0;            // m/s, kg, kJ
+  double MEL_req_kJ = 0, SEL_req_kJ = 0;
+  std::optional<EnergyClass> energy_class;  // smallest meeting design_on; none: above the table
+  double free_board_diameter = 0, free_board = 0, h_d = 0, h_i = 0;  // m
+  std::optional<stats::BootstrapInterval> E_d_interval, h_i_interval;
+  std::vector<ExceedanceRow> exceedance;
+  std::vector<CheckLine> checks;
+};
+
+// Runs the procedure. `seed` keys the bootstrap's own stream. Fails (with the reason) only
+// when the data cannot give a design at all, e.g. no crossing at the line.
+struct BarrierOutcome {
+  std::optional<BarrierDesign> design;
+  std::string error;
+};
+BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rules,
+                              const EnergyClassTable& classes, const BarrierSample& sample,
+                              const std::optional<ObservedSample>& observed, double chainage,
+                              std::uint64_t seed);
+
+}  // namespace pierre::design
