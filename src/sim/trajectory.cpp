@@ -25,14 +25,16 @@ enum class Mode { flight, sliding, stopped };
 class Integrator {
  public:
   Integrator(const TrajectoryModel& m, std::uint64_t index, ObservationTally& tally,
-             std::vector<ImpactRecord>* impacts)
+             std::vector<ImpactRecord>* impacts, std::vector<Vec2>* path, double path_step)
       : m_(m),
         sc_(m.scenario()),
         profile_(sc_.profile),
         set_(sc_.settings),
         g_(set_.gravity),
         tally_(tally),
-        impacts_(impacts) {
+        impacts_(impacts),
+        path_(path),
+        path_step_(path_step) {
     const TrajectoryKey key = trajectory_key(sc_, index);
     const Source& src = sc_.sources[key.source];
     blk_ = &m.block(key.block);
@@ -51,12 +53,14 @@ class Integrator {
 
   TrajectorySummary run() {
     start();
+    if (path_) path_->push_back(p_);
     while (mode_ != Mode::stopped) {
       if (mode_ == Mode::flight)
         fly();
       else
         slide();
     }
+    if (path_) path_->push_back(p_);
     out_.stop = p_;
     out_.duration = t_;
     out_.impacts = static_cast<std::uint32_t>(impacts_done_);
@@ -153,6 +157,13 @@ class Integrator {
 
   void advance_flight(double tau, int seg_from, int seg_to) {
     if (!tally_.empty()) tally_.flight(p_, v_, omega_, t_, tau, g_);
+    if (path_) {
+      const int n = std::max(1, static_cast<int>(std::ceil(tau / path_step_)));
+      for (int k = 1; k <= n; ++k) {
+        const double t = tau * k / n;
+        path_->push_back({p_.x + v_.x * t, p_.z + v_.z * t - 0.5 * g_ * t * t});
+      }
+    }
     out_.max_jump_height = profile_.max_height_above_ground(p_, v_, g_, tau, out_.max_jump_height,
                                                             seg_from, seg_to);
     p_ = {p_.x + v_.x * tau, p_.z + v_.z * tau - 0.5 * g_ * tau * tau};
@@ -264,6 +275,7 @@ class Integrator {
 
     // Advance along the segment.
     const Vec2 p0 = p_;
+    if (path_) path_->push_back(p0);
     if (!tally_.empty()) tally_.slide(p0, s.d, w_, acc, omega_, t_, tau);
     const double w0 = w_;
     if (ev == Event::end) {
@@ -324,6 +336,8 @@ class Integrator {
   const double g_;
   ObservationTally& tally_;
   std::vector<ImpactRecord>* impacts_;
+  std::vector<Vec2>* path_;
+  double path_step_;
   const model::BlockConstants* blk_ = nullptr;
   std::optional<RandomStream> rng_;
   TrajectorySummary out_;
@@ -351,8 +365,9 @@ TrajectoryModel::TrajectoryModel(const Scenario& scenario)
 
 TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_t index,
                                       ObservationTally& tally,
-                                      std::vector<ImpactRecord>* impacts) {
-  return Integrator(model, index, tally, impacts).run();
+                                      std::vector<ImpactRecord>* impacts,
+                                      std::vector<geometry::Vec2>* path, double path_step) {
+  return Integrator(model, index, tally, impacts, path, path_step).run();
 }
 
 }  // namespace pierre::sim

@@ -30,9 +30,13 @@ class TrajectoryModel {
 };
 
 // Runs trajectory `index` of the scenario. Crossings go to the tally (which appends to its
-// output), impact records to `impacts` when it is not null.
+// output), impact records to `impacts` when it is not null, and the path of the block centre
+// to `path` when it is not null (the start, every impact and sliding event, and points along
+// each flight arc at most `path_step` seconds apart: for drawing, not for analysis).
 TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_t index,
                                       ObservationTally& tally,
-                                      std::vector<ImpactRecord>* impacts);
+                                      std::vector<ImpactRecord>* impacts,
+                                      std::vector<geometry::Vec2>* path = nullptr,
+                                      double path_step = 0.05);
 
 }  // namespace pierre::sim

@@ -162,3 +162,28 @@ TEST(Trajectory, FlyingOffTheProfileEndsAtTheBoundary) {
   EXPECT_NEAR(t.stop.x, 10.0, 1e-12);
   EXPECT_EQ(t.impacts, 0u);
 }
+
+TEST(Trajectory, PathFollowsTheParabolaAndEndsAtTheStop) {
+  auto prof = test::make_profile({{0, 0}, {100, 0}});
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(5, 50, 0.3),
+                                   {test::make_block(1000)}, {10, 5}, 1);
+  s.sources[0].velocity = {2, 0};
+  const TrajectoryModel model(s);
+  ObservationTally tally(s.lines, s.profile, false);
+  std::vector<Crossing> cr;
+  tally.output(&cr);
+  std::vector<Vec2> path;
+  const auto t = simulate_trajectory(model, 0, tally, nullptr, &path, 0.01);
+  ASSERT_GT(path.size(), 10u);
+  EXPECT_EQ(path.front().x, 10.0);
+  EXPECT_EQ(path.back().x, t.stop.x);
+  // Before the first impact every point is on z = 5 − g/2 ((x − 10)/2)².
+  int before = 0;
+  for (const Vec2& p : path) {
+    const double tt = (p.x - 10) / 2;
+    EXPECT_NEAR(p.z, 5 - 0.5 * 9.81 * tt * tt, 1e-9);
+    ++before;
+    if (p.x == t.first_impact.x && p.z == t.first_impact.z) break;
+  }
+  EXPECT_GE(before, 100);  // 1.01 s of flight at most 0.01 s apart
+}
