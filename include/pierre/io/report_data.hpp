@@ -1,0 +1,35 @@
+// What the design report (report.xlsx) shows: everything gathered by the run and the checks,
+// as plain data. The layout (sheets, headings, units, formats, charts) comes from templates/.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pierre/design/barrier_check.hpp"
+#include "pierre/design/check_line.hpp"
+#include "pierre/design/run_statistics.hpp"
+#include "pierre/io/scenario_reader.hpp"
+#include "pierre/sim/results.hpp"
+
+namespace pierre::io {
+
+struct ReportData {
+  const LoadedScenario* scenario = nullptr;  // inputs as read (echoed on the Inputs sheet)
+  std::string pierre_version;
+  std::string date;           // ISO date of the run (the workbook's creation time is fixed)
+  std::uint64_t seed = 0;
+  std::uint32_t throws = 0;
+  std::vector<std::string> rule_sets;  // names and titles of the rule sets used
+  design::RunStatistics statistics;
+  std::vector<design::BarrierDesign> barriers;
+  std::vector<design::CheckLine> checks;        // every check line, all subjects
+  std::vector<std::vector<geometry::Vec2>> sample_paths;  // a few trajectories, for drawing
+  // The first rows of the data sheets (the CSVs hold everything); the caps are stated on
+  // the sheets.
+  std::vector<sim::TrajectorySummary> trajectories;
+  std::vector<sim::Crossing> crossings;
+  std::uint64_t total_trajectories = 0, total_crossings = 0;
+};
+
+}  // namespace pierre::io
