@@ -1,6 +1,7 @@
 #include "pierre/geometry/profile.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -14,6 +15,17 @@ constexpr double kStraightAngle = 1e-9;
 // Geometric slack for "on the segment" and box tests: round-off, not physics.
 constexpr double kEps = 1e-9;
 constexpr int kLeafSize = 4;
+
+std::string fmt_point(Vec2 v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%g, %g)", v.x, v.z);
+  return buf;
+}
+
+std::string fmt_crossing(const Segment& a, const Segment& b) {
+  return "the profile crosses itself: the segment from " + fmt_point(a.a) + " to " +
+         fmt_point(a.b) + " meets the segment from " + fmt_point(b.a) + " to " + fmt_point(b.b);
+}
 
 bool segments_intersect(const Segment& p, const Segment& q) {
   // Proper or touching intersection of two closed segments.
@@ -134,9 +146,7 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
         for (int j = nd.first; j < nd.last; ++j) {
           if (j <= static_cast<int>(i) + 1) continue;  // each pair once; neighbours share a vertex
           if (segments_intersect(si, p.segments_[j]))
-            found.push_back({i + 1, "the profile crosses itself: segment from vertex " +
-                                        std::to_string(i + 1) + " meets segment from vertex " +
-                                        std::to_string(j + 1) + " (1-based)"});
+            found.push_back({i, fmt_crossing(si, p.segments_[j])});
         }
       } else {
         stack.push_back(nd.left);

@@ -131,10 +131,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"csv_unknown_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material,colour\n0,10,rock,red\n"}}, "p.csv", 1, "header", "colour"},
         Case{"csv_missing_header_column", {{9, kCsvProfile}}, {{"p.csv", "x,material\n0,rock\n"}}, "p.csv", 1, "header", "no column \"z\""},
         // profile geometry: crossing, too few vertices (vertex → CSV line or points entry)
-        Case{"csv_crosses_itself", {{9, kCsvProfile}}, {{"p.csv", kCrossingRows}}, "p.csv", 3, "x,z", "crosses itself"},
+        Case{"csv_crosses_itself", {{9, kCsvProfile}}, {{"p.csv", kCrossingRows}}, "p.csv", 2, "x,z", "crosses itself"},
         Case{"inline_crosses_itself",
              {{9, "points = [\n  [0.0, 10.0, \"rock\"],\n  [10.0, 0.0, \"rock\"],\n  [10.0, 10.0, \"rock\"],\n  [0.0, 0.0, \"\"],\n]"}},
-             {}, "s.toml", 11, "profile.points[1]", "crosses itself"},
+             {}, "s.toml", 10, "profile.points[0]", "crosses itself"},
         Case{"inline_one_vertex", {{9, "points = [[0.0, 10.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points", "1 vertex"},
         Case{"csv_one_vertex", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n\n# c\n0,10,\n"}}, "p.csv", 4, "profile", "1 vertex row"},
         Case{"inline_repeated_vertex", {{9, "points = [[0.0, 10.0, \"rock\"], [0.0, 10.0, \"rock\"], [20.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[1]", "repeats"},
