@@ -73,6 +73,13 @@ class Integrator {
     mode_ = Mode::stopped;
   }
 
+  // The first contact with the floor (design-checks.md §2: ID), by impact or by sliding.
+  void note_floor(int segment) {
+    if (out_.has_floor_contact || set_.floor_segment < 0 || segment < set_.floor_segment) return;
+    out_.has_floor_contact = true;
+    out_.floor_contact = p_;
+  }
+
   void note_speed(Vec2 v, double omega) {
     const double e = 0.5 * blk_->mass * dot(v, v) + 0.5 * blk_->inertia * omega * omega;
     out_.max_speed = std::max(out_.max_speed, norm(v));
@@ -111,6 +118,7 @@ class Integrator {
       return;
     }
     seg_ = j;
+    note_floor(j);
     along_ = std::clamp(dot(p_ - s.a, s.d), 0.0, s.length);
     w_ = dot(v, s.d);
     v_ = w_ * s.d;
@@ -188,6 +196,7 @@ class Integrator {
       out_.has_first_impact = true;
       out_.first_impact = p_;
     }
+    note_floor(j);
     const auto draws = rng_->impact_draws();
     ImpactRecord* rec = nullptr;  // the TR record, only when asked for
     if (impacts_) {
@@ -314,6 +323,7 @@ class Integrator {
     const Segment& ns = profile_.segment(next);
     if (turn == VertexTurn::straight && ns.n.z > 0.0) {  // not an event: carry on
       seg_ = next;
+      note_floor(next);
       along_ = dir > 0 ? 0.0 : ns.length;
       return;
     }

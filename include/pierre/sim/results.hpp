@@ -33,6 +33,8 @@ struct TrajectorySummary {
   std::uint32_t impacts = 0;
   bool has_first_impact = false;
   geometry::Vec2 first_impact;   // m
+  bool has_floor_contact = false;  // reached SimulationSettings::floor_segment or beyond
+  geometry::Vec2 floor_contact;    // m: first impact there, or where it slid onto it
   double max_jump_height = 0;    // m, above the ground directly below
   double max_speed = 0;          // m/s, translational
   double max_energy = 0;         // J, translational + rotational

@@ -30,6 +30,9 @@ struct SimulationSettings {
   double max_sliding_speed = model::ModelDefaults::max_sliding_speed;
   double max_time = model::ModelDefaults::max_time;
   long max_impacts = model::ModelDefaults::max_impacts;
+  // Segments from this index on are the floor (a quarry's, past the toe): each trajectory
+  // records its first contact there (design-checks.md §2, ID). -1: not recorded.
+  int floor_segment = -1;
 };
 
 struct Scenario {

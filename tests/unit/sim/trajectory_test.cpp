@@ -187,3 +187,22 @@ TEST(Trajectory, PathFollowsTheParabolaAndEndsAtTheStop) {
   }
   EXPECT_GE(before, 100);  // 1.01 s of flight at most 0.01 s apart
 }
+
+TEST(Trajectory, FloorContactIsTheFirstImpactPastTheToeOrTheToeWhenSlidingOnto) {
+  // A 2 m, 20° ramp onto a floor: a block placed on the ramp slides (φ = 10°) onto the floor
+  // through the concave toe at x = 2/tan 20°; one dropped from high lands on the floor.
+  const double toe = 2 / std::tan(20 * M_PI / 180);
+  auto prof = test::make_profile({{0, 2}, {toe, 0}, {toe + 100, 0}});
+  Scenario s = test::make_scenario(prof, test::make_material(5, 50, 0.0, 10), {test::make_block(100)},
+                                   {0.5, 0}, 1);
+  s.settings.floor_segment = 1;
+  s.settings.max_sliding_speed = 100;  // no launch: it must slide onto the floor
+  const auto slid = run(s, 1).trajectories.at(0);
+  ASSERT_TRUE(slid.has_floor_contact);
+  EXPECT_NEAR(slid.floor_contact.x, toe, 1e-9);
+  s.sources[0].position = {toe + 7, 30};
+  const auto fell = run(s, 1).trajectories.at(0);
+  ASSERT_TRUE(fell.has_floor_contact);
+  EXPECT_NEAR(fell.floor_contact.x, toe + 7, 1e-12);  // vertical drop
+  EXPECT_EQ(fell.floor_contact.x, fell.first_impact.x);
+}
