@@ -1,0 +1,141 @@
+#include "pierre/stats/bootstrap.hpp"
+
+#include <algorithm>
+#include <boost/math/special_functions/beta.hpp>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "pierre/stats/math_policy.hpp"
+#include "pierre/stats/percentile.hpp"
+#include "pierre/stats/resample_index_stream.hpp"
+
+namespace pierre::stats {
+namespace {
+
+constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 33;  // ResampleIndexStream's limit
+
+std::vector<double> without_nan(std::span<const double> sample) {
+  std::vector<double> v;
+  v.reserve(sample.size());
+  std::copy_if(sample.begin(), sample.end(), std::back_inserter(v),
+               [](double x) { return !std::isnan(x); });
+  return v;
+}
+
+std::string check_sample(std::size_t n, std::size_t resamples) {
+  if (n == 0) return "bootstrap of an empty sample";
+  if (n > kMaxValues) return "bootstrap of more than 2^33 values";
+  if (resamples < 2) return "bootstrap needs at least 2 resamples";
+  return {};
+}
+
+// Efron's percentile interval from the replicates.
+Outcome<BootstrapInterval> interval(double estimate, std::vector<double> replicates,
+                                    const BootstrapOptions& options) {
+  for (double r : replicates) {
+    if (std::isnan(r)) return Outcome<BootstrapInterval>::failure("bootstrap replicate is NaN");
+  }
+  std::sort(replicates.begin(), replicates.end());
+  const double tail = 100.0 * (1.0 - options.confidence) / 2.0;
+  BootstrapInterval b;
+  b.estimate = estimate;
+  b.lower = percentile_of_sorted(replicates, tail);
+  b.upper = percentile_of_sorted(replicates, 100.0 - tail);
+  b.confidence = options.confidence;
+  b.resamples = replicates.size();
+  return Outcome<BootstrapInterval>::success(b);
+}
+
+bool bad_confidence(double c) { return !(c > 0.0 && c < 1.0); }
+
+}  // namespace
+
+Outcome<std::vector<double>> bootstrap_replicates(std::span<const double> sample,
+                                                  const Statistic& statistic, std::uint64_t seed,
+                                                  std::size_t resamples) {
+  const std::vector<double> v = without_nan(sample);
+  if (auto e = check_sample(v.size(), resamples); !e.empty()) {
+    return Outcome<std::vector<double>>::failure(e);
+  }
+  std::vector<double> out(resamples);
+  std::vector<double> buffer(v.size());  // reused: one allocation for all resamples
+  const std::uint64_t n = v.size();
+  for (std::size_t r = 0; r < resamples; ++r) {
+    ResampleIndexStream stream(seed, r);
+    for (double& x : buffer) x = v[stream.next(n)];
+    out[r] = statistic(buffer);
+  }
+  return Outcome<std::vector<double>>::success(std::move(out));
+}
+
+Outcome<BootstrapInterval> bootstrap_interval(std::span<const double> sample,
+                                              const Statistic& statistic, std::uint64_t seed,
+                                              const BootstrapOptions& options) {
+  if (bad_confidence(options.confidence)) {
+    return Outcome<BootstrapInterval>::failure("bootstrap confidence must be in (0, 1)");
+  }
+  auto reps = bootstrap_replicates(sample, statistic, seed, options.resamples);
+  if (!reps) return Outcome<BootstrapInterval>::failure(reps.error);
+  std::vector<double> copy = without_nan(sample);
+  const double estimate = statistic(copy);
+  return interval(estimate, std::move(*reps.value), options);
+}
+
+Outcome<std::vector<double>> bootstrap_percentile_replicates(std::span<const double> sample,
+                                                             double p, std::uint64_t seed,
+                                                             std::size_t resamples) {
+  std::vector<double> s = without_nan(sample);
+  if (auto e = check_sample(s.size(), resamples); !e.empty()) {
+    return Outcome<std::vector<double>>::failure(e);
+  }
+  if (!(p >= 0.0 && p <= 100.0)) {
+    return Outcome<std::vector<double>>::failure("bootstrap percentile must be in [0, 100]");
+  }
+  std::sort(s.begin(), s.end());
+  const std::size_t n = s.size();
+  const double nd = static_cast<double>(n);
+  // Type 7 position h = (n - 1) p / 100 (as percentile.cpp): ranks lo and lo + 1 (0-based).
+  const double h = static_cast<double>(n - 1) * p / 100.0;
+  const std::size_t lo = std::min(static_cast<std::size_t>(std::floor(h)), n - 1);
+  const double frac = h - static_cast<double>(lo);
+  const bool two = frac > 0.0 && lo + 1 < n;
+  const double a = static_cast<double>(lo + 1);  // 1-based rank j: U_(j) ~ Beta(j, n - j + 1)
+  const double b = nd - a + 1.0;
+  const double above = nd - a;  // uniforms above U_(j)
+  const auto index = [&](double u) {
+    return std::min(n - 1, static_cast<std::size_t>(std::floor(nd * u)));
+  };
+  std::vector<double> out(resamples);
+  for (std::size_t r = 0; r < resamples; ++r) {
+    const auto blk = ResampleIndexStream(seed, r).block(0, ResampleIndexStream::kReservedAttempt);
+    const double u1 = open_unit_interval((std::uint64_t{blk[0]} << 32) | blk[1]);
+    const double u2 = open_unit_interval((std::uint64_t{blk[2]} << 32) | blk[3]);
+    const double uj = boost::math::ibeta_inv(a, b, u1, MathPolicy());
+    const double x1 = s[index(uj)];
+    if (!two) {
+      out[r] = x1;
+      continue;
+    }
+    // The smallest of the n - j uniforms above U_(j): U_(j) + (1 - U_(j)) (1 - V^(1/(n-j))).
+    const double uj1 = uj + (1.0 - uj) * -std::expm1(std::log(u2) / above);
+    const double x2 = s[index(uj1)];
+    out[r] = (frac == 0.0 || x1 == x2) ? x1 : x1 + frac * (x2 - x1);
+  }
+  return Outcome<std::vector<double>>::success(std::move(out));
+}
+
+Outcome<BootstrapInterval> bootstrap_percentile_interval(std::span<const double> sample, double p,
+                                                         std::uint64_t seed,
+                                                         const BootstrapOptions& options) {
+  if (bad_confidence(options.confidence)) {
+    return Outcome<BootstrapInterval>::failure("bootstrap confidence must be in (0, 1)");
+  }
+  auto reps = bootstrap_percentile_replicates(sample, p, seed, options.resamples);
+  if (!reps) return Outcome<BootstrapInterval>::failure(reps.error);
+  return interval(percentile(sample, p), std::move(*reps.value), options);
+}
+
+}  // namespace pierre::stats

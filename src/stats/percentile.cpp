@@ -1,0 +1,70 @@
+#include "pierre/stats/percentile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+
+namespace pierre::stats {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<double> without_nan(std::span<const double> sample) {
+  std::vector<double> v;
+  v.reserve(sample.size());
+  std::copy_if(sample.begin(), sample.end(), std::back_inserter(v),
+               [](double x) { return !std::isnan(x); });
+  return v;
+}
+
+// Position h = (n - 1) p / 100 split into whole part and fraction; false for a bad p.
+bool position(std::size_t n, double p, std::size_t& lo, double& frac) {
+  if (n == 0 || !(p >= 0.0 && p <= 100.0)) return false;
+  const double h = static_cast<double>(n - 1) * p / 100.0;  // p/100 last: exact for whole h
+  lo = std::min(static_cast<std::size_t>(std::floor(h)), n - 1);
+  frac = h - static_cast<double>(lo);
+  return true;
+}
+
+// a + f (b - a), but exact when a == b and when f == 0, so that an infinite neighbour does
+// not turn a finite answer into NaN (inf - inf, 0 · inf).
+double interpolate(double a, double b, double f) {
+  if (f == 0.0 || a == b) return a;
+  return a + f * (b - a);
+}
+
+}  // namespace
+
+double percentile_of_sorted(std::span<const double> sorted, double p) {
+  std::size_t lo = 0;
+  double frac = 0;
+  if (!position(sorted.size(), p, lo, frac)) return kNaN;
+  if (lo + 1 >= sorted.size()) return sorted[lo];
+  return interpolate(sorted[lo], sorted[lo + 1], frac);
+}
+
+double percentile(std::span<const double> sample, double p) {
+  std::vector<double> v = without_nan(sample);
+  std::size_t lo = 0;
+  double frac = 0;
+  if (!position(v.size(), p, lo, frac)) return kNaN;
+  const auto nth = v.begin() + static_cast<std::ptrdiff_t>(lo);
+  std::nth_element(v.begin(), nth, v.end());
+  if (frac == 0.0 || lo + 1 >= v.size()) return *nth;
+  // After nth_element everything past nth is >= it: the next order statistic is their minimum.
+  const double next = *std::min_element(nth + 1, v.end());
+  return interpolate(*nth, next, frac);
+}
+
+std::vector<double> percentiles(std::span<const double> sample, std::span<const double> ps) {
+  std::vector<double> v = without_nan(sample);
+  std::sort(v.begin(), v.end());
+  std::vector<double> out;
+  out.reserve(ps.size());
+  for (double p : ps) out.push_back(percentile_of_sorted(v, p));
+  return out;
+}
+
+}  // namespace pierre::stats
