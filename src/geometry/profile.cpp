@@ -15,6 +15,8 @@ constexpr double kStraightAngle = 1e-9;
 // Geometric slack for "on the segment" and box tests: round-off, not physics.
 constexpr double kEps = 1e-9;
 constexpr int kLeafSize = 4;
+// Segments tested in order from the departure before the tree is used.
+constexpr int kMarch = 6;
 
 std::string fmt_point(Vec2 v) {
   char buf[64];
@@ -345,7 +347,19 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
     // only the siblings ahead, which keeps a short hop on a 10 000-vertex section cheap.
     const bool ahead_is_right = (v0.x > 0) == (main_direction_ > 0);
     if (!ahead_is_right) seed = std::min(dep.segment[0], dep.segment[1] >= 0 ? dep.segment[1] : dep.segment[0]);
-    int node = leaf_of_[seed];
+    // Most hops land within a few segments: test them in order first (in x order the first
+    // contact found is the earliest), and only then climb the tree.
+    const int step = ahead_is_right ? 1 : -1;
+    const int n = static_cast<int>(segments_.size());
+    int j = seed;
+    for (int k = 0; k < kMarch && !found; ++k) {
+      j += step;
+      if (j < 0 || j >= n) break;
+      if (j != dep.segment[0] && j != dep.segment[1]) test_segment(j);
+    }
+    if (found) return best;
+    if (j < 0 || j >= n) return std::nullopt;
+    int node = leaf_of_[j];
     search(node);
     while (!found && node != 0) {
       const int parent = parents_[node];
@@ -418,6 +432,20 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
   if (x_monotone_ && seg_a >= 0 && seg_b >= 0) {
     lo = std::min(seg_a, seg_b);
     hi = std::max(seg_a, seg_b);
+  }
+  // h(t) = z(t) − ground(x(t)) is a concave quadratic on each segment: its maximum over the
+  // part of the arc above the segment is at the stationary point or an end.
+  auto segment_max = [&](const Segment& s) {
+    double sa, sb;
+    if (s.d.x == 0.0 || !ax.window(s.x_lo, s.x_hi, t_end, sa, sb)) return -kInf;
+    const double slope = s.d.z / s.d.x;
+    const double t_star = std::clamp((v0.z - v0.x * slope) / g, sa, sb);
+    const double x = p0.x + v0.x * t_star;
+    return z_at(t_star) - (s.a.z + (x - s.a.x) * slope);
+  };
+  if (x_monotone_ && hi - lo < 2 * kMarch) {  // a short hop: the few segments under it, directly
+    for (int j = lo; j <= hi; ++j) best = std::max(best, segment_max(segments_[j]));
+    return best;
   }
   auto bound = [&](const Node& nd) {
     if (nd.last <= lo || nd.first > hi) return -kInf;

@@ -18,7 +18,7 @@ class RandomStream {
   RandomStream(std::uint64_t seed, std::uint64_t trajectory)
       : key_{{seed}}, ctr_{{0u, trajectory}} {}
 
-  // The draws of the next impact: one Philox block of 128 bits gives two 53-bit uniforms
+  // The draws of the next impact: one Philox block of 128 bits gives two 52-bit uniforms
   // in the open interval (0, 1) (Random123's u01 on 64 bits can return 1.0: library-notes.md)
   // and one spare bit for the travel sign on level ground.
   model::ImpactDraws impact_draws() {
@@ -27,14 +27,16 @@ class RandomStream {
     model::ImpactDraws d;
     d.roughness_u = to_open_unit(w0);
     d.shape_u = to_open_unit(w1);
-    d.level_sign = (w0 & 1u) != 0;  // bit 0 is below the 53 bits used by roughness_u
+    d.level_sign = (w0 & 1u) != 0;  // bit 0 is below the 52 bits used by roughness_u
     return d;
   }
 
   std::uint64_t draws_used() const { return ctr_[0]; }
 
+  // (k + 0.5) / 2^52 with k the top 52 bits: strictly inside (0, 1). (With 53 bits the top
+  // value 2^53 − 0.5 is not a double and rounds to 1.0.)
   static double to_open_unit(std::uint64_t w) {
-    return (static_cast<double>(w >> 11) + 0.5) * 0x1.0p-53;
+    return (static_cast<double>(w >> 12) + 0.5) * 0x1.0p-52;
   }
 
  private:
