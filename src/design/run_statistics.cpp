@@ -1,5 +1,7 @@
 #include "pierre/design/run_statistics.hpp"
 
+#include "pierre/stats/percentile.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,17 +30,6 @@ void RunSamples::add(const sim::Crossing& c) {
   l.translational_energy.push_back(c.translational_energy);
 }
 
-// PRIVATE HELPER: the stats layer (pierre::stats, being written in parallel) will offer the
-// empirical percentile; until then this is the type-7 estimator: h = (n − 1) p,
-// x[⌊h⌋] + (h − ⌊h⌋)(x[⌊h⌋ + 1] − x[⌊h⌋]).
-double percentile_sorted(const std::vector<double>& x, double p) {
-  if (x.empty()) return kNaN;
-  const double h = (static_cast<double>(x.size()) - 1.0) * std::clamp(p, 0.0, 1.0);
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  if (lo + 1 >= x.size()) return x.back();
-  return x[lo] + (h - static_cast<double>(lo)) * (x[lo + 1] - x[lo]);
-}
-
 QuantityStatistics quantity_statistics(std::vector<double> v) {
   QuantityStatistics q;
   q.count = v.size();
@@ -50,8 +41,8 @@ QuantityStatistics quantity_statistics(std::vector<double> v) {
   double sum = 0;  // in sorted order: independent of how the run was split
   for (double x : v) sum += x;
   q.mean = sum / static_cast<double>(v.size());
-  q.p50 = percentile_sorted(v, 0.50);
-  q.p95 = percentile_sorted(v, 0.95);
+  q.p50 = stats::percentile_of_sorted(v, 50);
+  q.p95 = stats::percentile_of_sorted(v, 95);
   q.max = v.back();
   return q;
 }
@@ -79,9 +70,9 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   std::vector<double> r = samples.runout();
   std::sort(r.begin(), r.end());
   s.runout.count = r.size();
-  s.runout.p50 = percentile_sorted(r, 0.50);
-  s.runout.p95 = percentile_sorted(r, 0.95);
-  s.runout.p99 = percentile_sorted(r, 0.99);
+  s.runout.p50 = stats::percentile_of_sorted(r, 50);
+  s.runout.p95 = stats::percentile_of_sorted(r, 95);
+  s.runout.p99 = stats::percentile_of_sorted(r, 99);
   s.runout.max = r.empty() ? kNaN : r.back();
   for (std::size_t k = 0; k < kStopReasonCount; ++k)
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});

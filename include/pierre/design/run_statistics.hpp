@@ -84,7 +84,5 @@ struct RunStatistics {
 RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
                              const RunSamples& samples);
 QuantityStatistics quantity_statistics(std::vector<double> values);
-// Type-7 percentile of sorted values, p in [0, 1]; NaN when empty.
-double percentile_sorted(const std::vector<double>& sorted, double p);
 
 }  // namespace pierre::design

@@ -1,5 +1,5 @@
-// design::run_statistics (tested here: the io test program links the design layer): type-7
-// percentiles against hand values, counts, not-reached, NaN when a line is never crossed.
+// design::run_statistics (tested here: the io test program links the design layer): counts,
+// not-reached, NaN when a line is never crossed (the percentiles are stats::, tested there).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,17 +9,6 @@
 namespace {
 
 using namespace pierre;
-
-TEST(RunStatistics, Type7Percentiles) {
-  std::vector<double> x{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.5), 5.5);
-  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.95), 9.55);  // h = 8.55
-  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.99), 9.91);
-  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 1.0), 10.0);
-  EXPECT_DOUBLE_EQ(design::percentile_sorted(x, 0.0), 1.0);
-  EXPECT_DOUBLE_EQ(design::percentile_sorted({4.0}, 0.95), 4.0);
-  EXPECT_TRUE(std::isnan(design::percentile_sorted({}, 0.5)));
-}
 
 TEST(RunStatistics, LinesRunoutAndStops) {
   design::RunSamples s(2, -1);  // a profile running towards decreasing x
