@@ -1,0 +1,101 @@
+// Statistics of the quarry distances (design-checks.md §2, "Statistics"): P50, P95, P99 and
+// maximum of ID and RD in metres and divided by H (the columns of thesis Tables 6.2, 6.3); a
+// log-normal of the /H values fitted by maximum likelihood over the positive values, with
+// right-censored values as censored observations and the zeros as a point mass p0, so that
+// P(X > d) = (1 − p0) S_logn(d) for d > 0 (stats/censored_lognormal_fit.hpp; thesis Fig 6.5);
+// its KS statistic; the distance at a probability of exceedance; comparisons with observed
+// values (CDF RMSE on the observed break points, Eq 4.1, and the two-sample KS statistic).
+//
+// Percentiles are type 7 (stats/percentile.hpp); +infinity (a block that left the profile) is
+// "beyond every value", so a percentile or maximum that needs it is +infinity: "beyond the
+// profile". Samples pooled over sections of different H are normalized value by value, each by
+// its own section's H; the /H percentiles are those of the normalized sample (for one section,
+// exactly the metre percentiles / H).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pierre/stats/censored_lognormal_fit.hpp"
+#include "pierre/stats/kolmogorov_smirnov.hpp"
+
+namespace pierre::design {
+
+// One distance (ID or RD) of one section, or pooled over several.
+struct DistanceSample {
+  std::vector<double> metres;      // m; +infinity: censored
+  std::vector<double> normalized;  // / H of its own section; +infinity: censored
+  std::vector<double> censored_at;  // / H: the censoring threshold of each censored value
+  // Appends a section's values (m) with its H and the distance where its censored values
+  // were censored (the floor length, m).
+  void add(std::span<const double> values_m, double height, double censor_distance);
+  std::size_t size() const { return metres.size(); }
+};
+
+// KS statistic of the mixture fit against the sample, taken below the smallest censoring
+// threshold (above it the sample's CDF is not known), with the ties at zero stepped together
+// (the point mass); p-value with Stephens' correction, n = every value (censored included).
+// The fit's parameters come from the same sample: the p-value is too large (Lilliefors).
+struct MixtureKs {
+  double statistic = 0;
+  double p_value = 1;
+  double n = 0;
+  double below = 0;  // the supremum is taken for d < below (+infinity: uncensored)
+};
+
+struct DistanceStatistics {
+  std::size_t count = 0, zeros = 0, censored = 0;
+  double p50 = 0, p95 = 0, p99 = 0, max = 0;          // m
+  double p50_h = 0, p95_h = 0, p99_h = 0, max_h = 0;  // / H
+  std::optional<stats::CensoredLognormalFit> fit;  // of the /H values
+  std::optional<MixtureKs> ks;
+  std::string fit_error;  // why there is no fit
+};
+
+DistanceStatistics distance_statistics(const DistanceSample& sample);
+
+stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
+                                     const stats::CensoredLognormalFit& fit, double below);
+
+// The empirical distance (same unit as the sample) exceeded with probability q: the type-7
+// percentile 100 (1 − q); +infinity when it is beyond the profile; NaN for q outside [0, 1].
+double empirical_at_exceedance(std::span<const double> sample, double q);
+// Share of the sample above d (censored values are above every d).
+double empirical_exceedance(std::span<const double> sample, double d);
+
+// Observed values of one distance: raw observations and/or printed summary values.
+struct ObservedDistance {
+  std::vector<double> metres;  // raw observations, m (may be empty)
+  std::vector<double> heights;  // H of the section of each raw observation, m
+  std::optional<double> p50, p95, max;  // printed summary values, m
+  std::optional<std::size_t> count;     // number of observations behind the summary
+  bool empty() const { return metres.empty() && !p50 && !p95 && !max; }
+};
+
+struct ObservedComparison {
+  bool raw = false;       // from raw observations (else from printed summary values)
+  std::size_t count = 0;  // observations (0 when unknown)
+  double p50 = 0, p95 = 0, max = 0;          // m (NaN when unknown)
+  double p50_h = 0, p95_h = 0, max_h = 0;    // / H
+  // Eq 4.1: the CDFs at the observed break points (/H): with raw observations their distinct
+  // values; with summary values the printed P50, P95 and max, whose observed CDF is 0.50,
+  // 0.95 and 1.
+  std::vector<double> breaks_h, simulated_cdf, observed_cdf;
+  std::optional<double> cdf_rmse;
+  std::optional<stats::KolmogorovSmirnovTest> ks;  // two-sample, raw observations only
+};
+
+// `height` converts summary values to /H (the row's H; raw values use their own).
+ObservedComparison compare_observed(const DistanceSample& simulated, const ObservedDistance& observed,
+                                    double height);
+
+struct DurationStatistics {
+  std::size_t count = 0;
+  double p50 = 0, p95 = 0, max = 0;  // s
+};
+DurationStatistics duration_statistics(std::span<const double> durations);
+
+}  // namespace pierre::design

@@ -1,0 +1,163 @@
+#include "pierre/design/quarry_statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pierre/stats/cdf_rmse.hpp"
+#include "pierre/stats/empirical_cdf.hpp"
+#include "pierre/stats/lognormal_fit.hpp"
+#include "pierre/stats/percentile.hpp"
+
+namespace pierre::design {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+void DistanceSample::add(std::span<const double> values_m, double height, double censor_distance) {
+  for (double v : values_m) {
+    metres.push_back(v);
+    normalized.push_back(v / height);
+    if (std::isinf(v)) censored_at.push_back(censor_distance / height);
+  }
+}
+
+stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
+                                     const stats::CensoredLognormalFit& fit, double below) {
+  using Result = stats::Outcome<MixtureKs>;
+  std::vector<double> x;
+  x.reserve(sample.size());
+  for (double v : sample)
+    if (!std::isnan(v)) x.push_back(v);
+  if (x.empty()) return Result::failure("empty sample");
+  std::sort(x.begin(), x.end());
+  const double n = static_cast<double>(x.size());
+  const double p0 = fit.zero_share;
+  auto F = [&](double d) { return d < 0 ? 0.0 : p0 + (1 - p0) * stats::cdf(fit.positive, d); };
+  double D = 0;
+  std::size_t i = 0;
+  while (i < x.size() && x[i] < below) {
+    const double v = x[i];
+    std::size_t j = i;
+    while (j < x.size() && x[j] == v) ++j;  // ties stepped together
+    const double fn_left = static_cast<double>(i) / n, fn_right = static_cast<double>(j) / n;
+    const double f_left = v <= 0 ? 0.0 : F(v), f_right = F(v);
+    D = std::max({D, std::abs(fn_right - f_right), std::abs(fn_left - f_left)});
+    i = j;
+  }
+  if (std::isfinite(below)) {  // just below the censoring threshold
+    const double fn = static_cast<double>(i) / n;
+    D = std::max(D, std::abs(fn - F(below)));
+  }
+  MixtureKs out;
+  out.statistic = D;
+  out.n = n;
+  out.below = below;
+  out.p_value = stats::kolmogorov_p_value_stephens(D, n);
+  return Result::success(out);
+}
+
+DistanceStatistics distance_statistics(const DistanceSample& s) {
+  DistanceStatistics out;
+  out.count = s.size();
+  for (double v : s.normalized) {
+    if (v == 0) ++out.zeros;
+    if (std::isinf(v)) ++out.censored;
+  }
+  const double ps[] = {50, 95, 99, 100};
+  const auto m = stats::percentiles(s.metres, ps);
+  const auto h = stats::percentiles(s.normalized, ps);
+  auto at = [](const std::vector<double>& v, std::size_t k) { return k < v.size() ? v[k] : kNaN; };
+  out.p50 = at(m, 0), out.p95 = at(m, 1), out.p99 = at(m, 2), out.max = at(m, 3);
+  out.p50_h = at(h, 0), out.p95_h = at(h, 1), out.p99_h = at(h, 2), out.max_h = at(h, 3);
+  if (out.count == 0) {
+    out.fit_error = "no values";
+    return out;
+  }
+  std::vector<double> finite;
+  for (double v : s.normalized)
+    if (std::isfinite(v)) finite.push_back(v);
+  const auto fit = stats::fit_censored_lognormal(finite, s.censored_at);
+  if (!fit) {
+    out.fit_error = fit.error;
+    return out;
+  }
+  out.fit = *fit;
+  const double below =
+      s.censored_at.empty() ? kInf : *std::min_element(s.censored_at.begin(), s.censored_at.end());
+  if (auto ks = mixture_ks(s.normalized, *fit, below)) out.ks = *ks;
+  return out;
+}
+
+double empirical_at_exceedance(std::span<const double> sample, double q) {
+  if (!(q >= 0 && q <= 1)) return kNaN;
+  return stats::percentile(sample, 100.0 * (1.0 - q));
+}
+
+double empirical_exceedance(std::span<const double> sample, double d) {
+  std::size_t n = 0, above = 0;
+  for (double v : sample) {
+    if (std::isnan(v)) continue;
+    ++n;
+    if (v > d) ++above;
+  }
+  return n == 0 ? kNaN : static_cast<double>(above) / static_cast<double>(n);
+}
+
+ObservedComparison compare_observed(const DistanceSample& simulated, const ObservedDistance& obs,
+                                    double height) {
+  ObservedComparison out;
+  out.p50 = out.p95 = out.max = kNaN;
+  out.p50_h = out.p95_h = out.max_h = kNaN;
+  if (!obs.metres.empty()) {
+    out.raw = true;
+    out.count = obs.metres.size();
+    std::vector<double> norm(obs.metres.size());
+    for (std::size_t i = 0; i < norm.size(); ++i)
+      norm[i] = obs.metres[i] / (i < obs.heights.size() ? obs.heights[i] : height);
+    const double ps[] = {50, 95, 100};
+    const auto m = stats::percentiles(obs.metres, ps);
+    const auto h = stats::percentiles(norm, ps);
+    out.p50 = m[0], out.p95 = m[1], out.max = m[2];
+    out.p50_h = h[0], out.p95_h = h[1], out.max_h = h[2];
+    out.breaks_h = norm;
+    std::sort(out.breaks_h.begin(), out.breaks_h.end());
+    out.breaks_h.erase(std::unique(out.breaks_h.begin(), out.breaks_h.end()), out.breaks_h.end());
+    out.observed_cdf = stats::empirical_cdf(norm, out.breaks_h);
+    out.simulated_cdf = stats::empirical_cdf(simulated.normalized, out.breaks_h);
+    if (auto ks = stats::kolmogorov_smirnov_two_sample(simulated.normalized, norm)) out.ks = *ks;
+  } else {
+    out.count = obs.count.value_or(0);
+    if (obs.p50) out.p50 = *obs.p50, out.p50_h = *obs.p50 / height;
+    if (obs.p95) out.p95 = *obs.p95, out.p95_h = *obs.p95 / height;
+    if (obs.max) out.max = *obs.max, out.max_h = *obs.max / height;
+    const std::pair<std::optional<double>, double> pts[] = {
+        {obs.p50, 0.50}, {obs.p95, 0.95}, {obs.max, 1.0}};
+    for (const auto& [v, F] : pts)
+      if (v) {
+        out.breaks_h.push_back(*v / height);
+        out.observed_cdf.push_back(F);
+      }
+    out.simulated_cdf = stats::empirical_cdf(simulated.normalized, out.breaks_h);
+  }
+  if (!out.breaks_h.empty() && !simulated.normalized.empty())
+    if (auto r = stats::cdf_rmse(out.simulated_cdf, out.observed_cdf)) out.cdf_rmse = *r;
+  return out;
+}
+
+DurationStatistics duration_statistics(std::span<const double> durations) {
+  DurationStatistics out;
+  for (double d : durations)
+    if (!std::isnan(d)) ++out.count;
+  const double ps[] = {50, 95, 100};
+  const auto v = stats::percentiles(durations, ps);
+  out.p50 = v.size() > 0 ? v[0] : kNaN;
+  out.p95 = v.size() > 1 ? v[1] : kNaN;
+  out.max = v.size() > 2 ? v[2] : kNaN;
+  return out;
+}
+
+}  // namespace pierre::design

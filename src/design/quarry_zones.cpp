@@ -1,0 +1,364 @@
+#include "pierre/design/quarry_zones.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "pierre/stats/percentile.hpp"
+
+namespace pierre::design {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string num(double v, int precision = 4) {
+  if (std::isinf(v)) return v > 0 ? "beyond the profile" : "-inf";
+  std::ostringstream s;
+  s.precision(precision);
+  s << v;
+  return s.str();
+}
+
+std::string rule_of(const QuarryRuleSet& r, const std::string& id) {
+  auto it = r.clauses.find(id);
+  if (it == r.clauses.end()) {
+    const auto dot = id.find('.');
+    if (dot != std::string::npos) it = r.clauses.find(id.substr(0, dot));
+  }
+  return it == r.clauses.end() ? r.name : r.name + " " + it->second;
+}
+
+double mean_of_finite(const std::vector<double>& v, std::size_t* n = nullptr) {
+  double s = 0;
+  std::size_t k = 0;
+  for (double x : v)
+    if (std::isfinite(x)) s += x, ++k;
+  if (n) *n = k;
+  return k ? s / static_cast<double>(k) : kNaN;
+}
+
+CheckLine line(const std::string& subject, const std::string& id, const QuarryRuleSet& rules) {
+  CheckLine l;
+  l.subject = subject;
+  l.id = id;
+  l.rule = rule_of(rules, id);
+  return l;
+}
+
+}  // namespace
+
+GoverningDistance governing_distance(const DistanceSample& sample, const DistanceStatistics& st,
+                                     const QuarryRuleSet& rules) {
+  GoverningDistance g;
+  g.percentile_h = g.maximum_h = g.lognormal_h = kNaN;
+  g.value_h = kNaN;
+  std::string how;
+  auto take = [&](double v, const std::string& text) {
+    how += (how.empty() ? "" : ", ") + text;
+    if (std::isnan(v)) return;
+    g.value_h = std::isnan(g.value_h) ? v : std::max(g.value_h, v);
+  };
+  for (QuarryGoverning c : rules.governing) {
+    switch (c) {
+      case QuarryGoverning::percentile:
+        g.percentile_h = stats::percentile(sample.normalized, rules.percentile);
+        take(g.percentile_h, "P" + num(rules.percentile) + " " + num(g.percentile_h) +
+                                 (std::isfinite(g.percentile_h) ? " H" : ""));
+        break;
+      case QuarryGoverning::maximum:
+        g.maximum_h = st.max_h;
+        take(g.maximum_h, "maximum " + num(g.maximum_h) + (std::isfinite(g.maximum_h) ? " H" : ""));
+        break;
+      case QuarryGoverning::lognormal:
+        if (st.fit) {
+          g.lognormal_h = stats::value_at_exceedance(*st.fit, 1.0 - rules.lognormal_percentile / 100.0);
+          take(g.lognormal_h, "log-normal P" + num(rules.lognormal_percentile) + " " +
+                                  num(g.lognormal_h) + " H");
+        } else {
+          take(kNaN, "log-normal P" + num(rules.lognormal_percentile) + ": no fit (" + st.fit_error + ")");
+        }
+        break;
+    }
+  }
+  g.how = rules.governing.size() > 1 ? "larger of " + how : how;
+  return g;
+}
+
+QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint64_t seed) {
+  QuarryOutcome result;
+  if (in.empty()) {
+    result.error = "no quarry section";
+    return result;
+  }
+  QuarryDesign d;
+
+  // Rows: a lone section, or the sections of one group, in the order they first appear.
+  std::map<std::string, std::size_t> group_row;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const QuarrySectionInput& s = in[i];
+    if (!(s.geometry.height > 0)) {
+      result.error = "section \"" + s.spec.name + "\" has no height H > 0";
+      return result;
+    }
+    std::size_t r;
+    if (!s.spec.group.empty() && group_row.count(s.spec.group)) {
+      r = group_row[s.spec.group];
+      QuarryRow& row = d.rows[r];
+      if (in[row.sections.front()].rules.name != s.rules.name) {
+        result.error = "sections of group \"" + s.spec.group + "\" use different rule sets (\"" +
+                       in[row.sections.front()].rules.name + "\", \"" + s.rules.name + "\")";
+        return result;
+      }
+      row.pooled = true;
+    } else {
+      r = d.rows.size();
+      QuarryRow row;
+      row.name = s.spec.group.empty() ? s.spec.name : s.spec.group;
+      row.rules = s.rules.name;
+      d.rows.push_back(std::move(row));
+      if (!s.spec.group.empty()) group_row[s.spec.group] = r;
+    }
+    d.rows[r].sections.push_back(i);
+    QuarrySectionResult sr;
+    sr.spec = s.spec;
+    sr.rules_title = s.rules.title;
+    sr.rules_source = s.rules.source;
+    sr.geometry = s.geometry;
+    sr.distances = s.distances;
+    sr.row = r;
+    d.sections.push_back(std::move(sr));
+  }
+
+  for (std::size_t r = 0; r < d.rows.size(); ++r) {
+    QuarryRow& row = d.rows[r];
+    const QuarrySectionInput& first = in[row.sections.front()];
+    const QuarryRuleSet& rules = first.rules;
+    std::vector<double> durations;
+    double h_sum = 0;
+    ObservedDistance obs_id, obs_rd;
+    for (std::size_t i : row.sections) {
+      const QuarrySectionInput& s = in[i];
+      const QuarryDistances& q = s.distances;
+      const double H = s.geometry.height;
+      h_sum += H;
+      row.id_sample.add(q.id, H, q.censor_distance);
+      row.rd_sample.add(q.rd, H, q.censor_distance);
+      d.all_id.add(q.id, H, q.censor_distance);
+      d.all_rd.add(q.rd, H, q.censor_distance);
+      durations.insert(durations.end(), q.duration.begin(), q.duration.end());
+      row.thrown += q.thrown;
+      row.reached_floor += q.reached_floor;
+      row.not_reached_floor += q.not_reached_floor;
+      row.above_toe += q.above_toe;
+      row.left_profile += q.left_profile;
+      row.left_upslope += q.left_upslope;
+      row.abnormal += q.abnormal;
+      // Observed: raw values pooled; printed summary values from the first section giving them.
+      for (auto [src, dst] : {std::pair{&s.observed.id, &obs_id}, std::pair{&s.observed.rd, &obs_rd}}) {
+        dst->metres.insert(dst->metres.end(), src->metres.begin(), src->metres.end());
+        dst->heights.insert(dst->heights.end(), src->metres.size(), H);
+        if (!dst->p50 && !dst->p95 && !dst->max) {
+          dst->p50 = src->p50;
+          dst->p95 = src->p95;
+          dst->max = src->max;
+          dst->count = src->count;
+        }
+      }
+    }
+    row.height = h_sum / static_cast<double>(row.sections.size());
+    row.id = distance_statistics(row.id_sample);
+    row.rd = distance_statistics(row.rd_sample);
+    row.duration = duration_statistics(durations);
+    for (double q : first.spec.exceedance) {
+      ExceedanceDistance e;
+      e.probability = q;
+      e.rd_fit_h = row.rd.fit ? stats::value_at_exceedance(*row.rd.fit, q) : kNaN;
+      e.id_fit_h = row.id.fit ? stats::value_at_exceedance(*row.id.fit, q) : kNaN;
+      e.rd_empirical_h = empirical_at_exceedance(row.rd_sample.normalized, q);
+      e.id_empirical_h = empirical_at_exceedance(row.id_sample.normalized, q);
+      e.rd_fit = e.rd_fit_h * row.height;
+      e.id_fit = e.id_fit_h * row.height;
+      e.rd_empirical = e.rd_empirical_h * row.height;
+      e.id_empirical = e.id_empirical_h * row.height;
+      row.exceedance.push_back(e);
+    }
+    row.rd_gov = governing_distance(row.rd_sample, row.rd, rules);
+    row.id_gov = governing_distance(row.id_sample, row.id, rules);
+    if (!row.rd_sample.normalized.empty() &&
+        std::isfinite(stats::percentile(row.rd_sample.normalized, rules.sample_percentile))) {
+      stats::BootstrapOptions opt;
+      opt.resamples = rules.sample_resamples;
+      opt.confidence = rules.sample_confidence;
+      if (auto ci = stats::bootstrap_percentile_interval(row.rd_sample.normalized,
+                                                         rules.sample_percentile, seed + r, opt))
+        row.rd_interval = *ci;
+    }
+    if (!obs_id.empty()) row.observed_id = compare_observed(row.id_sample, obs_id, row.height);
+    if (!obs_rd.empty()) row.observed_rd = compare_observed(row.rd_sample, obs_rd, row.height);
+
+    // Section zones and checks.
+    for (std::size_t i : row.sections) {
+      QuarrySectionResult& sr = d.sections[i];
+      const double H = sr.geometry.height;
+      const std::string& subject = sr.spec.name;
+      sr.danger_zone = row.rd_gov.value_h * H;
+      sr.first_impact_zone = row.id_gov.value_h * H;
+      const std::string gov_text = "RD_gov = " + num(sr.danger_zone) +
+                                   (std::isfinite(sr.danger_zone) ? " m" : "") + " (" +
+                                   row.rd_gov.how + ")";
+      auto zone_line = [&](const std::string& id, const std::string& what, double value) {
+        CheckLine l = line(subject, id, rules);
+        l.what = what;
+        l.value = value;
+        l.limit = sr.danger_zone;
+        l.unit = "m";
+        if (std::isnan(sr.danger_zone)) {
+          l.status = CheckStatus::not_applicable;
+          l.reason = "no runout sample";
+        } else if (std::isinf(sr.danger_zone)) {
+          l.status = CheckStatus::fail;
+          l.reason = "the danger zone reaches beyond the profile's end: more than " +
+                     num(100 - rules.percentile) + " % of the blocks left the section (" +
+                     std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
+                     "); extend the section";
+        } else if (value < sr.danger_zone) {
+          l.status = CheckStatus::fail;
+          l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
+        } else {
+          l.status = CheckStatus::pass;
+          l.reason = num(value) + " m from the toe is outside the danger zone: " + gov_text;
+        }
+        d.checks.push_back(std::move(l));
+      };
+      for (const WorkArea& a : sr.spec.work_areas)
+        zone_line("zone." + a.name, "distance of work area \"" + a.name + "\" from the toe vs the danger zone RD_gov", a.distance);
+      if (sr.spec.work_areas.empty() && std::isinf(sr.danger_zone))
+        zone_line("zone.extent", "the danger zone RD_gov vs the section's floor length", sr.geometry.floor_length);
+
+      if (sr.spec.bench_width) {
+        const double w = *sr.spec.bench_width;
+        const double above = empirical_exceedance(row.rd_sample.normalized, w / H);
+        sr.bench_retention = std::isnan(above) ? kNaN : 1.0 - above;
+        CheckLine l = line(subject, "bench.retention", rules);
+        l.what = "share of all blocks stopping within the catch bench (RD <= " + num(w) + " m) vs the target";
+        l.value = 100.0 * *sr.bench_retention;
+        l.limit = 100.0 * rules.retention_target;
+        l.unit = "%";
+        if (std::isnan(l.value)) {
+          l.status = CheckStatus::not_applicable;
+          l.reason = "no runout sample";
+        } else {
+          l.status = *sr.bench_retention >= rules.retention_target ? CheckStatus::pass : CheckStatus::fail;
+          l.reason = num(l.value, 3) + " % of " + std::to_string(row.thrown) + " blocks retained " +
+                     (l.status == CheckStatus::pass ? ">= " : "< ") + num(l.limit, 3) + " %";
+        }
+        d.checks.push_back(std::move(l));
+
+        sr.ritchie_width = rules.ritchie_factor * H + rules.ritchie_offset;
+        CheckLine k = line(subject, "bench.ritchie", rules);
+        k.what = "planned bench width vs the modified Ritchie width " + num(rules.ritchie_factor) +
+                 "·H + " + num(rules.ritchie_offset) + " m (an empirical cross-check, not a design rule)";
+        k.value = w;
+        k.limit = *sr.ritchie_width;
+        k.unit = "m";
+        k.status = w >= k.limit ? CheckStatus::pass : CheckStatus::warn;
+        k.reason = "bench " + num(w) + " m " + (w >= k.limit ? ">= " : "< ") + num(k.limit) +
+                   " m (H = " + num(H) + " m)";
+        d.checks.push_back(std::move(k));
+      }
+    }
+
+    // Row checks: sample size and fits.
+    {
+      CheckLine l = line(row.name, "sample.size", rules);
+      l.what = "half-width of the " + num(100 * rules.sample_confidence) + " % bootstrap interval of RD" +
+               num(rules.sample_percentile) + " / RD" + num(rules.sample_percentile) +
+               ", and blocks reaching the floor (>= " + std::to_string(rules.min_reached) + ")";
+      l.limit = 100.0 * rules.sample_tolerance;
+      l.unit = "%";
+      std::string why;
+      bool warn = false;
+      if (row.rd_interval && row.rd_interval->estimate > 0) {
+        const double rel = row.rd_interval->half_width() / row.rd_interval->estimate;
+        l.value = 100.0 * rel;
+        if (rel > rules.sample_tolerance) {
+          warn = true;
+          const double needed = static_cast<double>(row.thrown) * (rel / rules.sample_tolerance) *
+                                (rel / rules.sample_tolerance);
+          why = "RD" + num(rules.sample_percentile) + " known to ±" + num(l.value, 3) + " % > " +
+                num(l.limit, 3) + " %: about " + std::to_string(static_cast<long long>(std::ceil(needed))) +
+                " trajectories would be needed (" + std::to_string(row.thrown) + " run)";
+        } else {
+          why = "RD" + num(rules.sample_percentile) + " known to ±" + num(l.value, 3) + " %";
+        }
+      } else {
+        why = std::isinf(stats::percentile(row.rd_sample.normalized, rules.sample_percentile))
+                  ? "RD" + num(rules.sample_percentile) + " is beyond the profile: no interval"
+                  : "no bootstrap interval";
+      }
+      if (row.reached_floor < rules.min_reached) {
+        warn = true;
+        why += "; only " + std::to_string(row.reached_floor) + " blocks reached the floor (< " +
+               std::to_string(rules.min_reached) + ")";
+      }
+      l.status = warn ? CheckStatus::warn : (std::isnan(l.value) ? CheckStatus::not_applicable : CheckStatus::pass);
+      l.reason = why;
+      d.checks.push_back(std::move(l));
+    }
+    for (auto [id, st] : {std::pair<std::string, const DistanceStatistics*>{"fit.ID", &row.id},
+                          std::pair<std::string, const DistanceStatistics*>{"fit.RD", &row.rd}}) {
+      CheckLine l = line(row.name, id, rules);
+      l.what = "KS p-value of the log-normal fit of " + id.substr(4) +
+               "/H (zeros as a point mass, censored runouts as censored)";
+      l.limit = rules.fit_p_value;
+      if (st->fit && st->ks) {
+        l.value = st->ks->p_value;
+        l.status = l.value < l.limit ? CheckStatus::warn : CheckStatus::pass;
+        l.reason = "D = " + num(st->ks->statistic, 3) + ", n = " + num(st->ks->n, 6) +
+                   ", p = " + num(l.value, 3) + (l.value < l.limit ? " < " : " >= ") + num(l.limit) +
+                   " (parameters fitted to the same sample: p is optimistic)";
+      } else {
+        l.status = CheckStatus::warn;
+        l.reason = "no fit: " + (st->fit_error.empty() ? std::string("no KS statistic") : st->fit_error);
+      }
+      d.checks.push_back(std::move(l));
+    }
+  }
+
+  // Averages over the rows (thesis Tables 6.2 and 6.3, last line).
+  {
+    QuarryAverage& a = d.average;
+    a.rows = d.rows.size();
+    std::vector<double> v[6], o[6];
+    for (const QuarryRow& row : d.rows) {
+      v[0].push_back(row.rd.p50_h), v[1].push_back(row.rd.p95_h), v[2].push_back(row.rd.max_h);
+      v[3].push_back(row.id.p50_h), v[4].push_back(row.id.p95_h), v[5].push_back(row.id.max_h);
+      if (row.observed_rd || row.observed_id) ++a.observed_rows;
+      if (row.observed_rd)
+        o[0].push_back(row.observed_rd->p50_h), o[1].push_back(row.observed_rd->p95_h),
+            o[2].push_back(row.observed_rd->max_h);
+      if (row.observed_id)
+        o[3].push_back(row.observed_id->p50_h), o[4].push_back(row.observed_id->p95_h),
+            o[5].push_back(row.observed_id->max_h);
+    }
+    // A row beyond the profile makes the average beyond it too.
+    auto mean = [](const std::vector<double>& x) {
+      for (double y : x)
+        if (std::isinf(y)) return kInf;
+      return mean_of_finite(x);
+    };
+    a.rd50_h = mean(v[0]), a.rd95_h = mean(v[1]), a.rdmax_h = mean(v[2]);
+    a.id50_h = mean(v[3]), a.id95_h = mean(v[4]), a.idmax_h = mean(v[5]);
+    a.obs_rd50_h = mean(o[0]), a.obs_rd95_h = mean(o[1]), a.obs_rdmax_h = mean(o[2]);
+    a.obs_id50_h = mean(o[3]), a.obs_id95_h = mean(o[4]), a.obs_idmax_h = mean(o[5]);
+  }
+  d.all_id_statistics = distance_statistics(d.all_id);
+  d.all_rd_statistics = distance_statistics(d.all_rd);
+  result.design = std::move(d);
+  return result;
+}
+
+}  // namespace pierre::design
