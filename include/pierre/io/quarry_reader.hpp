@@ -1,0 +1,50 @@
+// The quarry part of a scenario (docs/quarry.md): one or more [[quarries]] sections, each with
+// its own profile, blocks, sources, optional toe/crest/height, work areas, bench width, observed
+// values, pooling group and rule set; throws, seed and model settings come from [simulation]
+// and materials from [materials]. Also the loading of a quarry rule set (rules/<name>.toml).
+// Every problem is an InputError naming the file, the line, the field, what was found and
+// what was expected.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "pierre/design/quarry_geometry.hpp"
+#include "pierre/design/quarry_rules.hpp"
+#include "pierre/design/quarry_zones.hpp"
+#include "pierre/io/input_error.hpp"
+#include "pierre/io/scenario_reader.hpp"
+#include "pierre/model/material.hpp"
+#include "pierre/sim/scenario.hpp"
+
+namespace pierre::io {
+
+// A quarry section ready to run: its Scenario (floor_segment set to the floor's first segment,
+// its own seed), what the procedure needs, and what the report echoes.
+struct QuarrySection {
+  sim::Scenario scenario;
+  design::QuarrySpec spec;
+  design::QuarryRuleSet rules;
+  design::QuarryGeometry geometry;
+  design::QuarryObserved observed;
+  std::vector<BlockGroup> block_groups;  // the block rows as written
+  std::filesystem::path rules_file;
+};
+
+// A rule set by name ("quarry-thesis-2015" → rules_dir/quarry-thesis-2015.toml) or by path (a
+// value ending in ".toml" or holding a '/'; used as given).
+design::QuarryRuleSet load_quarry_rules(const std::string& name_or_path,
+                                        const std::filesystem::path& rules_dir);
+
+// Reads root's [[quarries]] (empty when there is none). `file` is the scenario file (messages,
+// relative paths); `materials` the scenario's [materials] (indices shared by every section);
+// `settings` its [simulation] (each section gets a copy with its own seed and floor_segment).
+std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
+                                         const std::filesystem::path& rules_dir,
+                                         const std::vector<model::Material>& materials,
+                                         const sim::SimulationSettings& settings);
+
+}  // namespace pierre::io
