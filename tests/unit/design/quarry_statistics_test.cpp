@@ -1,0 +1,182 @@
+// Percentiles, the censored log-normal mixture and its KS statistic, exceedance and observed
+// comparisons of the quarry distances (design-checks.md §2, "Statistics").
+#include "pierre/design/quarry_statistics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <boost/math/special_functions/erf.hpp>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "pierre/stats/lognormal_fit.hpp"
+
+namespace pierre::design {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double uniform(std::mt19937_64& g) { return (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53; }
+double normal(std::mt19937_64& g) { return -std::sqrt(2.0) * boost::math::erfc_inv(2 * uniform(g)); }
+
+// Runouts in metres: a share p0 stop above the toe, the rest H·logN(μ, σ); beyond `end` m they
+// left the profile (+inf).
+std::vector<double> runouts(double p0, double mu, double sigma, double H, double end, std::size_t n,
+                            std::uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::vector<double> v;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (uniform(g) < p0) {
+      v.push_back(0);
+      continue;
+    }
+    const double x = H * std::exp(mu + sigma * normal(g));
+    v.push_back(x > end ? kInf : x);
+  }
+  return v;
+}
+
+std::vector<double> one_to(int n) {
+  std::vector<double> v;
+  for (int i = 1; i <= n; ++i) v.push_back(i);
+  return v;
+}
+
+TEST(QuarryStatistics, PercentilesInMetresAndPerH) {
+  DistanceSample s;
+  const auto v = one_to(100);
+  s.add(v, 10, 1000);
+  const auto st = distance_statistics(s);
+  EXPECT_EQ(st.count, 100u);
+  EXPECT_DOUBLE_EQ(st.p50, 50.5);
+  EXPECT_DOUBLE_EQ(st.p95, 95.05);
+  EXPECT_DOUBLE_EQ(st.p99, 99.01);
+  EXPECT_DOUBLE_EQ(st.max, 100);
+  EXPECT_DOUBLE_EQ(st.p50_h, 5.05);
+  EXPECT_DOUBLE_EQ(st.p95_h, 9.505);
+  EXPECT_DOUBLE_EQ(st.max_h, 10);
+  EXPECT_DOUBLE_EQ(empirical_at_exceedance(v, 0.05), 95.05);
+  EXPECT_DOUBLE_EQ(empirical_exceedance(v, 90), 0.10);
+}
+
+TEST(QuarryStatistics, BeyondTheProfile) {
+  // 6 of 100 left the profile: more than 5 %, so P95 is beyond it; P50 is not.
+  auto v = one_to(94);
+  for (int i = 0; i < 6; ++i) v.push_back(kInf);
+  DistanceSample s;
+  s.add(v, 20, 120);
+  const auto st = distance_statistics(s);
+  EXPECT_EQ(st.censored, 6u);
+  EXPECT_TRUE(std::isinf(st.p95));
+  EXPECT_TRUE(std::isinf(st.max));
+  EXPECT_DOUBLE_EQ(st.p50, 50.5);
+  ASSERT_EQ(s.censored_at.size(), 6u);
+  EXPECT_DOUBLE_EQ(s.censored_at[0], 6.0);
+  // 4 of 100: P95 is finite.
+  auto w = one_to(96);
+  for (int i = 0; i < 4; ++i) w.push_back(kInf);
+  DistanceSample t;
+  t.add(w, 20, 120);
+  EXPECT_TRUE(std::isfinite(distance_statistics(t).p95));
+}
+
+TEST(QuarryStatistics, CensoredLognormalRecoversKnownParameters) {
+  // μ = -0.9, σ = 0.6 in RD/H, 10 % zeros, censored at 1.5 H (about 4 % of the positives).
+  const double mu = -0.9, sigma = 0.6, p0 = 0.10, H = 20;
+  const std::size_t n = 4000;
+  DistanceSample s;
+  s.add(runouts(p0, mu, sigma, H, 1.5 * H, n, 7), H, 1.5 * H);
+  const auto st = distance_statistics(s);
+  ASSERT_TRUE(st.fit) << st.fit_error;
+  EXPECT_GT(st.censored, 50u);
+  // Sampling error: sd(μ̂) ≈ σ/√n' ≈ 0.01, sd(σ̂) ≈ σ/√(2n') ≈ 0.007; allow 4 sd.
+  EXPECT_NEAR(st.fit->positive.mu, mu, 0.04);
+  EXPECT_NEAR(st.fit->positive.sigma, sigma, 0.03);
+  EXPECT_NEAR(st.fit->zero_share, p0, 0.02);
+  ASSERT_TRUE(st.ks);
+  EXPECT_LT(st.ks->statistic, 0.03);
+  EXPECT_GT(st.ks->p_value, 0.01);
+  EXPECT_DOUBLE_EQ(st.ks->below, 1.5);
+  // The distance at 1 % exceedance: (1 - p0) S(d) = 0.01.
+  const double d = stats::value_at_exceedance(*st.fit, 0.01);
+  EXPECT_NEAR((1 - st.fit->zero_share) * stats::survival(st.fit->positive, d), 0.01, 1e-9);
+  const double truth = std::exp(mu + sigma * std::sqrt(2.0) * boost::math::erfc_inv(2 * 0.01 / (1 - p0)));
+  EXPECT_NEAR(d, truth, 0.1 * truth);
+}
+
+TEST(QuarryStatistics, MixtureKsEqualsOneSampleKsWithoutZerosOrCensoring) {
+  std::mt19937_64 g(3);
+  std::vector<double> v;
+  for (int i = 0; i < 200; ++i) v.push_back(std::exp(0.2 + 0.5 * normal(g)));
+  stats::CensoredLognormalFit fit;
+  fit.positive.mu = 0.25;
+  fit.positive.sigma = 0.45;
+  const auto a = mixture_ks(v, fit, kInf);
+  const auto b = stats::kolmogorov_smirnov(v, [&](double x) { return stats::cdf(fit.positive, x); });
+  ASSERT_TRUE(a && b);
+  EXPECT_NEAR(a->statistic, b->statistic, 1e-12);
+  EXPECT_NEAR(a->p_value, b->p_value_stephens, 1e-12);
+}
+
+TEST(QuarryStatistics, MixtureKsStepsTheZerosTogether) {
+  // 30 zeros and 70 values exactly at the log-normal's quantiles: the point mass p0 = 0.3
+  // matches, so D stays small (a continuous KS would see a jump of 0.3 at 0).
+  stats::CensoredLognormalFit fit;
+  fit.zero_share = 0.3;
+  std::vector<double> v(30, 0.0);
+  for (int i = 0; i < 70; ++i) v.push_back(stats::quantile(fit.positive, (i + 0.5) / 70));
+  const auto k = mixture_ks(v, fit, kInf);
+  ASSERT_TRUE(k);
+  EXPECT_LT(k->statistic, 0.01);
+}
+
+TEST(QuarryStatistics, ObservedRawValues) {
+  DistanceSample s;
+  s.add(one_to(100), 10, 1000);
+  ObservedDistance o;
+  o.metres = one_to(100);
+  o.heights.assign(100, 10);
+  const auto c = compare_observed(s, o, 10);
+  EXPECT_TRUE(c.raw);
+  EXPECT_EQ(c.count, 100u);
+  ASSERT_TRUE(c.cdf_rmse);
+  EXPECT_DOUBLE_EQ(*c.cdf_rmse, 0);
+  ASSERT_TRUE(c.ks);
+  EXPECT_DOUBLE_EQ(c.ks->statistic, 0);
+  EXPECT_DOUBLE_EQ(c.p95, 95.05);
+  EXPECT_DOUBLE_EQ(c.p95_h, 9.505);
+}
+
+TEST(QuarryStatistics, ObservedPrintedSummaryValues) {
+  DistanceSample s;
+  s.add(one_to(100), 10, 1000);
+  ObservedDistance o;
+  o.p50 = 60;  // simulated CDF there 0.60 instead of 0.50
+  o.p95 = 95.05;
+  o.max = 100;
+  o.count = 25;
+  const auto c = compare_observed(s, o, 10);
+  EXPECT_FALSE(c.raw);
+  EXPECT_EQ(c.count, 25u);
+  ASSERT_EQ(c.breaks_h.size(), 3u);
+  EXPECT_DOUBLE_EQ(c.breaks_h[0], 6);
+  EXPECT_EQ(c.observed_cdf, (std::vector<double>{0.5, 0.95, 1.0}));
+  EXPECT_DOUBLE_EQ(c.simulated_cdf[0], 0.60);
+  ASSERT_TRUE(c.cdf_rmse);
+  EXPECT_NEAR(*c.cdf_rmse, std::sqrt((0.1 * 0.1 + 0.0 + 0.0) / 3), 1e-12);
+  EXPECT_FALSE(c.ks);
+  EXPECT_DOUBLE_EQ(c.p50_h, 6);
+}
+
+TEST(QuarryStatistics, PooledSectionsNormalizeByTheirOwnHeight) {
+  DistanceSample s;
+  const std::vector<double> a = {10, 20}, b = {30, kInf};
+  s.add(a, 10, 50);
+  s.add(b, 30, 60);
+  EXPECT_EQ(s.normalized, (std::vector<double>{1, 2, 1, kInf}));
+  EXPECT_EQ(s.censored_at, (std::vector<double>{2.0}));
+}
+
+}  // namespace
+}  // namespace pierre::design
