@@ -338,6 +338,16 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       test_segment(dep.segment[k]);  // a concave neighbour may be entered at once
       seed = std::max(seed, dep.segment[k]);
     }
+  if (seed < 0 && x_monotone_ && v0.x != 0.0) {
+    // No departure (a flight from a source): start the march at the segment under the block.
+    int lo = 0, hi = static_cast<int>(segments_.size()) - 1;
+    while (lo < hi) {  // last segment whose start is not beyond p0.x along the main direction
+      const int mid = (lo + hi + 1) / 2;
+      if ((segments_[mid].a.x - p0.x) * main_direction_ <= 0) lo = mid; else hi = mid - 1;
+    }
+    test_segment(lo);
+    seed = lo;
+  }
   if (!x_monotone_ || v0.x == 0.0 || seed < 0) {
     search(0);
   } else {
