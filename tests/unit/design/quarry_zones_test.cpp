@@ -1,0 +1,255 @@
+// Zones, governing distances and every quarry check line passing and failing
+// (design-checks.md §2, "Zones").
+#include "pierre/design/quarry_zones.hpp"
+
+#include <gtest/gtest.h>
+
+#include <boost/math/special_functions/erf.hpp>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "support/builders.hpp"
+
+namespace pierre::design {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A 20 m vertical face at x = 10 over a 400 m floor.
+QuarryGeometry face(double H = 20) {
+  const auto p = test::make_profile({{0, H}, {10, H}, {10, 0}, {410, 0}});
+  return *quarry_geometry(p, {});
+}
+
+// Distances from runouts (m; +inf: left the profile) with the first impact at a fifth of each.
+QuarryDistances distances(const std::vector<double>& rd, const QuarryGeometry& g) {
+  QuarryDistances d;
+  std::uint64_t k = 0;
+  for (double r : rd) {
+    sim::TrajectorySummary t;
+    t.trajectory = k++;
+    t.start = {10.5, g.crest.z + 0.5};
+    t.duration = 4;
+    if (std::isinf(r)) {
+      t.stop = {g.toe.x + g.floor_length, 0};
+      t.stop_reason = sim::StopReason::boundary;
+    } else {
+      t.stop = {g.toe.x + r, 0};
+      t.stop_reason = sim::StopReason::energy;
+    }
+    if (r > 0) {
+      t.has_floor_contact = true;
+      t.floor_contact = {g.toe.x + std::min(r, g.floor_length) / 5, 0};
+    }
+    d.add(t, g);
+  }
+  return d;
+}
+
+std::vector<double> one_to(int n) {
+  std::vector<double> v;
+  for (int i = 1; i <= n; ++i) v.push_back(i);
+  return v;
+}
+
+std::vector<double> lognormal_runouts(std::size_t n, double H, std::uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::vector<double> v;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
+    v.push_back(H * std::exp(-0.9 - 0.5 * std::sqrt(2.0) * boost::math::erfc_inv(2 * u)));
+  }
+  return v;
+}
+
+QuarryRuleSet thesis() {
+  QuarryRuleSet r;
+  r.name = "quarry-thesis-2015";
+  return r;
+}
+QuarryRuleSet conservative() {
+  QuarryRuleSet r;
+  r.name = "quarry-conservative";
+  r.governing = {QuarryGoverning::maximum, QuarryGoverning::lognormal};
+  r.lognormal_percentile = 99;
+  return r;
+}
+
+QuarrySectionInput section(const std::string& name, const std::vector<double>& rd,
+                           QuarryRuleSet rules = thesis(), double H = 20) {
+  QuarrySectionInput s;
+  s.spec.name = name;
+  s.rules = std::move(rules);
+  s.geometry = face(H);
+  s.distances = distances(rd, s.geometry);
+  return s;
+}
+
+const CheckLine* find(const QuarryDesign& d, const std::string& subject, const std::string& id) {
+  for (const auto& l : d.checks)
+    if (l.subject == subject && l.id == id) return &l;
+  return nullptr;
+}
+
+TEST(QuarryZones, WorkAreasInsideAndOutsideTheDangerZone) {
+  auto s = section("Face A", one_to(100));
+  s.spec.work_areas = {{"crusher", 120}, {"haul-road", 50}};
+  const auto out = design_quarry({s}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const QuarryDesign& d = *out.design;
+  EXPECT_DOUBLE_EQ(d.sections[0].danger_zone, 95.05);  // P95 of 1..100
+  EXPECT_DOUBLE_EQ(d.sections[0].first_impact_zone, 95.05 / 5);
+  const CheckLine* crusher = find(d, "Face A", "zone.crusher");
+  const CheckLine* road = find(d, "Face A", "zone.haul-road");
+  ASSERT_TRUE(crusher && road);
+  EXPECT_EQ(crusher->status, CheckStatus::pass);
+  EXPECT_EQ(road->status, CheckStatus::fail);
+  EXPECT_DOUBLE_EQ(road->value, 50);
+  EXPECT_DOUBLE_EQ(road->limit, 95.05);
+  EXPECT_EQ(road->unit, "m");
+  EXPECT_TRUE(any_failure(d.checks));
+}
+
+TEST(QuarryZones, ConservativeTakesTheLargerOfMaximumAndLognormal) {
+  auto s = section("Face A", lognormal_runouts(2000, 20, 5), conservative());
+  const auto out = design_quarry({s}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const QuarryRow& row = out.design->rows[0];
+  ASSERT_TRUE(row.rd.fit);
+  EXPECT_DOUBLE_EQ(row.rd_gov.maximum_h, row.rd.max_h);
+  EXPECT_DOUBLE_EQ(row.rd_gov.lognormal_h, stats::value_at_exceedance(*row.rd.fit, 0.01));
+  EXPECT_DOUBLE_EQ(row.rd_gov.value_h, std::max(row.rd_gov.maximum_h, row.rd_gov.lognormal_h));
+  EXPECT_TRUE(std::isnan(row.rd_gov.percentile_h));
+  EXPECT_NE(row.rd_gov.how.find("larger of"), std::string::npos);
+  // The 95 % rule's zone is smaller.
+  auto t = section("Face A", lognormal_runouts(2000, 20, 5));
+  const auto out95 = design_quarry({t}, 1);
+  EXPECT_LT(out95.design->sections[0].danger_zone, out.design->sections[0].danger_zone);
+}
+
+TEST(QuarryZones, DangerZoneBeyondTheProfileFails) {
+  auto v = one_to(90);
+  for (int i = 0; i < 10; ++i) v.push_back(kInf);
+  auto s = section("Face A", v);
+  s.spec.work_areas = {{"office", 390}};
+  auto t = section("Face B", v);  // no work area: zone.extent says so
+  const auto out = design_quarry({s, t}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  EXPECT_TRUE(std::isinf(out.design->sections[0].danger_zone));
+  const CheckLine* office = find(*out.design, "Face A", "zone.office");
+  ASSERT_TRUE(office);
+  EXPECT_EQ(office->status, CheckStatus::fail);
+  EXPECT_NE(office->reason.find("beyond the profile"), std::string::npos) << office->reason;
+  const CheckLine* extent = find(*out.design, "Face B", "zone.extent");
+  ASSERT_TRUE(extent);
+  EXPECT_EQ(extent->status, CheckStatus::fail);
+}
+
+TEST(QuarryZones, BenchRetentionAndRitchie) {
+  auto pass = section("Wide", one_to(100));
+  pass.spec.bench_width = 90;  // 90 of 100 blocks stop within 90 m: exactly the 90 % target
+  auto fail = section("Narrow", one_to(100));
+  fail.spec.bench_width = 8;  // 8 % retained; and 8 m < 0.2·20 + 4.5 = 8.5 m
+  const auto out = design_quarry({pass, fail}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const auto& d = *out.design;
+  const CheckLine* r1 = find(d, "Wide", "bench.retention");
+  const CheckLine* r2 = find(d, "Narrow", "bench.retention");
+  const CheckLine* k1 = find(d, "Wide", "bench.ritchie");
+  const CheckLine* k2 = find(d, "Narrow", "bench.ritchie");
+  ASSERT_TRUE(r1 && r2 && k1 && k2);
+  EXPECT_EQ(r1->status, CheckStatus::pass);
+  EXPECT_DOUBLE_EQ(r1->value, 90);
+  EXPECT_DOUBLE_EQ(r1->limit, 90);
+  EXPECT_EQ(r2->status, CheckStatus::fail);
+  EXPECT_DOUBLE_EQ(r2->value, 8);
+  EXPECT_EQ(k1->status, CheckStatus::pass);
+  EXPECT_EQ(k2->status, CheckStatus::warn);
+  EXPECT_DOUBLE_EQ(k2->limit, 8.5);
+  EXPECT_DOUBLE_EQ(*d.sections[1].ritchie_width, 8.5);
+}
+
+TEST(QuarryZones, SampleSize) {
+  const auto small = design_quarry({section("Small", lognormal_runouts(20, 20, 1))}, 1);
+  const auto big = design_quarry({section("Big", lognormal_runouts(40000, 20, 2))}, 1);
+  ASSERT_TRUE(small.design && big.design);
+  const CheckLine* a = find(*small.design, "Small", "sample.size");
+  const CheckLine* b = find(*big.design, "Big", "sample.size");
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->status, CheckStatus::warn);
+  EXPECT_NE(a->reason.find("reached the floor"), std::string::npos) << a->reason;
+  EXPECT_EQ(b->status, CheckStatus::pass) << b->reason;
+  EXPECT_LT(b->value, 5);
+  ASSERT_TRUE(big.design->rows[0].rd_interval);
+}
+
+TEST(QuarryZones, FitChecks) {
+  const auto good = design_quarry({section("Good", lognormal_runouts(1000, 20, 3))}, 1);
+  // Two clusters, at about 1 m and 100 m: no log-normal fits that.
+  std::vector<double> two;
+  for (int i = 0; i < 500; ++i) two.push_back(i % 2 ? 1.0 + 0.001 * i : 100.0 + 0.001 * i);
+  const auto bad = design_quarry({section("Bad", two)}, 1);
+  ASSERT_TRUE(good.design && bad.design);
+  EXPECT_EQ(find(*good.design, "Good", "fit.RD")->status, CheckStatus::pass);
+  EXPECT_EQ(find(*bad.design, "Bad", "fit.RD")->status, CheckStatus::warn);
+  EXPECT_EQ(find(*bad.design, "Bad", "fit.ID")->status, CheckStatus::warn);
+  EXPECT_FALSE(any_failure(good.design->checks));
+}
+
+TEST(QuarryZones, GroupsPoolSectionsAndAveragesTakeRows) {
+  auto a = section("Kloech a", one_to(50));
+  auto b = section("Kloech b", one_to(50));
+  a.spec.group = b.spec.group = "Kloech";
+  auto c = section("Preg 1", one_to(100), thesis(), 10);
+  c.observed.rd.p50 = 5;  // m
+  c.observed.rd.p95 = 9;
+  c.observed.rd.max = 12;
+  const auto out = design_quarry({a, b, c}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const auto& d = *out.design;
+  ASSERT_EQ(d.rows.size(), 2u);
+  EXPECT_EQ(d.rows[0].name, "Kloech");
+  EXPECT_TRUE(d.rows[0].pooled);
+  EXPECT_EQ(d.rows[0].thrown, 100u);
+  EXPECT_EQ(d.rows[0].sections, (std::vector<std::size_t>{0, 1}));
+  EXPECT_DOUBLE_EQ(d.rows[0].rd.p95, 48.0);  // P95 of 1..50 twice
+  EXPECT_DOUBLE_EQ(d.sections[0].danger_zone, 48.0);
+  EXPECT_DOUBLE_EQ(d.sections[1].danger_zone, 48.0);
+  EXPECT_EQ(d.sections[2].row, 1u);
+  // Averages of the per-row /H ratios: (48/20 + 95.05/10) / 2.
+  EXPECT_DOUBLE_EQ(d.average.rd95_h, (48.0 / 20 + 95.05 / 10) / 2);
+  EXPECT_EQ(d.average.rows, 2u);
+  EXPECT_EQ(d.average.observed_rows, 1u);
+  EXPECT_DOUBLE_EQ(d.average.obs_rd95_h, 0.9);
+  ASSERT_TRUE(d.rows[1].observed_rd);
+  EXPECT_TRUE(d.rows[1].observed_rd->cdf_rmse.has_value());
+  EXPECT_EQ(d.all_rd.size(), 200u);
+  // Row checks carry the group's name, zone checks the section's.
+  EXPECT_TRUE(find(d, "Kloech", "sample.size"));
+  EXPECT_TRUE(find(d, "Kloech", "fit.RD"));
+
+  // A group must follow one rule set.
+  b.rules = conservative();
+  const auto mixed = design_quarry({a, b}, 1);
+  EXPECT_FALSE(mixed.design);
+  EXPECT_NE(mixed.error.find("different rule sets"), std::string::npos);
+}
+
+TEST(QuarryZones, ExceedanceRows) {
+  auto s = section("Face A", lognormal_runouts(3000, 20, 9));
+  s.spec.exceedance = {0.05, 0.01};
+  const auto out = design_quarry({s}, 1);
+  ASSERT_TRUE(out.design);
+  const auto& row = out.design->rows[0];
+  ASSERT_EQ(row.exceedance.size(), 2u);
+  const auto& e = row.exceedance[0];
+  EXPECT_DOUBLE_EQ(e.rd_empirical_h, row.rd.p95_h);
+  EXPECT_DOUBLE_EQ(e.rd_empirical, e.rd_empirical_h * 20);
+  // Fit and sample agree on a log-normal sample: within 10 %.
+  EXPECT_NEAR(e.rd_fit_h, e.rd_empirical_h, 0.1 * e.rd_empirical_h);
+  EXPECT_LT(row.exceedance[0].rd_fit_h, row.exceedance[1].rd_fit_h);
+}
+
+}  // namespace
+}  // namespace pierre::design
