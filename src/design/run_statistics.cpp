@@ -28,6 +28,7 @@ void RunSamples::add(const sim::Crossing& c) {
   l.speed.push_back(c.speed);
   l.height.push_back(c.height);
   l.translational_energy.push_back(c.translational_energy);
+  l.rotational_energy.push_back(c.rotational_energy);
 }
 
 QuantityStatistics quantity_statistics(std::vector<double> v) {

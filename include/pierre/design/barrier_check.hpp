@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -61,11 +62,13 @@ struct BarrierSample {
   std::vector<double> block_volumes;       // m³, every block thrown (for the design block rule)
   std::vector<double> block_diameters;     // m, every block thrown (default D_f)
   std::vector<double> block_densities;     // kg/m³
+  std::uint32_t throws = 0;                // per block and source (0: unknown), for sample.size
 };
 
 // Observed data at the line (optional; as at Vaujany): any column may be empty.
 struct ObservedSample {
   std::vector<double> speed, height, energy;  // m/s, m, J
+  std::string file;  // where they came from (echo)
 };
 
 struct QuantityFit {  // one quantity's sample statistics and fits
@@ -108,9 +111,77 @@ struct BarrierDesign {
   std::optional<stats::BootstrapInterval> E_d_interval, h_i_interval;
   std::vector<ExceedanceRow> exceedance;
   std::vector<CheckLine> checks;
+
+  // Added with the procedure (design-checks.md §1):
+  std::string rules_name;                    // the rule set's name (file stem)
+  std::optional<QuantityFit> observed_speed, observed_height, observed_energy;  // energy kJ
+  double h_max_sim = 0;                      // m, largest simulated passing height
+  double candidate_mel_kJ = 0, candidate_sel_kJ = 0;  // NaN when not declared / no candidate
+  std::string residual_height_category;      // "A", "B", "C"; empty when not declared
+  std::uint64_t bootstrap_seed = 0;          // the bootstrap's own stream
+  std::uint32_t throws = 0;                  // per block and source of the run (0: unknown)
+  std::vector<std::string> notes;            // what an engineer should know (fits missing, ...)
 };
 
-// Runs the procedure. `seed` keys the bootstrap's own stream. Fails (with the reason) only
+// ---- the procedure's parts, each usable (and tested) on its own ----
+
+// Steps 3–6: the design arithmetic from the characteristic values, separate from the fitting.
+struct DesignInputs {
+  double v_k = 0;      // m/s
+  double h_k = 0;      // m
+  double volume = 0;   // m³, design block
+  double density = 0;  // kg/m³
+  double free_board_diameter = 0;  // D_f, m
+  std::map<std::string, std::string> data_quality;
+};
+struct DesignValues {
+  ResolvedFactor gamma_F, gamma_M, gamma_h;
+  double gamma_E_MEL = 1, gamma_E_SEL = 1;
+  double v_d = 0, m_d = 0, E_d_kJ = 0;  // m/s, kg, kJ
+  double MEL_req_kJ = 0, SEL_req_kJ = 0;
+  std::optional<EnergyClass> energy_class;
+  double free_board = 0, h_d = 0, h_i = 0;  // m
+};
+// Fails only when a factor cannot be resolved (a data-quality answer missing or unknown).
+stats::Outcome<DesignValues> design_values(const BarrierRuleSet& rules,
+                                           const EnergyClassTable& classes,
+                                           const DesignInputs& in);
+
+// Step 2: one quantity's Weibull and log-normal ML fits with their KS tests (the Stephens
+// p-value is the one checked), and its summary.
+QuantityFit fit_quantity(std::span<const double> sample);
+// v_k or h_k at percentile p (0..100): Weibull quantile and type-7 empirical percentile;
+// `value` per `governing` (NaN when the governing fit is missing).
+Characteristic characteristic_value(const QuantityFit& fit, std::span<const double> sample,
+                                    double p, Governing governing);
+
+// Step 7: P(E > SEL_req), P(E > MEL_req), P(h > h_i), P(h > h_max,sim) from the simulated
+// Weibull fits (NaN without a fit), the empirical fractions of the simulated sample, and the
+// observed Weibull fits when given. S(x) = exp(-(x/λ)^k).
+struct ExceedanceInputs {
+  double SEL_req_kJ = 0, MEL_req_kJ = 0, h_i = 0, h_max_sim = 0;
+  std::optional<stats::WeibullFit> simulated_energy, simulated_height;  // kJ, m
+  std::span<const double> simulated_energy_kJ, simulated_height_m;
+  std::optional<stats::WeibullFit> observed_energy, observed_height;    // kJ, m
+};
+std::vector<ExceedanceRow> exceedance_rows(const ExceedanceInputs& in);
+
+// The check lines of a computed design (the table of design-checks.md §1). With a candidate:
+// energy.mel, energy.sel, height.interception, elongation, exceedance.energy,
+// exceedance.height and the advisory lines; without one (a design) only the advisory lines
+// fit.v, fit.h, fit.E, sample.size, reach.
+std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const BarrierRuleSet& rules);
+
+// The bootstrap's own stream for barrier `index` (0-based, scenario order) of a run with
+// `scenario_seed`: scenario_seed ^ 0x4241525249455253 ("BARRIERS") ^ index. Inside
+// design_barrier the speed and the height resamples use splitmix64 of that seed ^ 1 and ^ 2.
+std::uint64_t barrier_bootstrap_seed(std::uint64_t scenario_seed, std::size_t index);
+
+// The minimum number of bootstrap resamples (design-checks.md §1 step 8).
+inline constexpr std::size_t kBarrierBootstrapResamples = 1000;
+
+// Runs the procedure (steps 1–8). `seed` keys the bootstrap's own stream
+// (barrier_bootstrap_seed). Fails (with the reason) only
 // when the data cannot give a design at all, e.g. no crossing at the line.
 struct BarrierOutcome {
   std::optional<BarrierDesign> design;

@@ -22,6 +22,7 @@ struct LineSamples {
   std::vector<double> speed;                 // m/s
   std::vector<double> height;                // m, passing height
   std::vector<double> translational_energy;  // J
+  std::vector<double> rotational_energy;     // J (for the barrier design, design-checks.md §1)
 };
 
 class RunSamples {

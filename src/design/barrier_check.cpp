@@ -1,0 +1,246 @@
+// design_barrier: steps 1–8 of design-checks.md §1 put together. The parts live beside it:
+// barrier_fits.cpp (fits, characteristic values, exceedance), barrier_values.cpp (the design
+// arithmetic), barrier_checks.cpp (check lines), barrier_rules.cpp (factors, classes).
+#include "pierre/design/barrier_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "pierre/stats/percentile.hpp"
+
+namespace pierre::design {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+std::vector<double> scaled(const std::vector<double>& v, double f) {
+  std::vector<double> out(v.size());
+  std::transform(v.begin(), v.end(), out.begin(), [f](double x) { return x * f; });
+  return out;
+}
+
+// The replicates of the governing characteristic value at p.
+stats::Outcome<std::vector<double>> characteristic_replicates(std::span<const double> sample,
+                                                              double p, Governing g,
+                                                              std::uint64_t seed) {
+  if (g == Governing::empirical)
+    return stats::bootstrap_percentile_replicates(sample, p, seed, kBarrierBootstrapResamples);
+  const stats::Statistic stat = [p, g](std::span<double> x) {
+    const auto w = stats::fit_weibull(x);
+    if (!w) return kNaN;
+    const double q = stats::quantile(*w, p / 100.0);
+    return g == Governing::weibull ? q : std::max(q, stats::percentile(x, p));
+  };
+  return stats::bootstrap_replicates(sample, stat, seed, kBarrierBootstrapResamples);
+}
+
+// The 90 % percentile interval of f(replicate), with f(estimate) as its estimate.
+template <class F>
+std::optional<stats::BootstrapInterval> interval(const std::vector<double>& replicates,
+                                                 double estimate, F f) {
+  std::vector<double> r;
+  r.reserve(replicates.size());
+  for (double x : replicates) {
+    if (!std::isfinite(x)) return std::nullopt;
+    r.push_back(f(x));
+  }
+  stats::BootstrapInterval ci;
+  ci.confidence = 0.90;
+  ci.resamples = r.size();
+  ci.estimate = f(estimate);
+  const double ps[] = {5.0, 95.0};
+  const auto q = stats::percentiles(r, ps);
+  ci.lower = q[0];
+  ci.upper = q[1];
+  return ci;
+}
+
+std::optional<QuantityFit> observed_fit(const std::vector<double>& v) {
+  if (v.empty()) return std::nullopt;
+  return fit_quantity(v);
+}
+
+}  // namespace
+
+std::uint64_t barrier_bootstrap_seed(std::uint64_t scenario_seed, std::size_t index) {
+  return scenario_seed ^ 0x4241525249455253ULL ^ static_cast<std::uint64_t>(index);
+}
+
+BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rules,
+                              const EnergyClassTable& classes, const BarrierSample& sample,
+                              const std::optional<ObservedSample>& observed, double chainage,
+                              std::uint64_t seed) {
+  BarrierOutcome out;
+  BarrierDesign d;
+  d.spec = spec;
+  d.rules_name = rules.name;
+  d.rules_title = rules.title;
+  d.rules_source = rules.source;
+  d.chainage = chainage;
+  d.crossings = sample.speed.size();
+  d.not_reached = sample.not_reached;
+  d.throws = sample.throws;
+  d.bootstrap_seed = seed;
+
+  // Step 1: the sample at the line.
+  if (sample.height.size() != sample.speed.size() || sample.energy.size() != sample.speed.size()) {
+    out.error = "the speed, height and energy samples differ in length";
+    return out;
+  }
+  if (d.crossings < 2) {
+    out.error = "fewer than two trajectories crossed the line (" + std::to_string(d.crossings) +
+                "): nothing to fit, no design";
+    return out;
+  }
+  const std::vector<double> energy_kJ = scaled(sample.energy, 1e-3);
+
+  // Step 2: fits and characteristic values.
+  d.speed = fit_quantity(sample.speed);
+  d.height = fit_quantity(sample.height);
+  d.energy = fit_quantity(energy_kJ);
+  d.rotational_energy = stats::summarize(scaled(sample.rotational_energy, 1e-3));
+  d.v_k = characteristic_value(d.speed, sample.speed, rules.percentile, rules.governing);
+  d.h_k = characteristic_value(d.height, sample.height, rules.percentile, rules.governing);
+  if (std::isnan(d.v_k.value) || std::isnan(d.h_k.value)) {
+    out.error = "no characteristic value (" + to_string(rules.governing) +
+                "): " + (d.speed.error.empty() ? d.height.error : d.speed.error);
+    return out;
+  }
+  d.h_max_sim = *std::max_element(sample.height.begin(), sample.height.end());
+
+  // The design block and the free-board diameter.
+  const DesignBlock& b = spec.design_block;
+  if (b.kind == DesignBlock::Kind::given) {
+    d.design_volume = b.volume;
+    d.design_density = b.density;
+  } else {
+    if (sample.block_volumes.empty() || sample.block_densities.size() != sample.block_volumes.size()) {
+      out.error = "no block list for the design block rule";
+      return out;
+    }
+    if (b.kind == DesignBlock::Kind::largest) {
+      const auto it = std::max_element(sample.block_volumes.begin(), sample.block_volumes.end());
+      d.design_volume = *it;
+      d.design_density = sample.block_densities[static_cast<std::size_t>(it - sample.block_volumes.begin())];
+    } else {
+      d.design_volume = stats::percentile(sample.block_volumes, b.percentile);
+      d.design_density = std::accumulate(sample.block_densities.begin(), sample.block_densities.end(), 0.0) /
+                         static_cast<double>(sample.block_densities.size());
+    }
+    if (b.density > 0) d.design_density = b.density;
+  }
+  if (spec.free_board_diameter) {
+    d.free_board_diameter = *spec.free_board_diameter;
+  } else if (!sample.block_diameters.empty()) {
+    d.free_board_diameter =
+        std::accumulate(sample.block_diameters.begin(), sample.block_diameters.end(), 0.0) /
+        static_cast<double>(sample.block_diameters.size());
+  } else {
+    out.error = "no free_board_diameter and no block list to take the mean diameter from";
+    return out;
+  }
+
+  // Steps 3–6.
+  DesignInputs in;
+  in.v_k = d.v_k.value;
+  in.h_k = d.h_k.value;
+  in.volume = d.design_volume;
+  in.density = d.design_density;
+  in.free_board_diameter = d.free_board_diameter;
+  in.data_quality = spec.data_quality;
+  const auto dv = design_values(rules, classes, in);
+  if (!dv) {
+    out.error = dv.error;
+    return out;
+  }
+  d.gamma_F = dv->gamma_F;
+  d.gamma_M = dv->gamma_M;
+  d.gamma_h = dv->gamma_h;
+  d.gamma_E_MEL = dv->gamma_E_MEL;
+  d.gamma_E_SEL = dv->gamma_E_SEL;
+  d.v_d = dv->v_d;
+  d.m_d = dv->m_d;
+  d.E_d_kJ = dv->E_d_kJ;
+  d.MEL_req_kJ = dv->MEL_req_kJ;
+  d.SEL_req_kJ = dv->SEL_req_kJ;
+  d.energy_class = dv->energy_class;
+  d.free_board = dv->free_board;
+  d.h_d = dv->h_d;
+  d.h_i = dv->h_i;
+  if (!d.energy_class)
+    d.notes.push_back("no class of " + classes.name + " meets the required capacities");
+  else if (d.energy_class->open_ended)
+    d.notes.push_back("class " + std::to_string(d.energy_class->number) +
+                      " is open-ended: the barrier must declare MEL >= MEL_req and SEL >= SEL_req");
+
+  // Step 7: exceedance, simulated and observed.
+  if (observed) {
+    d.observed_speed = observed_fit(observed->speed);
+    d.observed_height = observed_fit(observed->height);
+    d.observed_energy = observed_fit(scaled(observed->energy, 1e-3));
+  }
+  ExceedanceInputs ex;
+  ex.SEL_req_kJ = d.SEL_req_kJ;
+  ex.MEL_req_kJ = d.MEL_req_kJ;
+  ex.h_i = d.h_i;
+  ex.h_max_sim = d.h_max_sim;
+  ex.simulated_energy = d.energy.weibull;
+  ex.simulated_height = d.height.weibull;
+  ex.simulated_energy_kJ = energy_kJ;
+  ex.simulated_height_m = sample.height;
+  if (d.observed_energy) ex.observed_energy = d.observed_energy->weibull;
+  if (d.observed_height) ex.observed_height = d.observed_height->weibull;
+  d.exceedance = exceedance_rows(ex);
+
+  // Step 8: bootstrap intervals of v_k, h_k and, through them, E_d and h_i.
+  const auto rv = characteristic_replicates(sample.speed, rules.percentile, rules.governing,
+                                            splitmix64(seed ^ 1));
+  const auto rh = characteristic_replicates(sample.height, rules.percentile, rules.governing,
+                                            splitmix64(seed ^ 2));
+  const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
+  if (rv) {
+    d.v_k.interval = interval(*rv.value, d.v_k.value, [](double v) { return v; });
+    d.E_d_interval = interval(*rv.value, d.v_k.value,
+                              [gF, md](double v) { return 0.5 * md * (v * gF) * (v * gF) / 1000.0; });
+  }
+  if (rh) {
+    d.h_k.interval = interval(*rh.value, d.h_k.value, [](double h) { return h; });
+    d.h_i_interval = interval(*rh.value, d.h_k.value, [gh, f](double h) { return h * gh + f; });
+  }
+  if (!rv || !rh || !d.v_k.interval || !d.h_k.interval)
+    d.notes.push_back("bootstrap: " + (!rv ? rv.error : !rh ? rh.error : std::string("a resample gave no fit")));
+
+  // Candidate capacities and residual height category.
+  d.candidate_mel_kJ = d.candidate_sel_kJ = kNaN;
+  if (spec.candidate) {
+    const CandidateBarrier& c = *spec.candidate;
+    if (c.energy_class) {
+      if (const EnergyClass* ec = find_energy_class(classes, *c.energy_class)) {
+        if (!ec->open_ended) {
+          d.candidate_mel_kJ = ec->mel_kJ;
+          d.candidate_sel_kJ = ec->sel_kJ;
+        }
+      }
+    }
+    if (c.mel_kJ) d.candidate_mel_kJ = *c.mel_kJ;
+    if (c.sel_kJ) d.candidate_sel_kJ = *c.sel_kJ;
+    if (c.residual_height && c.height && classes.residual_height)
+      d.residual_height_category =
+          residual_height_category(*classes.residual_height, *c.residual_height, *c.height);
+  }
+
+  d.checks = barrier_check_lines(d, rules);
+  out.design = std::move(d);
+  return out;
+}
+
+}  // namespace pierre::design

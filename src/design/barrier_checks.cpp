@@ -1,0 +1,234 @@
+// The check lines of a barrier (design-checks.md §1, "Check lines"), from a computed design.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "pierre/design/barrier_check.hpp"
+
+namespace pierre::design {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string num(double v, int sig = 4) {
+  if (std::isnan(v)) return "n/a";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", sig, v);
+  return buf;
+}
+std::string pct(double p) { return std::isnan(p) ? "n/a" : num(100 * p, 3) + " %"; }
+
+struct Builder {
+  const BarrierDesign& d;
+  const BarrierRuleSet& r;
+  std::vector<CheckLine> lines;
+
+  CheckLine& add(const std::string& id, std::string what, double value, double limit,
+                 std::string unit) {
+    CheckLine l;
+    l.subject = d.spec.name;
+    l.id = id;
+    l.what = std::move(what);
+    l.value = value;
+    l.limit = limit;
+    l.unit = std::move(unit);
+    l.rule = rule_reference(r, id);
+    lines.push_back(std::move(l));
+    return lines.back();
+  }
+};
+
+void set(CheckLine& l, CheckStatus s, std::string reason) {
+  l.status = s;
+  l.reason = std::move(reason);
+}
+
+void capacity_line(Builder& b, const char* id, const char* name, bool needed, double declared,
+                   double required) {
+  CheckLine& l = b.add(id, std::string("candidate ") + name + " against the required " + name +
+                               " (γE · E_d)",
+                       declared, required, "kJ");
+  if (!needed)
+    set(l, CheckStatus::not_applicable,
+        std::string("the rule set designs on ") + to_string(b.r.design_on) + ", not " + name);
+  else if (std::isnan(declared))
+    set(l, CheckStatus::not_applicable,
+        std::string("the candidate declares no ") + name + " (energy_class or " +
+            (std::string(name) == "MEL" ? "mel" : "sel") + ")");
+  else if (declared >= required)
+    set(l, CheckStatus::pass, std::string("candidate ") + name + " " + num(declared) + " kJ >= required " +
+                                  num(required) + " kJ");
+  else
+    set(l, CheckStatus::fail, std::string("candidate ") + name + " " + num(declared) + " kJ < required " +
+                                  num(required) + " kJ");
+}
+
+void elongation_line(Builder& b, const CandidateBarrier& c) {
+  struct Test {
+    const char* name;
+    std::optional<double> gamma_d, elongation;
+    bool governs;
+  };
+  const Test tests[] = {{"MEL", b.r.gamma_d_MEL, c.elongation_mel, needs_mel(b.r.design_on)},
+                        {"SEL", b.r.gamma_d_SEL, c.elongation_sel, needs_sel(b.r.design_on)}};
+  double limit = kNaN;
+  std::string how;
+  bool rule_has = false;
+  for (const Test& t : tests) {
+    if (!t.governs || !t.gamma_d) continue;
+    rule_has = true;
+    if (!t.elongation) continue;
+    const double need = *t.gamma_d * *t.elongation;
+    if (std::isnan(limit) || need > limit) {
+      limit = need;
+      how = std::string("γd · elongation (") + t.name + " test) = " + num(*t.gamma_d) + " × " +
+            num(*t.elongation) + " m";
+    }
+  }
+  const double value = c.distance_to_object.value_or(kNaN);
+  CheckLine& l = b.add("elongation",
+                       "distance from the barrier to the protected object against γd times the "
+                       "declared maximum elongation of the governing test",
+                       value, limit, "m");
+  if (!rule_has)
+    set(l, CheckStatus::not_applicable, "not applicable: the rule set has no γd for its design test");
+  else if (std::isnan(limit) || std::isnan(value))
+    set(l, CheckStatus::not_applicable,
+        "not applicable: the candidate does not declare both the elongation of the governing "
+        "test and distance_to_object");
+  else if (value >= limit)
+    set(l, CheckStatus::pass, "distance " + num(value) + " m >= " + how + " = " + num(limit) + " m");
+  else
+    set(l, CheckStatus::fail, "distance " + num(value) + " m < " + how + " = " + num(limit) + " m");
+}
+
+void exceedance_line(Builder& b, const char* id, const std::string& what, double p,
+                     std::optional<double> acceptable) {
+  CheckLine& l = b.add(id, what, p, acceptable.value_or(kNaN), "");
+  if (!acceptable)
+    set(l, CheckStatus::not_applicable, "no acceptable probability given (" + pct(p) + ")");
+  else if (std::isnan(p))
+    set(l, CheckStatus::fail, "cannot be evaluated: no Weibull fit of the simulated sample");
+  else if (p <= *acceptable)
+    set(l, CheckStatus::pass, pct(p) + " <= acceptable " + pct(*acceptable));
+  else
+    set(l, CheckStatus::fail, pct(p) + " > acceptable " + pct(*acceptable));
+}
+
+void fit_line(Builder& b, const char* id, const char* quantity, const QuantityFit& q) {
+  const double p = q.weibull_ks ? q.weibull_ks->p_value_stephens : kNaN;
+  CheckLine& l = b.add(id,
+                       std::string("Kolmogorov–Smirnov p-value (Stephens) of the Weibull fit of ") +
+                           quantity,
+                       p, b.r.fit_p_value, "");
+  if (std::isnan(p))
+    set(l, CheckStatus::warn, "no Weibull fit: " + (q.error.empty() ? std::string("too few values") : q.error));
+  else if (p < b.r.fit_p_value)
+    set(l, CheckStatus::warn,
+        "p = " + num(p, 3) + " < " + num(b.r.fit_p_value) +
+            ": the Weibull fit is doubtful (D = " + num(q.weibull_ks->statistic, 3) +
+            "); compare the empirical value");
+  else
+    set(l, CheckStatus::pass, "p = " + num(p, 3) + " >= " + num(b.r.fit_p_value) +
+                                  " (fitted to the same sample: weak support, Lilliefors)");
+}
+
+void sample_line(Builder& b) {
+  const BarrierDesign& d = b.d;
+  struct Q {
+    const char* name;
+    const std::optional<stats::BootstrapInterval>* ci;
+  };
+  const Q qs[] = {{"v_k", &d.v_k.interval}, {"h_k", &d.h_k.interval}, {"E_d", &d.E_d_interval},
+                  {"h_i", &d.h_i_interval}};
+  double worst = kNaN;
+  std::string which;
+  bool missing = false;
+  for (const Q& q : qs) {
+    if (!*q.ci) {
+      missing = true;
+      continue;
+    }
+    const double ratio = (*q.ci)->half_width() / std::abs((*q.ci)->estimate);
+    if (std::isnan(worst) || ratio > worst) {
+      worst = ratio;
+      which = q.name;
+    }
+  }
+  const double tol = b.r.sample_tolerance;
+  CheckLine& l = b.add("sample.size",
+                       "largest half-width of the 90 % bootstrap interval of v_k, h_k, E_d, h_i "
+                       "relative to its value" + (which.empty() ? std::string() : " (" + which + ")"),
+                       worst, tol, "");
+  if (std::isnan(worst) || missing) {
+    set(l, CheckStatus::warn, "no bootstrap interval: too few crossings");
+    return;
+  }
+  if (worst <= tol) {
+    set(l, CheckStatus::pass, "half-width " + pct(worst) + " of " + which + " <= tolerance " + pct(tol));
+    return;
+  }
+  const double factor = (worst / tol) * (worst / tol);
+  const double n = static_cast<double>(d.crossings + d.not_reached);
+  std::string reason = "half-width " + pct(worst) + " of " + which + " > tolerance " + pct(tol) +
+                       ": about " + num(std::ceil(n * factor), 6) + " trajectories needed (n · (" +
+                       num(worst, 3) + " / " + num(tol, 3) + ")² with n = " + num(n, 9) + ")";
+  if (d.throws > 0)
+    reason += ", i.e. throws = " + num(std::ceil(d.throws * factor), 9) + " per block and source";
+  set(l, CheckStatus::warn, reason);
+}
+
+}  // namespace
+
+std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const BarrierRuleSet& rules) {
+  Builder b{d, rules, {}};
+  if (d.spec.candidate) {
+    const CandidateBarrier& c = *d.spec.candidate;
+    capacity_line(b, "energy.mel", "MEL", needs_mel(rules.design_on), d.candidate_mel_kJ,
+                  d.MEL_req_kJ);
+    capacity_line(b, "energy.sel", "SEL", needs_sel(rules.design_on), d.candidate_sel_kJ,
+                  d.SEL_req_kJ);
+    {
+      const double value = c.height.value_or(kNaN);
+      CheckLine& l = b.add("height.interception",
+                           "candidate's vertical interception height against h_i = h_k γh + f",
+                           value, d.h_i, "m");
+      if (!c.height)
+        set(l, CheckStatus::not_applicable, "the candidate declares no height");
+      else if (*c.height >= d.h_i)
+        set(l, CheckStatus::pass, "height " + num(*c.height) + " m >= h_i " + num(d.h_i) + " m");
+      else
+        set(l, CheckStatus::fail, "height " + num(*c.height) + " m < h_i " + num(d.h_i) + " m");
+    }
+    elongation_line(b, c);
+    const double pE = d.exceedance.size() > 1 ? d.exceedance[1].simulated_weibull : kNaN;
+    const double ph = d.exceedance.size() > 2 ? d.exceedance[2].simulated_weibull : kNaN;
+    exceedance_line(b, "exceedance.energy",
+                    "P(E > MEL_req) from the Weibull fit of the simulated energies", pE,
+                    d.spec.acceptable_energy_exceedance);
+    exceedance_line(b, "exceedance.height",
+                    "P(h > h_i) from the Weibull fit of the simulated passing heights", ph,
+                    d.spec.acceptable_height_exceedance);
+  }
+  fit_line(b, "fit.v", "the speeds", d.speed);
+  fit_line(b, "fit.h", "the passing heights", d.height);
+  fit_line(b, "fit.E", "the translational energies", d.energy);
+  sample_line(b);
+  {
+    CheckLine& l = b.add("reach", "crossings of the line (first in the main direction)",
+                         static_cast<double>(d.crossings), rules.min_crossings, "");
+    const std::string counts = num(static_cast<double>(d.crossings), 12) + " crossing" +
+                               (d.crossings == 1 ? "" : "s") + ", " +
+                               num(static_cast<double>(d.not_reached), 12) + " did not reach the line";
+    if (static_cast<double>(d.crossings) < rules.min_crossings)
+      set(l, CheckStatus::warn, counts + ": fewer than " + num(rules.min_crossings) +
+                                    ", the statistics are weak");
+    else
+      set(l, CheckStatus::pass, counts);
+  }
+  return b.lines;
+}
+
+}  // namespace pierre::design
