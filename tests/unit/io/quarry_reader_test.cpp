@@ -1,0 +1,321 @@
+// The [[quarries]] part of a scenario and the quarry rule sets (docs/quarry.md): what is read,
+// and every error with its file, line, field, found and expected.
+#include "pierre/io/quarry_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_files.hpp"
+
+namespace pierre::io {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kRules = fs::path(PIERRE_SOURCE_DIR) / "rules";
+
+std::vector<model::Material> materials() {
+  model::Material face, floor;
+  face.name = "face";
+  face.normal_energy = 5, face.tangential_energy = 50, face.roughness = 0.65;
+  floor = face;
+  floor.name = "floor";
+  floor.roughness = 0.35;
+  return {face, floor};
+}
+
+sim::SimulationSettings settings() {
+  sim::SimulationSettings s;
+  s.seed = 100;
+  s.throws = 10;
+  return s;
+}
+
+const std::string kSection = R"([[quarries]]
+name = "Preg 1"
+group = "Preg"
+bench_width = 12.0
+exceedance = [0.05, 0.01, 0.001]
+
+[quarries.profile]
+points = [[0.0, 20.0, "floor"], [10.0, 20.0, "face"], [20.0, 0.0, "floor"], [90.0, 0.0, ""]]
+
+[quarries.blocks]
+density = 2800.0
+[[quarries.blocks.table]]
+id = "P1"
+mass = 140.0
+[[quarries.blocks.table]]
+id = "P2"
+mass = 8130.0
+count = 2
+
+[[quarries.sources]]
+x = 10.3
+z = 20.5
+vx = 0.5
+
+[[quarries.work_areas]]
+name = "crusher"
+distance = 40.0
+
+[quarries.observed]
+source = "Table 6.2, 6.3"
+count = 25
+runout = { p50 = 10.5, p95 = 15.8, max = 17.0 }
+first_impact = { p50 = 1.0, p95 = 3.8, max = 4.3 }
+)";
+
+// The section with line `n` (1-based) replaced.
+std::string section_with(int n, const std::string& text) {
+  std::istringstream in(kSection);
+  std::string line, out;
+  for (int k = 1; std::getline(in, line); ++k) out += (k == n ? text : line) + "\n";
+  return out;
+}
+
+std::vector<QuarrySection> read(const test::TempDir& dir, const std::string& text) {
+  const fs::path file = dir.write("scenario.toml", text);
+  const toml::table root = toml::parse(text, file.string());
+  return read_quarries(root, file, kRules, materials(), settings());
+}
+
+InputError error_of(const std::string& text) {
+  test::TempDir dir;
+  try {
+    read(dir, text);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return InputError("", 0, "", "", "");
+}
+
+TEST(QuarryReader, ReadsASection) {
+  test::TempDir dir;
+  const auto q = read(dir, kSection + "\n" + section_with(2, "name = \"Preg 2\""));
+  ASSERT_EQ(q.size(), 2u);
+  const QuarrySection& s = q[0];
+  EXPECT_EQ(s.spec.name, "Preg 1");
+  EXPECT_EQ(s.spec.group, "Preg");
+  EXPECT_EQ(s.spec.rules, "quarry-thesis-2015");
+  EXPECT_EQ(s.rules.name, "quarry-thesis-2015");
+  EXPECT_DOUBLE_EQ(*s.spec.bench_width, 12);
+  EXPECT_EQ(s.spec.exceedance, (std::vector<double>{0.05, 0.01, 0.001}));
+  EXPECT_EQ(s.scenario.blocks.size(), 3u);
+  EXPECT_EQ(s.scenario.blocks[1].id, "P2.1");
+  EXPECT_DOUBLE_EQ(s.scenario.blocks[0].density, 2800);
+  EXPECT_EQ(s.scenario.sources.size(), 1u);
+  EXPECT_EQ(s.scenario.materials.size(), 2u);
+  EXPECT_EQ(s.scenario.settings.throws, 10u);
+  EXPECT_EQ(s.scenario.settings.seed, 100u);
+  EXPECT_EQ(q[1].scenario.settings.seed, 101u);  // each section its own stream
+  EXPECT_EQ(s.geometry.toe_vertex, 2u);
+  EXPECT_DOUBLE_EQ(s.geometry.height, 20);
+  EXPECT_EQ(s.scenario.settings.floor_segment, 2);
+  ASSERT_EQ(s.spec.work_areas.size(), 1u);
+  EXPECT_EQ(s.spec.work_areas[0].name, "crusher");
+  EXPECT_DOUBLE_EQ(*s.observed.rd.p95, 15.8);
+  EXPECT_DOUBLE_EQ(*s.observed.id.max, 4.3);
+  EXPECT_EQ(*s.observed.rd.count, 25u);
+  EXPECT_EQ(s.observed.source, "Table 6.2, 6.3");
+}
+
+TEST(QuarryReader, GivenGeometryCsvFilesAndSeed) {
+  test::TempDir dir;
+  dir.write("face.csv", "x,z,material\n0,20,floor\n10,20,face\n20,0,floor\n90,0,\n");
+  dir.write("blocks.csv", "id,mass\nA,140\nB,500\n");
+  dir.write("observed.csv", "first_impact,runout\n1.0,10.5\n,12.0\n2.5,\n");
+  const std::string text = R"([[quarries]]
+name = "Pauliberg"
+rules = "quarry-conservative"
+toe = 25.0
+crest = 10.0
+height = 19.5
+seed = 7
+profile = { file = "face.csv" }
+blocks = { file = "blocks.csv" }
+sources = [{ x = 10.3, z = 20.5 }]
+observed = { file = "observed.csv" }
+)";
+  const auto q = read(dir, text);
+  ASSERT_EQ(q.size(), 1u);
+  const auto& s = q[0];
+  EXPECT_EQ(s.rules.name, "quarry-conservative");
+  EXPECT_EQ(s.geometry.toe_origin, design::GeometryOrigin::given);
+  EXPECT_DOUBLE_EQ(s.geometry.toe.x, 25);
+  EXPECT_DOUBLE_EQ(s.geometry.height, 19.5);
+  EXPECT_DOUBLE_EQ(s.geometry.height_derived, 20);
+  EXPECT_EQ(s.scenario.settings.floor_segment, 2);
+  EXPECT_EQ(s.scenario.settings.seed, 7u);
+  EXPECT_EQ(s.scenario.blocks.size(), 2u);
+  EXPECT_EQ(s.observed.id.metres, (std::vector<double>{1.0, 2.5}));
+  EXPECT_EQ(s.observed.rd.metres, (std::vector<double>{10.5, 12.0}));
+}
+
+TEST(QuarryReader, NoQuarries) {
+  test::TempDir dir;
+  EXPECT_TRUE(read(dir, "[scenario]\nname = \"x\"\n").empty());
+}
+
+struct ErrorCase {
+  const char* name;
+  int line;             // of kSection to replace (0: append `text`)
+  const char* text;
+  long expect_line;     // in the scenario file (-1: do not check)
+  const char* field;
+  const char* found;    // a part of the message's found (empty: do not check)
+};
+
+class QuarryReaderErrors : public ::testing::TestWithParam<ErrorCase> {};
+
+TEST_P(QuarryReaderErrors, NamesLineFieldFound) {
+  const ErrorCase& c = GetParam();
+  const std::string text = c.line > 0 ? section_with(c.line, c.text) : kSection + c.text;
+  const InputError e = error_of(text);
+  if (c.expect_line >= 0) {
+    EXPECT_EQ(e.line(), c.expect_line) << e.what();
+  }
+  EXPECT_EQ(e.field(), c.field) << e.what();
+  EXPECT_NE(e.found().find(c.found), std::string::npos) << e.what();
+  EXPECT_FALSE(e.expected().empty());
+  EXPECT_EQ(e.file().filename(), "scenario.toml");
+}
+
+const ErrorCase kErrors[] = {
+    {"unknown_key", 4, "bench = 12.0", 4, "quarries[0].bench", "an unknown key"},
+    {"bench_width_zero", 4, "bench_width = 0.0", 4, "quarries[0].bench_width", "0.0"},
+    {"exceedance_one", 5, "exceedance = [0.05, 1.0]", 5, "quarries[0].exceedance[1]", "1.0"},
+    {"unknown_material", 8,
+     "points = [[0.0, 20.0, \"floor\"], [10.0, 20.0, \"rock\"], [20.0, 0.0, \"floor\"], [90.0, 0.0, \"\"]]",
+     8, "quarries[0].profile.points[1]", "\"rock\""},
+    {"no_floor", 8,
+     "points = [[0.0, 20.0, \"floor\"], [10.0, 20.0, \"face\"], [20.0, 0.0, \"face\"], [40.0, -10.0, \"\"]]",
+     7, "quarries[0].profile", "no toe found"},
+    {"toe_outside", 0, "", -1, "", ""},  // placeholder replaced below
+    {"mass_negative", 14, "mass = -1.0", 14, "quarries[0].blocks.table[0].mass", "-1.0"},
+    {"source_outside", 21, "x = 95.0", 21, "quarries[0].sources[0].x", "95.0"},
+    {"work_area_negative", 27, "distance = -3.0", 27, "quarries[0].work_areas[0].distance", "-3.0"},
+    {"work_area_space", 26, "name = \"haul road\"", 26, "quarries[0].work_areas[0].name", "haul road"},
+    {"observed_order", 32, "runout = { p50 = 10.5, p95 = 9.0, max = 17.0 }", 32,
+     "quarries[0].observed.runout.p95", "9.0"},
+    {"rules_unknown", 4, "rules = \"no-such-rules\"", 4, "quarries[0].rules", "no-such-rules"},
+    {"duplicate_name", 0, "\n[[quarries]]\nname = \"Preg 1\"\n", 36, "quarries[1].name", "Preg 1"},
+};
+
+std::vector<ErrorCase> error_cases() {
+  std::vector<ErrorCase> v;
+  for (const auto& c : kErrors)
+    if (std::string(c.name) != "toe_outside") v.push_back(c);
+  v.push_back({"toe_outside", 4, "toe = 120.0", 4, "quarries[0].toe", "outside the section"});
+  return v;
+}
+
+INSTANTIATE_TEST_SUITE_P(All, QuarryReaderErrors, ::testing::ValuesIn(error_cases()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(QuarryReader, GroupWithDifferentRuleSets) {
+  const std::string text = kSection + "\n" + section_with(2, "name = \"Preg 2\"\nrules = \"quarry-conservative\"");
+  const InputError e = error_of(text);
+  EXPECT_EQ(e.field(), "quarries[1].rules") << e.what();
+  EXPECT_NE(e.expected().find("quarry-thesis-2015"), std::string::npos) << e.what();
+}
+
+// ---- rule sets ----
+
+TEST(QuarryRules, ShippedRuleSets) {
+  const auto t = load_quarry_rules("quarry-thesis-2015", kRules);
+  EXPECT_EQ(t.name, "quarry-thesis-2015");
+  EXPECT_EQ(t.governing, (std::vector<design::QuarryGoverning>{design::QuarryGoverning::percentile}));
+  EXPECT_DOUBLE_EQ(t.percentile, 95);
+  EXPECT_DOUBLE_EQ(t.floor_angle_deg, 15);
+  EXPECT_DOUBLE_EQ(t.retention_target, 0.9);
+  EXPECT_DOUBLE_EQ(t.ritchie_factor, 0.2);
+  EXPECT_DOUBLE_EQ(t.ritchie_offset, 4.5);
+  EXPECT_FALSE(t.source.empty());
+  EXPECT_TRUE(t.clauses.count("zone"));
+  const auto c = load_quarry_rules("quarry-conservative", kRules);
+  EXPECT_EQ(c.governing, (std::vector<design::QuarryGoverning>{design::QuarryGoverning::maximum,
+                                                               design::QuarryGoverning::lognormal}));
+  EXPECT_DOUBLE_EQ(c.lognormal_percentile, 99);
+}
+
+const std::string kCustom = R"([rule_set]
+title = "Site rules"
+source = "site manager, 2024"
+[toe]
+floor_angle = 10.0
+[governing]
+use = ["percentile", "maximum"]
+percentile = 98.0
+[retention]
+target = 0.95
+[ritchie]
+factor = 0.25
+offset = 5.0
+[sample]
+min_reached = 50
+resamples = 200
+[fit]
+p_value = 0.01
+[clauses]
+zone = "site rule 3.1"
+)";
+
+TEST(QuarryRules, FromATempFileByPath) {
+  test::TempDir dir;
+  const fs::path f = dir.write("site-rules.toml", kCustom);
+  const auto r = load_quarry_rules(f.string(), "/nonexistent");
+  EXPECT_EQ(r.name, "site-rules");  // the file stem when [rule_set] has no name
+  EXPECT_DOUBLE_EQ(r.floor_angle_deg, 10);
+  EXPECT_EQ(r.governing.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.percentile, 98);
+  EXPECT_DOUBLE_EQ(r.retention_target, 0.95);
+  EXPECT_DOUBLE_EQ(r.ritchie_offset, 5);
+  EXPECT_EQ(r.min_reached, 50u);
+  EXPECT_EQ(r.sample_resamples, 200u);
+  EXPECT_DOUBLE_EQ(r.fit_p_value, 0.01);
+  EXPECT_EQ(r.clauses.at("zone"), "site rule 3.1");
+  // And by name from a rules folder.
+  const auto byname = load_quarry_rules("site-rules", dir.path());
+  EXPECT_DOUBLE_EQ(byname.percentile, 98);
+}
+
+TEST(QuarryRules, Errors) {
+  test::TempDir dir;
+  auto err = [&](const std::string& text) {
+    const fs::path f = dir.write("r.toml", text);
+    try {
+      load_quarry_rules(f.string(), dir.path());
+    } catch (const InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "no error";
+    return InputError("", 0, "", "", "");
+  };
+  std::string bad_use = kCustom;
+  bad_use.replace(bad_use.find("\"maximum\""), 9, "\"median\"");
+  const auto a = err(bad_use);
+  EXPECT_EQ(a.line(), 7);
+  EXPECT_EQ(a.field(), "governing.use[1]");
+  EXPECT_EQ(a.found(), "\"median\"");
+  std::string no_pct = kCustom;
+  no_pct.replace(no_pct.find("percentile = 98.0"), 17, "");
+  EXPECT_EQ(err(no_pct).field(), "governing.percentile");
+  std::string angle = kCustom;
+  angle.replace(angle.find("10.0"), 4, "95.0");
+  EXPECT_EQ(err(angle).field(), "toe.floor_angle");
+  const auto missing = [&] {
+    try {
+      load_quarry_rules("absent", dir.path());
+    } catch (const InputError& e) {
+      return e;
+    }
+    return InputError("", 0, "", "", "");
+  }();
+  EXPECT_EQ(missing.line(), 0);
+  EXPECT_EQ(missing.found(), "no such file");
+}
+
+}  // namespace
+}  // namespace pierre::io
