@@ -210,6 +210,7 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
                                    (std::isfinite(sr.danger_zone) ? " m" : "") + " (" +
                                    row.rd_gov.how + ")";
       auto zone_line = [&](const std::string& id, const std::string& what, double value) {
+        std::string gov_text_extra;
         CheckLine l = line(subject, id, rules);
         l.what = what;
         l.value = value;
@@ -225,8 +226,11 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
                      std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
                      "); extend the section";
         } else if (value < sr.danger_zone) {
+          if (sr.danger_zone > sr.geometry.floor_length)
+            gov_text_extra = " — beyond the section's end (floor " + num(sr.geometry.floor_length) +
+                             " m): extend the section";
           l.status = CheckStatus::fail;
-          l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
+          l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text + gov_text_extra;
         } else {
           l.status = CheckStatus::pass;
           l.reason = num(value) + " m from the toe is outside the danger zone: " + gov_text;
