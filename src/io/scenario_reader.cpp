@@ -1,6 +1,7 @@
 // The scenario reader (docs/scenario-format.md). Reading order: [scenario], [simulation],
 // [materials] (with the presets of the materials file), [profile], [blocks], [[sources]],
-// [[observation_lines]]; the first problem found stops the reading with an InputError.
+// [[observation_lines]], [[barriers]] (with their rule sets, class tables and observed data);
+// the first problem found stops the reading with an InputError.
 #include "pierre/io/scenario_reader.hpp"
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "csv_table.hpp"
+#include "pierre/io/rule_set_reader.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io {
@@ -566,6 +568,239 @@ void read_lines(const TomlTable& top, sim::Scenario& sc) {
   }
 }
 
+
+// ---- barriers (design-checks.md §1) ----
+
+std::string quoted_list(const std::vector<std::string>& v, const char* sep = ", ") {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : sep) + ("\"" + x + "\"");
+  return s;
+}
+
+design::DesignBlock read_design_block(const TomlTable& t) {
+  const std::string expected =
+      "\"largest\", { percentile = p } (of the block volumes, optional density) or "
+      "{ volume = m³, density = kg/m³ }";
+  design::DesignBlock b;
+  const toml::node* n = t.find("design_block");
+  if (!n) return b;  // default: the largest block thrown
+  if (const auto* s = n->as_string()) {
+    if (s->get() != "largest") t.fail("design_block", expected);
+    return b;
+  }
+  if (!n->as_table()) t.fail("design_block", expected);
+  const auto d = t.subtable("design_block", {"percentile", "volume", "density"});
+  const bool has_p = d->has("percentile"), has_v = d->has("volume");
+  if (has_p == has_v)
+    throw InputError(t.file(), d->line(), t.field("design_block"),
+                     has_p ? "both percentile and volume" : "neither percentile nor volume",
+                     expected);
+  if (has_p) {
+    b.kind = design::DesignBlock::Kind::percentile;
+    b.percentile = d->required_number("percentile", "a percentile in (0, 100]");
+    d->check("percentile", b.percentile > 0 && b.percentile <= 100, "a percentile in (0, 100]");
+    if (d->has("density")) {
+      b.density = d->required_number("density", "a density > 0 (kg/m³)");
+      d->check("density", b.density > 0, "a density > 0 (kg/m³)");
+    }
+    return b;
+  }
+  b.kind = design::DesignBlock::Kind::given;
+  b.volume = d->required_number("volume", "a volume > 0 (m³)");
+  d->check("volume", b.volume > 0, "a volume > 0 (m³)");
+  b.density = d->required_number("density", "a density > 0 (kg/m³) with the volume");
+  d->check("density", b.density > 0, "a density > 0 (kg/m³)");
+  return b;
+}
+
+std::optional<double> positive_number(const TomlTable& t, std::string_view key,
+                                      std::string_view expected) {
+  const auto v = t.number(key);
+  if (v) t.check(key, *v > 0, expected);
+  return v;
+}
+
+design::CandidateBarrier read_candidate(const TomlTable& c, const design::EnergyClassTable& classes) {
+  design::CandidateBarrier k;
+  if (auto n = c.integer("energy_class")) {
+    std::vector<std::string> nums;
+    for (const auto& e : classes.classes) nums.push_back(std::to_string(e.number));
+    std::string list;
+    for (const auto& x : nums) list += (list.empty() ? "" : ", ") + x;
+    const design::EnergyClass* e =
+        *n >= INT32_MIN && *n <= INT32_MAX ? design::find_energy_class(classes, static_cast<int>(*n)) : nullptr;
+    c.check("energy_class", e != nullptr,
+            fmt::format("a class of {} ({})", classes.name, list));
+    k.energy_class = static_cast<int>(*n);
+    if (e->open_ended && !(c.has("mel") && c.has("sel")))
+      c.fail("energy_class",
+             fmt::format("a closed class, or mel and sel declared beside it (class {} is open-ended: "
+                         "\"> {} kJ\")", e->number, e->mel_kJ));
+  }
+  k.mel_kJ = positive_number(c, "mel", "a declared MEL > 0 (kJ)");
+  k.sel_kJ = positive_number(c, "sel", "a declared SEL > 0 (kJ)");
+  k.height = positive_number(c, "height", "a vertical interception height > 0 (m)");
+  k.elongation_mel = positive_number(c, "elongation_mel", "a maximum elongation > 0 (m, MEL test)");
+  k.elongation_sel = positive_number(c, "elongation_sel", "a maximum elongation > 0 (m, SEL test)");
+  k.distance_to_object = positive_number(c, "distance_to_object", "a distance > 0 (m)");
+  if (auto r = c.number("residual_height")) {
+    c.check("residual_height", *r >= 0, "a residual height >= 0 (m)");
+    if (!k.height) c.fail("residual_height", "a residual height together with the candidate's height");
+    c.check("residual_height", *r <= *k.height,
+            fmt::format("a residual height <= the height ({} m)", *k.height));
+    k.residual_height = r;
+  }
+  if (!k.energy_class && !k.mel_kJ && !k.sel_kJ && !k.height)
+    throw InputError(c.file(), c.line(), c.field("energy_class"), "nothing to check",
+                     "at least one of energy_class, mel, sel, height");
+  return k;
+}
+
+design::ObservedSample read_observed(const fs::path& file) {
+  const CsvTable t = detail::read_csv(file, {"speed_m_s", "height_m", "energy_kJ"},
+                                      "speed_m_s, height_m and/or energy_kJ");
+  design::ObservedSample o;
+  o.file = file.string();
+  struct Col {
+    const char* name;
+    std::vector<double>* out;
+    double scale;
+  };
+  const Col cols[] = {{"speed_m_s", &o.speed, 1.0}, {"height_m", &o.height, 1.0},
+                      {"energy_kJ", &o.energy, 1000.0}};
+  bool any = false;
+  for (const Col& c : cols) {
+    const auto idx = t.column(c.name);
+    if (!idx) continue;
+    any = true;
+    for (const auto& r : t.rows) {
+      if (r.cells[*idx].empty()) continue;
+      const double v = t.number(r, *idx);
+      if (!(v >= 0))
+        throw InputError(file, r.line, c.name, r.cells[*idx], "a value >= 0");
+      c.out->push_back(v * c.scale);
+    }
+  }
+  if (!any)
+    throw InputError(file, t.header_line, "header", "none of the columns",
+                     "a header with speed_m_s, height_m and/or energy_kJ");
+  if (o.speed.empty() && o.height.empty() && o.energy.empty())
+    throw InputError(file, t.header_line, "observed", "no values", "at least one observed value");
+  return o;
+}
+
+void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenario& out) {
+  const toml::array* a = top.array_of_tables("barriers");
+  if (!a) return;
+  const sim::Scenario& sc = out.scenario;
+  std::vector<std::string> line_names;
+  for (const auto& l : sc.lines) line_names.push_back(l.name);
+  std::map<fs::path, std::pair<design::BarrierRuleSet, design::EnergyClassTable>> cache;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& node = *a->get(i);
+    const TomlTable t(top.file(), *node.as_table(), fmt::format("barriers[{}]", i), line_of(node),
+                      {"name", "line", "rules", "design_block", "free_board_diameter",
+                       "data_quality", "candidate", "acceptable_energy_exceedance",
+                       "acceptable_height_exceedance", "observed"});
+    design::BarrierSpec b;
+    b.name = t.required_string("name", "a name for the barrier");
+    t.check("name", !b.name.empty(), "a non-empty name");
+    for (const auto& other : out.barriers)
+      t.check("name", other.name != b.name, "a name not used by another barrier");
+    b.line = t.required_string("line", "the name of an observation line");
+    t.check("line", std::find(line_names.begin(), line_names.end(), b.line) != line_names.end(),
+            line_names.empty() ? std::string("an observation line's name (the scenario has no "
+                                             "[[observation_lines]])")
+                               : "the name of an observation line (" + quoted_list(line_names) + ")");
+
+    // The rule set: a name in rules_dir, or a path relative to the scenario.
+    b.rules = t.string("rules").value_or("peila-ronco-2009");
+    const fs::path rules_file = names_a_path(b.rules) ? relative_to(top.file(), b.rules)
+                                                      : rules_dir / (b.rules + ".toml");
+    std::error_code ec;
+    if (!fs::is_regular_file(rules_file, ec)) {
+      const auto names = barrier_rule_set_names(rules_dir);
+      const std::string expected =
+          fmt::format("a rule set of {} ({}) or a path to a rule-set TOML file", rules_dir.string(),
+                      quoted_list(names));
+      if (t.has("rules"))
+        t.fail("rules", expected + fmt::format(" ({} does not exist)", rules_file.string()));
+      t.missing("rules", expected);
+    }
+    auto cached = cache.find(rules_file);
+    if (cached == cache.end()) {
+      design::BarrierRuleSet rules = load_rule_set_file(rules_file);
+      fs::path classes_file = rules_file.parent_path() / (rules.classes + ".toml");
+      if (!fs::is_regular_file(classes_file, ec)) classes_file = rules_dir / (rules.classes + ".toml");
+      if (!fs::is_regular_file(classes_file, ec))
+        throw InputError(rules_file, 0, "rule_set.classes", fmt::format("\"{}\"", rules.classes),
+                         fmt::format("an energy class table beside the rule set or in {}",
+                                     rules_dir.string()));
+      design::EnergyClassTable classes = load_energy_classes_file(classes_file);
+      cached = cache.emplace(rules_file, std::make_pair(std::move(rules), std::move(classes))).first;
+    }
+    const design::BarrierRuleSet& rules = cached->second.first;
+    const design::EnergyClassTable& classes = cached->second.second;
+
+    b.design_block = read_design_block(t);
+    b.free_board_diameter = positive_number(t, "free_board_diameter", "a diameter > 0 (m)");
+
+    // Data-quality answers: exactly the questions the rule set asks.
+    const auto questions = design::data_quality_questions(rules);
+    std::vector<std::string> asked;
+    for (const auto& [q, answers] : questions) asked.push_back(q);
+    const auto dq = t.subtable("data_quality", {});
+    if (dq) {
+      for (auto&& [k, v] : dq->table()) {
+        const std::string q(k.str());
+        if (!questions.count(q))
+          throw InputError(top.file(), static_cast<long>(k.source().begin.line), dq->field(q),
+                           "a question the rule set does not ask",
+                           asked.empty() ? fmt::format("no data_quality (rule set {} asks none)", rules.name)
+                                         : fmt::format("one of the questions of rule set {}: {}",
+                                                       rules.name, quoted_list(asked)));
+        b.data_quality[q] = dq->required_string(q, "an answer (a string)");
+      }
+    }
+    for (const auto& [q, answers] : questions) {
+      const std::string expected = fmt::format("{} (asked by rule set {})", quoted_list(answers, " or "),
+                                               rules.name);
+      const auto it = b.data_quality.find(q);
+      if (it == b.data_quality.end()) {
+        if (dq) dq->missing(q, expected);
+        throw InputError(top.file(), t.line(), t.field("data_quality") + "." + q, "nothing", expected);
+      }
+      if (std::find(answers.begin(), answers.end(), it->second) == answers.end()) dq->fail(q, expected);
+    }
+
+    if (const auto c = t.subtable("candidate", {"energy_class", "mel", "sel", "height",
+                                                "elongation_mel", "elongation_sel",
+                                                "distance_to_object", "residual_height"}))
+      b.candidate = read_candidate(*c, classes);
+    for (const char* key : {"acceptable_energy_exceedance", "acceptable_height_exceedance"}) {
+      const auto p = t.number(key);
+      if (!p) continue;
+      t.check(key, *p > 0 && *p < 1, "a probability in (0, 1)");
+      if (!b.candidate)
+        t.fail(key, "no acceptable probability without a [barriers.candidate] (without one the "
+                    "barrier is a design and reports only the advisory lines)");
+      (std::string_view(key) == "acceptable_energy_exceedance" ? b.acceptable_energy_exceedance
+                                                              : b.acceptable_height_exceedance) = p;
+    }
+    std::optional<design::ObservedSample> observed;
+    if (const auto f = t.string("observed")) {
+      t.check("observed", !f->empty(), "a CSV file of observed speeds, heights, energies");
+      b.observed_file = *f;
+      observed = read_observed(relative_to(top.file(), *f));
+    }
+    out.barriers.push_back(std::move(b));
+    out.barrier_rules.push_back(rules);
+    out.barrier_rules_files.push_back(rules_file);
+    out.barrier_classes.push_back(classes);
+    out.barrier_observed.push_back(std::move(observed));
+  }
+}
+
 }  // namespace
 
 LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
@@ -576,7 +811,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
   const toml::table root = parse_toml(scenario_file, out.text);
   const TomlTable top(scenario_file, root, "", 0,
                       {"scenario", "simulation", "profile", "materials", "blocks", "sources",
-                       "observation_lines"});
+                       "observation_lines", "barriers"});
 
   const auto head = top.subtable("scenario", {"name", "description", "materials_file"});
   if (!head) top.missing("scenario", "a [scenario] table with a name");
@@ -595,6 +830,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
   read_blocks(top, out);
   read_sources(top, out.scenario);
   read_lines(top, out.scenario);
+  read_barriers(top, rules_dir, out);
   return out;
 }
 

@@ -4,9 +4,12 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "pierre/design/barrier_check.hpp"
+#include "pierre/design/barrier_rules.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -28,10 +31,20 @@ struct LoadedScenario {
   std::string description;
   std::vector<BlockGroup> block_groups;
   std::filesystem::path materials_file;  // where the presets came from
+
+  // [[barriers]] (docs/scenario-format.md), in file order; index i of every vector below is
+  // barrier i. The rule set, its class table and the observed data are loaded and checked
+  // here, so that a run never starts with a barrier it cannot compute.
+  std::vector<design::BarrierSpec> barriers;
+  std::vector<design::BarrierRuleSet> barrier_rules;
+  std::vector<std::filesystem::path> barrier_rules_files;
+  std::vector<design::EnergyClassTable> barrier_classes;
+  std::vector<std::optional<design::ObservedSample>> barrier_observed;
 };
 
-// `rules_dir` holds materials.toml (and, later, design rule sets); it is only read when a
-// material names a preset and the scenario gives no `materials_file`.
+// `rules_dir` holds materials.toml and the design rule sets; materials.toml is only read when a
+// material names a preset and the scenario gives no `materials_file`; a barrier's rule set is
+// rules_dir/<name>.toml unless the scenario gives a path (relative to the scenario file).
 // Numbers: an integer is accepted where a float is expected (`mass = 1500`); nothing else
 // converts (`throws = "5"` or `throws = 5.0` is an error). NaN and infinities are errors.
 LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
