@@ -179,7 +179,123 @@ void ResultFiles::close() {
   if (impacts_) impacts_->close();
 }
 
-std::string summary_json(const RunInfo& info, const design::RunStatistics& s) {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+ojson interval_json(const std::optional<stats::BootstrapInterval>& ci) {
+  if (!ci) return nullptr;
+  return {{"lower", ci->lower}, {"upper", ci->upper}, {"confidence", ci->confidence},
+          {"resamples", ci->resamples}};
+}
+
+ojson ks_json(const std::optional<stats::KolmogorovSmirnovTest>& ks) {
+  if (!ks) return nullptr;
+  return {{"D", ks->statistic}, {"p_value", ks->p_value}, {"p_value_stephens", ks->p_value_stephens}};
+}
+
+ojson fit_json(const design::QuantityFit& q) {
+  ojson j;
+  j["count"] = q.summary.count;
+  j["mean"] = q.summary.mean;
+  j["max"] = q.summary.max;
+  j["weibull"] = q.weibull ? ojson{{"shape_k", q.weibull->shape}, {"scale_lambda", q.weibull->scale}}
+                           : ojson(nullptr);
+  j["weibull_ks"] = ks_json(q.weibull_ks);
+  j["lognormal"] = q.lognormal ? ojson{{"mu", q.lognormal->mu}, {"sigma", q.lognormal->sigma}}
+                               : ojson(nullptr);
+  j["lognormal_ks"] = ks_json(q.lognormal_ks);
+  if (!q.error.empty()) j["error"] = q.error;
+  return j;
+}
+
+ojson characteristic_json(const design::Characteristic& c) {
+  return {{"weibull", c.weibull}, {"empirical", c.empirical}, {"value", c.value},
+          {"interval", interval_json(c.interval)}};
+}
+
+ojson factor_json(const design::ResolvedFactor& f) { return {{"value", f.value}, {"how", f.how}}; }
+
+ojson barrier_json(const design::BarrierDesign& d) {
+  ojson j;
+  j["name"] = d.spec.name;
+  j["line"] = d.spec.line;
+  j["chainage_m"] = d.chainage;
+  j["rules"] = {{"name", d.rules_name}, {"title", d.rules_title}, {"source", d.rules_source}};
+  j["mode"] = d.spec.candidate ? "check" : "design";
+  j["crossings"] = d.crossings;
+  j["not_reached"] = d.not_reached;
+  j["data_quality"] = d.spec.data_quality;
+  j["design_block"] = {{"volume_m3", d.design_volume}, {"density_kg_m3", d.design_density}};
+  j["free_board_diameter_m"] = d.free_board_diameter;
+  j["fits"] = {{"speed_m_s", fit_json(d.speed)},
+               {"passing_height_m", fit_json(d.height)},
+               {"translational_energy_kJ", fit_json(d.energy)}};
+  j["rotational_energy_kJ"] = {{"mean", d.rotational_energy.mean}, {"max", d.rotational_energy.max}};
+  j["v_k_m_s"] = characteristic_json(d.v_k);
+  j["h_k_m"] = characteristic_json(d.h_k);
+  j["gamma_F"] = factor_json(d.gamma_F);
+  j["gamma_M"] = factor_json(d.gamma_M);
+  j["gamma_h"] = factor_json(d.gamma_h);
+  j["gamma_E_MEL"] = d.gamma_E_MEL;
+  j["gamma_E_SEL"] = d.gamma_E_SEL;
+  j["v_d_m_s"] = d.v_d;
+  j["m_d_kg"] = d.m_d;
+  j["E_d_kJ"] = d.E_d_kJ;
+  j["E_d_interval_kJ"] = interval_json(d.E_d_interval);
+  j["MEL_req_kJ"] = d.MEL_req_kJ;
+  j["SEL_req_kJ"] = d.SEL_req_kJ;
+  if (d.energy_class)
+    j["energy_class"] = {{"class", d.energy_class->number},
+                         {"SEL_kJ", d.energy_class->sel_kJ},
+                         {"MEL_kJ", d.energy_class->mel_kJ},
+                         {"open_ended", d.energy_class->open_ended}};
+  else
+    j["energy_class"] = nullptr;
+  j["free_board_m"] = d.free_board;
+  j["h_d_m"] = d.h_d;
+  j["h_i_m"] = d.h_i;
+  j["h_i_interval_m"] = interval_json(d.h_i_interval);
+  j["h_max_sim_m"] = d.h_max_sim;
+  ojson ex = ojson::array();
+  for (const auto& r : d.exceedance)
+    ex.push_back({{"what", r.what},
+                  {"threshold", r.threshold},
+                  {"unit", r.unit},
+                  {"simulated_weibull", r.simulated_weibull},
+                  {"simulated_empirical", r.simulated_empirical},
+                  {"observed_weibull", r.observed_weibull ? ojson(*r.observed_weibull) : ojson(nullptr)}});
+  j["exceedance"] = ex;
+  if (d.observed_speed || d.observed_height || d.observed_energy) {
+    ojson o;
+    o["file"] = d.spec.observed_file;
+    if (d.observed_speed) o["speed_m_s"] = fit_json(*d.observed_speed);
+    if (d.observed_height) o["passing_height_m"] = fit_json(*d.observed_height);
+    if (d.observed_energy) o["translational_energy_kJ"] = fit_json(*d.observed_energy);
+    j["observed"] = o;
+  }
+  if (d.spec.candidate) {
+    const auto& c = *d.spec.candidate;
+    auto opt = [](const std::optional<double>& v) { return v ? ojson(*v) : ojson(nullptr); };
+    j["candidate"] = {{"energy_class", c.energy_class ? ojson(*c.energy_class) : ojson(nullptr)},
+                      {"MEL_kJ", d.candidate_mel_kJ},
+                      {"SEL_kJ", d.candidate_sel_kJ},
+                      {"height_m", opt(c.height)},
+                      {"elongation_mel_m", opt(c.elongation_mel)},
+                      {"elongation_sel_m", opt(c.elongation_sel)},
+                      {"distance_to_object_m", opt(c.distance_to_object)},
+                      {"residual_height_m", opt(c.residual_height)},
+                      {"residual_height_category", d.residual_height_category}};
+  }
+  j["bootstrap_seed"] = d.bootstrap_seed;
+  j["notes"] = d.notes;
+  return j;
+}
+
+}  // namespace
+
+std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
+                         const DesignResults& results) {
   using json = nlohmann::ordered_json;
   auto q = [](const design::QuantityStatistics& v, double scale) {
     return json{{"mean", v.mean * scale}, {"p50", v.p50 * scale}, {"p95", v.p95 * scale},
@@ -213,12 +329,30 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s) {
   j["lines"] = lines;
   j["runout_m"] = {{"p50", s.runout.p50}, {"p95", s.runout.p95}, {"p99", s.runout.p99},
                    {"max", s.runout.max}};
+  if (!results.barriers.empty() || !results.checks.empty()) {
+    json barriers = json::array();
+    for (const auto& d : results.barriers) barriers.push_back(barrier_json(d));
+    j["barriers"] = barriers;
+    json checks = json::array();
+    for (const auto& c : results.checks)
+      checks.push_back({{"subject", c.subject},
+                        {"id", c.id},
+                        {"what", c.what},
+                        {"value", c.value},
+                        {"limit", c.limit},
+                        {"unit", c.unit},
+                        {"rule", c.rule},
+                        {"status", std::string(design::to_string(c.status))},
+                        {"reason", c.reason}});
+    j["checks"] = checks;
+    j["checks_failed"] = design::any_failure(results.checks);
+  }
   return j.dump(2) + "\n";
 }
 
 void write_summary_json(const std::filesystem::path& file, const RunInfo& info,
-                        const design::RunStatistics& stats) {
-  const std::string text = summary_json(info, stats);
+                        const design::RunStatistics& stats, const DesignResults& results) {
+  const std::string text = summary_json(info, stats, results);
   std::FILE* f = std::fopen(file.c_str(), "wb");
   if (!f)
     throw std::runtime_error(fmt::format("cannot create {}: {}", file.string(), std::strerror(errno)));

@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "pierre/design/barrier_check.hpp"
+#include "pierre/design/check_line.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/sim/runner.hpp"
 #include "pierre/sim/scenario.hpp"
@@ -71,10 +73,19 @@ struct RunInfo {
   bool all_crossings = false;
 };
 
+// The design results of a run: every barrier computed and every check line (all subjects).
+struct DesignResults {
+  std::vector<design::BarrierDesign> barriers;
+  std::vector<design::CheckLine> checks;
+};
+
 // summary.json's text (pretty-printed, NaN as null): pierre version, scenario, seed, throws,
-// trajectories, threads, stop-reason counts, per-line statistics (energies in kJ), runout.
-std::string summary_json(const RunInfo& info, const design::RunStatistics& stats);
+// trajectories, threads, stop-reason counts, per-line statistics (energies in kJ), runout;
+// with design results also "barriers" (the design values of each) and "checks" (every check
+// line: subject, id, what, value, limit, unit, rule, status, reason).
+std::string summary_json(const RunInfo& info, const design::RunStatistics& stats,
+                         const DesignResults& design = {});
 void write_summary_json(const std::filesystem::path& file, const RunInfo& info,
-                        const design::RunStatistics& stats);
+                        const design::RunStatistics& stats, const DesignResults& design = {});
 
 }  // namespace pierre::io
