@@ -1,6 +1,6 @@
 // The sub-commands of `pierre`. Each registers itself on the main CLI11 app and runs when it
 // was selected; adding one (e.g. `pierre check`) means one more make_*_command() and one more
-// line in main.cpp's list.
+// line in main.cpp's list. `pierre check` is `pierre run` with the check exit code.
 #pragma once
 
 #include <filesystem>
@@ -13,6 +13,7 @@ namespace pierre::app {
 
 // Exit codes (architecture.md): 0 ran, 1 a check failed, 2 bad input or usage, 3 internal.
 inline constexpr int kExitOk = 0;
+inline constexpr int kExitCheckFailed = 1;
 inline constexpr int kExitInput = 2;
 inline constexpr int kExitInternal = 3;
 
@@ -27,6 +28,7 @@ class Command {
 };
 
 std::unique_ptr<Command> make_run_command();
+std::unique_ptr<Command> make_check_command();  // `run` that exits 1 when a check fails
 std::unique_ptr<Command> make_validate_command();
 
 // The rules folder: `option` (--rules) when given, else $PIERRE_RULES, else the source tree's

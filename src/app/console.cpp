@@ -1,5 +1,6 @@
 #include "console.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -82,6 +83,48 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
   for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
   fmt::print(out, "\n\nWritten:\n");
   for (const auto& f : files) fmt::print(out, "  {}\n", f.string());
+}
+
+namespace {
+
+std::string g(double v, int width) {
+  if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
+  return fmt::format("{:>{}.4g}", v, width);
+}
+
+}  // namespace
+
+void print_design(std::FILE* out, const io::DesignResults& r) {
+  if (r.barriers.empty() && r.checks.empty()) return;
+  if (!r.barriers.empty()) {
+    fmt::print(out, "\nBarriers (ETAG 027, design-checks.md §1; characteristic values at the rule set's percentile)\n");
+    fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>9} {:>9} {:>6} {:>7}\n", "barrier",
+               "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req", "SEL_req",
+               "class", "h_i m");
+    for (const auto& d : r.barriers)
+      fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>6} {}\n", d.spec.name, d.spec.line,
+                 d.rules_name, g(d.v_k.value, 8), g(d.h_k.value, 8), g(d.v_d, 8), g(d.E_d_kJ, 9),
+                 g(d.MEL_req_kJ, 9), g(d.SEL_req_kJ, 9),
+                 d.energy_class ? std::to_string(d.energy_class->number) +
+                                      (d.energy_class->open_ended ? "+" : "")
+                                : std::string("-"),
+                 g(d.h_i, 7));
+  }
+  fmt::print(out, "\nChecks\n{:<18} {:<20} {:>10} {:>10} {:<4} {:<6} {}\n", "subject", "id", "value",
+             "limit", "unit", "status", "rule");
+  for (const auto& c : r.checks)
+    fmt::print(out, "{:<18} {:<20} {} {} {:<4} {:<6} {}\n", c.subject, c.id, g(c.value, 10),
+               g(c.limit, 10), c.unit, design::to_string(c.status), c.rule);
+  bool header = false;
+  for (const auto& c : r.checks) {
+    if (c.status != design::CheckStatus::fail && c.status != design::CheckStatus::warn) continue;
+    if (!header) fmt::print(out, "\n");
+    header = true;
+    fmt::print(out, "{} {} {}: {}\n", design::to_string(c.status), c.subject, c.id, c.reason);
+  }
+  const std::size_t fails = static_cast<std::size_t>(std::count_if(
+      r.checks.begin(), r.checks.end(), [](const auto& c) { return c.status == design::CheckStatus::fail; }));
+  fmt::print(out, "\n{} check line{}, {} FAIL\n", r.checks.size(), r.checks.size() == 1 ? "" : "s", fails);
 }
 
 }  // namespace pierre::app

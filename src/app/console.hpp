@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pierre/design/run_statistics.hpp"
+#include "pierre/io/result_writer.hpp"
 
 namespace pierre::app {
 
@@ -28,5 +29,9 @@ class ProgressBar {
 
 void print_results(std::FILE* out, const design::RunStatistics& stats, double seconds,
                    const std::vector<std::filesystem::path>& files);
+
+// The barriers' design values, then every check line as a table (subject, id, value, limit,
+// unit, status, rule), then the reason of each line that is not PASS or N/A.
+void print_design(std::FILE* out, const io::DesignResults& results);
 
 }  // namespace pierre::app

@@ -27,13 +27,14 @@ int main(int argc, char** argv) {
         "Example:\n"
         "  pierre validate examples/vaujany-2d/scenario.toml\n"
         "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42\n"
-        "Run `pierre <command> --help` for a command's options. Exit codes: 0 ran, 2 bad\n"
-        "input or usage, 3 internal error.");
+        "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
+        "Run `pierre <command> --help` for a command's options. Exit codes: 0 ran (check: every\n"
+        "check passed), 1 a check failed (check only), 2 bad input or usage, 3 internal error.");
 
     std::vector<std::unique_ptr<Command>> commands;
     commands.push_back(make_run_command());
+    commands.push_back(make_check_command());
     commands.push_back(make_validate_command());
-    // (`pierre check` joins this list.)
     std::vector<CLI::App*> subs;
     for (auto& c : commands) subs.push_back(c->add_to(app));
 

@@ -1,5 +1,7 @@
-// pierre run SCENARIO --out DIR: validate, simulate, write the results atomically, print the
-// table. Bad input is found before anything is created in DIR.
+// pierre run SCENARIO --out DIR: validate, simulate, compute the barriers, write the results
+// atomically, print the tables; exit 0 whatever the checks say.
+// pierre check SCENARIO --out DIR: the same, then exit 1 when a check line FAILs (WARN never
+// changes the exit code). Bad input is found before anything is created in DIR.
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "barriers.hpp"
 #include "commands.hpp"
 #include "console.hpp"
 #include "pierre/design/run_statistics.hpp"
@@ -25,8 +28,15 @@ namespace {
 
 class RunCommand final : public Command {
  public:
+  explicit RunCommand(bool check) : check_(check) {}
+
   CLI::App* add_to(CLI::App& parent) override {
-    CLI::App* c = parent.add_subcommand("run", "Simulate a scenario and write its results");
+    CLI::App* c =
+        check_ ? parent.add_subcommand(
+                     "check",
+                     "Simulate a scenario, design or check its barriers, write the results; exit "
+                     "1 when a check fails")
+               : parent.add_subcommand("run", "Simulate a scenario and write its results");
     c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
         ->required();
     c->add_option("--out,-o", out_, "Output folder (created when missing)")->required();
@@ -36,17 +46,30 @@ class RunCommand final : public Command {
         ->check(CLI::Range(0u, 4096u));
     throws_opt_ = c->add_option("--throws", throws_, "Throws per block and source (overrides simulation.throws)")
                       ->check(CLI::Range(1u, std::numeric_limits<std::uint32_t>::max()));
-    c->add_flag("--quiet,-q", quiet_, "No progress bar and no results table");
+    c->add_flag("--quiet,-q", quiet_,
+                check_ ? "No progress bar and no results table (the check lines are still printed)"
+                       : "No progress bar and no results table");
     c->add_flag("--impacts", impacts_, "Also write impacts.csv (every impact; large)");
     c->add_flag("--all-crossings", all_crossings_,
                 "Write every crossing of the observation lines to crossings.csv, not only the "
                 "first in the main direction (the statistics still use the first)");
-    c->add_option("--rules", rules_, "Rules folder holding materials.toml");
-    c->footer(
-        "Example:\n"
-        "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42 --threads 8\n"
-        "writes results/vaujany/{trajectories.csv, crossings.csv, summary.json}; with --impacts\n"
-        "also impacts.csv. Exit code 0 when it ran, 2 on bad input, 3 on an internal error.");
+    c->add_option("--rules", rules_,
+                  "Rules folder holding materials.toml and the barrier rule sets");
+    if (check_)
+      c->footer(
+          "Example:\n"
+          "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
+          "runs like `pierre run`, computes every [[barriers]] entry (design-checks.md §1), writes\n"
+          "summary.json with \"barriers\" and \"checks\", prints the check lines. Exit code 0 when\n"
+          "every check passes (WARN does not count), 1 when one FAILs, 2 on bad input, 3 on an\n"
+          "internal error.");
+    else
+      c->footer(
+          "Example:\n"
+          "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42 --threads 8\n"
+          "writes results/vaujany/{trajectories.csv, crossings.csv, summary.json}; with --impacts\n"
+          "also impacts.csv. Barriers are computed and printed too. Exit code 0 when it ran\n"
+          "(whatever the checks say: see `pierre check`), 2 on bad input, 3 on an internal error.");
     return c;
   }
 
@@ -88,6 +111,7 @@ class RunCommand final : public Command {
     files.close();
 
     const design::RunStatistics stats = design::run_statistics(sc.lines, files.samples());
+    const io::DesignResults design_results = compute_barriers(loaded, files.samples());
     io::RunInfo info;
     info.scenario_name = sc.name;
     info.scenario_file = loaded.file;
@@ -99,9 +123,11 @@ class RunCommand final : public Command {
     info.sources = sc.sources.size();
     info.threads = used;
     info.all_crossings = all_crossings_;
-    io::write_summary_json(folder->staged(io::kSummaryJson), info, stats);
+    io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
     const auto written = folder->commit({io::kImpactsCsv});
     if (!quiet_) print_results(stdout, stats, seconds, written);
+    if (!quiet_ || check_) print_design(stdout, design_results);
+    if (check_ && design::any_failure(design_results.checks)) return kExitCheckFailed;
     return kExitOk;
   }
 
@@ -110,6 +136,7 @@ class RunCommand final : public Command {
   std::int64_t seed_ = 0;  // signed, so that a negative seed is refused, not wrapped
   std::uint32_t throws_ = 1;
   unsigned threads_ = 0;
+  bool check_ = false;
   bool quiet_ = false, impacts_ = false, all_crossings_ = false;
   CLI::Option* seed_opt_ = nullptr;
   CLI::Option* throws_opt_ = nullptr;
@@ -117,7 +144,8 @@ class RunCommand final : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_run_command() { return std::make_unique<RunCommand>(); }
+std::unique_ptr<Command> make_run_command() { return std::make_unique<RunCommand>(false); }
+std::unique_ptr<Command> make_check_command() { return std::make_unique<RunCommand>(true); }
 
 std::filesystem::path rules_dir(const std::string& option) {
   if (!option.empty()) return option;

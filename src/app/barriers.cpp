@@ -1,0 +1,55 @@
+#include "barriers.hpp"
+
+#include <algorithm>
+
+namespace pierre::app {
+
+io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
+                                   const design::RunSamples& samples) {
+  io::DesignResults out;
+  const sim::Scenario& sc = loaded.scenario;
+  for (std::size_t i = 0; i < loaded.barriers.size(); ++i) {
+    const design::BarrierSpec& spec = loaded.barriers[i];
+    const auto it = std::find_if(sc.lines.begin(), sc.lines.end(),
+                                 [&](const sim::ObservationLine& l) { return l.name == spec.line; });
+    const auto line = static_cast<std::size_t>(it - sc.lines.begin());  // the reader checked it
+    design::BarrierSample s;
+    if (line < samples.lines().size()) {
+      const design::LineSamples& ls = samples.lines()[line];
+      s.speed = ls.speed;
+      s.height = ls.height;
+      s.energy = ls.translational_energy;
+      s.rotational_energy = ls.rotational_energy;
+    }
+    const std::uint64_t n = samples.trajectories();
+    s.not_reached = n >= s.speed.size() ? n - s.speed.size() : 0;
+    for (const model::Block& b : sc.blocks) {
+      s.block_volumes.push_back(b.volume());
+      s.block_diameters.push_back(b.diameter());
+      s.block_densities.push_back(b.density);
+    }
+    s.throws = sc.settings.throws;
+    const design::BarrierOutcome o = design::design_barrier(
+        spec, loaded.barrier_rules[i], loaded.barrier_classes[i], s, loaded.barrier_observed[i],
+        it == sc.lines.end() ? 0.0 : it->x,
+        design::barrier_bootstrap_seed(sc.settings.seed, i));
+    if (o.design) {
+      out.checks.insert(out.checks.end(), o.design->checks.begin(), o.design->checks.end());
+      out.barriers.push_back(*o.design);
+    } else {
+      design::CheckLine l;
+      l.subject = spec.name;
+      l.id = "reach";
+      l.what = "crossings of the line (first in the main direction)";
+      l.value = static_cast<double>(s.speed.size());
+      l.limit = loaded.barrier_rules[i].min_crossings;
+      l.rule = design::rule_reference(loaded.barrier_rules[i], "reach");
+      l.status = design::CheckStatus::fail;
+      l.reason = "no design: " + o.error;
+      out.checks.push_back(std::move(l));
+    }
+  }
+  return out;
+}
+
+}  // namespace pierre::app

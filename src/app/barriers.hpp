@@ -1,0 +1,16 @@
+// The barriers of a scenario (design-checks.md §1), computed from a finished run's samples at
+// their observation lines. Shared by `pierre run` and `pierre check`.
+#pragma once
+
+#include "pierre/design/run_statistics.hpp"
+#include "pierre/io/result_writer.hpp"
+#include "pierre/io/scenario_reader.hpp"
+
+namespace pierre::app {
+
+// Every barrier's design and check lines, in scenario order. A barrier that cannot be designed
+// (fewer than two crossings at its line, no fit) gets no design and a FAIL `reach` line that
+// says why: `pierre check` must not pass a barrier it could not check.
+io::DesignResults compute_barriers(const io::LoadedScenario& loaded, const design::RunSamples& samples);
+
+}  // namespace pierre::app
