@@ -1,0 +1,221 @@
+// Every check line of design-checks.md §1 passing and failing (or warning), built from a
+// design whose numbers are set by hand; and a design without a candidate gives only the
+// advisory lines.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "barrier_fixtures.hpp"
+#include "pierre/design/barrier_check.hpp"
+
+namespace {
+
+using namespace pierre;
+using design::CheckStatus;
+
+stats::KolmogorovSmirnovTest ks(double p) {
+  stats::KolmogorovSmirnovTest t;
+  t.statistic = 0.05;
+  t.p_value = t.p_value_stephens = p;
+  return t;
+}
+
+stats::BootstrapInterval ci(double estimate, double half_width) {
+  return {estimate, estimate - half_width, estimate + half_width, 0.9, 1000};
+}
+
+// A passing design: MEL_req 1500, SEL_req 1250, h_i 4.0, good fits, tight intervals, 400
+// crossings of 500 trajectories thrown 5 times each.
+design::BarrierDesign base() {
+  design::BarrierDesign d;
+  d.spec.name = "B";
+  d.spec.candidate = design::CandidateBarrier{};
+  d.MEL_req_kJ = 1500;
+  d.SEL_req_kJ = 1250;
+  d.h_i = 4.0;
+  d.candidate_mel_kJ = 2000;
+  d.candidate_sel_kJ = 1300;
+  d.spec.candidate->height = 4.5;
+  d.exceedance = {{"P(E > SEL_req)", 1250, "kJ", 0.004, 0.0, {}},
+                  {"P(E > MEL_req)", 1500, "kJ", 0.001, 0.0, {}},
+                  {"P(h > h_i)", 4.0, "m", 0.02, 0.01, {}},
+                  {"P(h > h_max,sim)", 6.0, "m", 0.001, 0.0, {}}};
+  for (design::QuantityFit* q : {&d.speed, &d.height, &d.energy}) {
+    q->weibull = stats::WeibullFit{2, 10, 400, 0};
+    q->weibull_ks = ks(0.5);
+  }
+  d.v_k.interval = ci(20, 0.4);
+  d.h_k.interval = ci(3, 0.06);
+  d.E_d_interval = ci(1250, 30);
+  d.h_i_interval = ci(4, 0.06);
+  d.crossings = 400;
+  d.not_reached = 100;
+  d.throws = 5;
+  return d;
+}
+
+design::BarrierRuleSet rules() {
+  auto r = test::thesis_2015();  // design_on both, no γd
+  r.clauses["height.interception"] = "§4.7";
+  return r;
+}
+
+const design::CheckLine& line(const std::vector<design::CheckLine>& v, const std::string& id) {
+  const auto it = std::find_if(v.begin(), v.end(), [&](const auto& l) { return l.id == id; });
+  if (it == v.end()) throw std::runtime_error("no line " + id);
+  return *it;
+}
+
+CheckStatus status(const design::BarrierDesign& d, const design::BarrierRuleSet& r,
+                   const std::string& id) {
+  return line(design::barrier_check_lines(d, r), id).status;
+}
+
+TEST(BarrierCheckLines, AllElevenLinesInOrderWithSubjectAndRule) {
+  const auto lines = design::barrier_check_lines(base(), rules());
+  const std::vector<std::string> ids = {"energy.mel", "energy.sel", "height.interception",
+                                        "elongation", "exceedance.energy", "exceedance.height",
+                                        "fit.v", "fit.h", "fit.E", "sample.size", "reach"};
+  ASSERT_EQ(lines.size(), ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    EXPECT_EQ(lines[i].id, ids[i]);
+    EXPECT_EQ(lines[i].subject, "B");
+    EXPECT_FALSE(lines[i].reason.empty()) << ids[i];
+  }
+  EXPECT_EQ(line(lines, "height.interception").rule, "thesis-2015 §4.7");
+  EXPECT_EQ(line(lines, "reach").rule, "thesis-2015");
+  EXPECT_FALSE(design::any_failure(lines));
+}
+
+TEST(BarrierCheckLines, EnergyMelPassFailAndNotApplicable) {
+  auto d = base();
+  EXPECT_EQ(status(d, rules(), "energy.mel"), CheckStatus::pass);
+  d.candidate_mel_kJ = 1500;  // equal: meets it
+  EXPECT_EQ(status(d, rules(), "energy.mel"), CheckStatus::pass);
+  d.candidate_mel_kJ = 1499;
+  const auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::fail);
+  EXPECT_DOUBLE_EQ(line(lines, "energy.mel").value, 1499);
+  EXPECT_DOUBLE_EQ(line(lines, "energy.mel").limit, 1500);
+  EXPECT_EQ(line(lines, "energy.mel").unit, "kJ");
+  EXPECT_TRUE(design::any_failure(lines));
+  auto sel_rules = rules();
+  sel_rules.design_on = design::DesignOn::sel;
+  EXPECT_EQ(status(d, sel_rules, "energy.mel"), CheckStatus::not_applicable);
+}
+
+TEST(BarrierCheckLines, EnergySelPassFailAndNotApplicable) {
+  auto d = base();
+  EXPECT_EQ(status(d, rules(), "energy.sel"), CheckStatus::pass);
+  d.candidate_sel_kJ = 1000;
+  EXPECT_EQ(status(d, rules(), "energy.sel"), CheckStatus::fail);
+  auto mel_rules = rules();
+  mel_rules.design_on = design::DesignOn::mel;
+  EXPECT_EQ(status(d, mel_rules, "energy.sel"), CheckStatus::not_applicable);
+  d.candidate_sel_kJ = std::nan("");  // declares no SEL
+  EXPECT_EQ(status(d, rules(), "energy.sel"), CheckStatus::not_applicable);
+}
+
+TEST(BarrierCheckLines, InterceptionHeightPassFail) {
+  auto d = base();
+  EXPECT_EQ(status(d, rules(), "height.interception"), CheckStatus::pass);
+  d.spec.candidate->height = 3.99;
+  EXPECT_EQ(status(d, rules(), "height.interception"), CheckStatus::fail);
+  d.spec.candidate->height.reset();
+  EXPECT_EQ(status(d, rules(), "height.interception"), CheckStatus::not_applicable);
+}
+
+TEST(BarrierCheckLines, ElongationPassFailAndNotApplicable) {
+  auto d = base();
+  EXPECT_EQ(status(d, rules(), "elongation"), CheckStatus::not_applicable);  // no γd in thesis-2015
+  auto r = test::peila_ronco_2009();  // MEL design, γd,MEL = 1.3
+  d.spec.candidate->elongation_mel = 5.0;
+  EXPECT_EQ(status(d, r, "elongation"), CheckStatus::not_applicable);  // no distance given
+  d.spec.candidate->distance_to_object = 6.6;
+  auto lines = design::barrier_check_lines(d, r);
+  EXPECT_EQ(line(lines, "elongation").status, CheckStatus::pass);
+  EXPECT_DOUBLE_EQ(line(lines, "elongation").limit, 1.3 * 5.0);
+  d.spec.candidate->distance_to_object = 6.4;
+  EXPECT_EQ(status(d, r, "elongation"), CheckStatus::fail);
+  // A SEL design uses γd,SEL = 1.5 with the SEL test's elongation.
+  r.design_on = design::DesignOn::sel;
+  d.spec.candidate->elongation_sel = 4.0;
+  lines = design::barrier_check_lines(d, r);
+  EXPECT_DOUBLE_EQ(line(lines, "elongation").limit, 1.5 * 4.0);
+  EXPECT_EQ(line(lines, "elongation").status, CheckStatus::pass);
+}
+
+TEST(BarrierCheckLines, ExceedancePassFailAndNotApplicable) {
+  auto d = base();
+  EXPECT_EQ(status(d, rules(), "exceedance.energy"), CheckStatus::not_applicable);
+  EXPECT_EQ(status(d, rules(), "exceedance.height"), CheckStatus::not_applicable);
+  d.spec.acceptable_energy_exceedance = 0.002;  // P(E > MEL_req) = 0.001
+  d.spec.acceptable_height_exceedance = 0.05;   // P(h > h_i) = 0.02
+  auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "exceedance.energy").status, CheckStatus::pass);
+  EXPECT_DOUBLE_EQ(line(lines, "exceedance.energy").value, 0.001);  // the MEL row, not the SEL one
+  EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::pass);
+  EXPECT_DOUBLE_EQ(line(lines, "exceedance.height").value, 0.02);
+  d.spec.acceptable_energy_exceedance = 0.0005;
+  d.spec.acceptable_height_exceedance = 0.01;
+  lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "exceedance.energy").status, CheckStatus::fail);
+  EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::fail);
+}
+
+TEST(BarrierCheckLines, FitLinesWarnBelowTheirPValue) {
+  auto d = base();
+  EXPECT_EQ(status(d, rules(), "fit.v"), CheckStatus::pass);
+  d.speed.weibull_ks = ks(0.049);
+  d.height.weibull_ks = ks(0.01);
+  d.energy.weibull_ks.reset();
+  d.energy.weibull.reset();
+  const auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "fit.v").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "fit.h").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "fit.E").status, CheckStatus::warn);
+  EXPECT_DOUBLE_EQ(line(lines, "fit.v").limit, 0.05);
+  EXPECT_FALSE(design::any_failure(lines));  // WARN never fails
+}
+
+TEST(BarrierCheckLines, SampleSizeWarnsWithTheThrowsNeeded) {
+  auto d = base();
+  EXPECT_EQ(status(d, rules(), "sample.size"), CheckStatus::pass);  // worst 2.5 % (E_d 30/1250 = 2.4 %)
+  d.E_d_interval = ci(1250, 125);  // 10 %: twice the 5 % tolerance -> 4 × the trajectories
+  const auto lines = design::barrier_check_lines(d, rules());
+  const auto& l = line(lines, "sample.size");
+  EXPECT_EQ(l.status, CheckStatus::warn);
+  EXPECT_NEAR(l.value, 0.10, 1e-12);
+  EXPECT_DOUBLE_EQ(l.limit, 0.05);
+  EXPECT_NE(l.what.find("E_d"), std::string::npos) << l.what;
+  EXPECT_NE(l.reason.find("2000 trajectories"), std::string::npos) << l.reason;  // 500 × 4
+  EXPECT_NE(l.reason.find("throws = 20"), std::string::npos) << l.reason;         // 5 × 4
+  d.h_k.interval.reset();
+  EXPECT_EQ(status(d, rules(), "sample.size"), CheckStatus::warn);
+}
+
+TEST(BarrierCheckLines, ReachWarnsBelowThirty) {
+  auto d = base();
+  d.crossings = 30;
+  EXPECT_EQ(status(d, rules(), "reach"), CheckStatus::pass);
+  d.crossings = 29;
+  const auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "reach").status, CheckStatus::warn);
+  EXPECT_DOUBLE_EQ(line(lines, "reach").value, 29);
+  EXPECT_DOUBLE_EQ(line(lines, "reach").limit, 30);
+}
+
+TEST(BarrierCheckLines, WithoutCandidateOnlyTheAdvisoryLines) {
+  auto d = base();
+  d.spec.candidate.reset();
+  d.spec.acceptable_height_exceedance = 1e-6;  // would fail with a candidate
+  const auto lines = design::barrier_check_lines(d, rules());
+  std::vector<std::string> ids;
+  for (const auto& l : lines) ids.push_back(l.id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"fit.v", "fit.h", "fit.E", "sample.size", "reach"}));
+  EXPECT_FALSE(design::any_failure(lines));
+}
+
+}  // namespace

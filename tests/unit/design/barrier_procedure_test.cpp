@@ -1,0 +1,249 @@
+// design_barrier end to end on samples drawn from known Weibull distributions: the fits and
+// characteristic values recover the truth within their sampling error, the design follows
+// from them by the arithmetic of design_values, the design-block rules, the default free
+// board, observed data, failure without crossings, and the bootstrap's determinism.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "barrier_fixtures.hpp"
+#include "pierre/design/barrier_check.hpp"
+#include "pierre/stats/percentile.hpp"
+
+namespace {
+
+using namespace pierre;
+
+constexpr std::size_t kN = 2000;
+constexpr double kSpeedK = 2.5, kSpeedLambda = 15.0;   // m/s
+constexpr double kHeightK = 1.4, kHeightLambda = 1.6;  // m
+
+design::BarrierSample sample(std::size_t n = kN, std::uint64_t seed = 7) {
+  design::BarrierSample s;
+  s.speed = test::weibull_sample(n, kSpeedK, kSpeedLambda, seed);
+  s.height = test::weibull_sample(n, kHeightK, kHeightLambda, seed + 1);
+  for (double v : s.speed) s.energy.push_back(0.5 * 2500 * v * v);  // 2.5 t blocks, J
+  s.rotational_energy.assign(n, 1000.0);
+  s.not_reached = 100;
+  s.block_volumes = {0.5, 1.0, 1.5, 2.0};
+  s.block_densities = {2600, 2650, 2700, 2800};
+  s.block_diameters = {1.0, 1.2, 1.4, 1.6};
+  s.throws = 10;
+  return s;
+}
+
+design::BarrierSpec spec() {
+  static const std::string name = "B", line = "L";  // (GCC 12 -Wrestrict false positive on literals)
+  design::BarrierSpec b;
+  b.name = name;
+  b.line = line;
+  b.design_block.kind = design::DesignBlock::Kind::given;
+  b.design_block.volume = 1.26;
+  b.design_block.density = 2800;
+  b.free_board_diameter = 1.2;
+  return b;
+}
+
+// Weibull quantile x_p = λ (-ln(1-p))^(1/k) and the asymptotic standard deviation of ln x̂_p
+// for the ML estimate (log-Weibull = Gumbel with b = 1/k: Var = b²/n (1.1087 + 2·0.2570 w +
+// 0.6079 w²), w = ln(-ln(1-p)); Lawless 2003, Table 4.5.1 constants).
+double quantile(double k, double lambda, double p) { return lambda * std::pow(-std::log(1 - p), 1 / k); }
+double log_quantile_sd(double k, double p, std::size_t n) {
+  const double w = std::log(-std::log(1 - p)), b = 1 / k;
+  return b * std::sqrt((1.1087 + 2 * 0.2570 * w + 0.6079 * w * w) / static_cast<double>(n));
+}
+
+TEST(BarrierProcedure, FitsRecoverKnownWeibullsWithinSamplingError) {
+  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(),
+                                          std::nullopt, 100.0, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const auto& d = *out.design;
+  ASSERT_TRUE(d.speed.weibull && d.height.weibull && d.energy.weibull);
+  // Shape: sd(k̂)/k ≈ sqrt(0.6079/n) (Lawless): within 4 sd.
+  const double rel_k = 4 * std::sqrt(0.6079 / kN);
+  EXPECT_NEAR(d.speed.weibull->shape, kSpeedK, rel_k * kSpeedK);
+  EXPECT_NEAR(d.height.weibull->shape, kHeightK, rel_k * kHeightK);
+  // E = ½ m v² of a Weibull(k, λ) speed is Weibull(k/2, ½ m λ²).
+  EXPECT_NEAR(d.energy.weibull->shape, kSpeedK / 2, rel_k * kSpeedK / 2);
+  EXPECT_NEAR(d.energy.weibull->scale, 0.5 * 2500 * kSpeedLambda * kSpeedLambda / 1000,
+              4 * 0.05 * 0.5 * 2500 * kSpeedLambda * kSpeedLambda / 1000);
+  // v_k, h_k: the Weibull P95 within 4 sd of the truth.
+  const double vq = quantile(kSpeedK, kSpeedLambda, 0.95), hq = quantile(kHeightK, kHeightLambda, 0.95);
+  EXPECT_NEAR(std::log(d.v_k.weibull), std::log(vq), 4 * log_quantile_sd(kSpeedK, 0.95, kN));
+  EXPECT_NEAR(std::log(d.h_k.weibull), std::log(hq), 4 * log_quantile_sd(kHeightK, 0.95, kN));
+  EXPECT_DOUBLE_EQ(d.v_k.value, d.v_k.weibull);  // governing weibull
+  const auto s = sample();
+  EXPECT_DOUBLE_EQ(d.v_k.empirical, stats::percentile(s.speed, 95));
+  // The samples are Weibull: the KS lines pass, and the log-normal is fitted beside.
+  EXPECT_TRUE(d.speed.lognormal && d.speed.lognormal_ks);
+  for (const auto& l : d.checks)
+    if (l.id == "fit.v" || l.id == "fit.h" || l.id == "fit.E") {
+      EXPECT_EQ(l.status, design::CheckStatus::pass) << l.id;
+    }
+  EXPECT_EQ(d.crossings, kN);
+  EXPECT_EQ(d.not_reached, 100u);
+  EXPECT_NEAR(d.rotational_energy.mean, 1.0, 1e-12);  // kJ
+}
+
+TEST(BarrierProcedure, DesignFollowsFromTheCharacteristicValues) {
+  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(),
+                                          std::nullopt, 100.0, 1);
+  ASSERT_TRUE(out.design);
+  const auto& d = *out.design;
+  design::DesignInputs in;
+  in.v_k = d.v_k.value;
+  in.h_k = d.h_k.value;
+  in.volume = 1.26;
+  in.density = 2800;
+  in.free_board_diameter = 1.2;
+  const auto v = design::design_values(test::thesis_2015(), test::etag027(), in);
+  ASSERT_TRUE(v.ok());
+  EXPECT_DOUBLE_EQ(d.E_d_kJ, v->E_d_kJ);
+  EXPECT_DOUBLE_EQ(d.MEL_req_kJ, v->MEL_req_kJ);
+  EXPECT_DOUBLE_EQ(d.h_i, v->h_i);
+  EXPECT_EQ(d.energy_class->number, v->energy_class->number);
+  EXPECT_DOUBLE_EQ(d.chainage, 100.0);
+  // Exceedance rows: simulated Weibull and empirical, no observed column.
+  ASSERT_EQ(d.exceedance.size(), 4u);
+  EXPECT_DOUBLE_EQ(d.exceedance[2].simulated_weibull,
+                   std::exp(-std::pow(d.h_i / d.height.weibull->scale, d.height.weibull->shape)));
+  const auto s = sample();
+  const double above = static_cast<double>(std::count_if(s.height.begin(), s.height.end(),
+                                                          [&](double h) { return h > d.h_i; }));
+  EXPECT_DOUBLE_EQ(d.exceedance[2].simulated_empirical, above / kN);
+  EXPECT_DOUBLE_EQ(d.exceedance[3].threshold, *std::max_element(s.height.begin(), s.height.end()));
+  EXPECT_DOUBLE_EQ(d.exceedance[3].simulated_empirical, 0.0);
+  EXPECT_FALSE(d.exceedance[0].observed_weibull);
+}
+
+TEST(BarrierProcedure, GoverningEmpiricalAndLarger) {
+  auto r = test::thesis_2015();
+  r.governing = design::Governing::empirical;
+  const auto e = design::design_barrier(spec(), r, test::etag027(), sample(), std::nullopt, 0, 1);
+  ASSERT_TRUE(e.design);
+  EXPECT_DOUBLE_EQ(e.design->v_k.value, e.design->v_k.empirical);
+  EXPECT_DOUBLE_EQ(e.design->h_k.value, e.design->h_k.empirical);
+  r.governing = design::Governing::larger;
+  const auto l = design::design_barrier(spec(), r, test::etag027(), sample(), std::nullopt, 0, 1);
+  ASSERT_TRUE(l.design);
+  EXPECT_DOUBLE_EQ(l.design->v_k.value, std::max(l.design->v_k.weibull, l.design->v_k.empirical));
+  EXPECT_DOUBLE_EQ(l.design->h_k.value, std::max(l.design->h_k.weibull, l.design->h_k.empirical));
+}
+
+TEST(BarrierProcedure, DesignBlockRulesAndDefaultFreeBoard) {
+  auto b = spec();
+  b.free_board_diameter.reset();
+  b.design_block = {};  // largest
+  auto out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design);
+  EXPECT_DOUBLE_EQ(out.design->design_volume, 2.0);
+  EXPECT_DOUBLE_EQ(out.design->design_density, 2800);  // the largest block's own
+  EXPECT_DOUBLE_EQ(out.design->free_board_diameter, 1.3);  // mean of 1.0, 1.2, 1.4, 1.6
+  EXPECT_DOUBLE_EQ(out.design->free_board, 0.65);
+  EXPECT_DOUBLE_EQ(out.design->m_d, 2.0 * 2800 * 1.05);
+  b.design_block.kind = design::DesignBlock::Kind::percentile;
+  b.design_block.percentile = 50;
+  out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design);
+  EXPECT_DOUBLE_EQ(out.design->design_volume, 1.25);     // type-7 median of 0.5, 1, 1.5, 2
+  EXPECT_DOUBLE_EQ(out.design->design_density, 2687.5);  // mean density
+  b.design_block.density = 2500;
+  out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
+  EXPECT_DOUBLE_EQ(out.design->design_density, 2500);
+}
+
+TEST(BarrierProcedure, ObservedDataGiveTheObservedColumn) {
+  design::ObservedSample o;
+  o.height = test::weibull_sample(80, 1.37, 1.55, 99);
+  o.energy = test::weibull_sample(80, 1.72, 258.59e3, 98);  // J
+  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(), o, 0, 1);
+  ASSERT_TRUE(out.design);
+  const auto& d = *out.design;
+  ASSERT_TRUE(d.observed_height && d.observed_energy);
+  EXPECT_FALSE(d.observed_speed);
+  ASSERT_TRUE(d.exceedance[2].observed_weibull);
+  EXPECT_DOUBLE_EQ(*d.exceedance[2].observed_weibull,
+                   std::exp(-std::pow(d.h_i / d.observed_height->weibull->scale,
+                                      d.observed_height->weibull->shape)));
+  // Observed energies are fitted in kJ, as the thresholds are.
+  EXPECT_NEAR(d.observed_energy->weibull->scale, 258.59, 258.59 * 0.25);
+  ASSERT_TRUE(d.exceedance[1].observed_weibull);
+  EXPECT_LT(*d.exceedance[1].observed_weibull, *d.exceedance[0].observed_weibull);  // MEL > SEL
+}
+
+TEST(BarrierProcedure, CandidateCapacitiesFromClassOrDeclared) {
+  auto b = spec();
+  b.candidate = design::CandidateBarrier{};
+  b.candidate->energy_class = 5;
+  b.candidate->height = 6;
+  b.candidate->residual_height = 2.5;
+  auto out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design);
+  EXPECT_DOUBLE_EQ(out.design->candidate_mel_kJ, 3000);
+  EXPECT_DOUBLE_EQ(out.design->candidate_sel_kJ, 1000);
+  EXPECT_EQ(out.design->residual_height_category, "B");  // 2.5 / 6 = 42 %
+  EXPECT_EQ(out.design->checks.size(), 11u);
+  b.candidate->mel_kJ = 3300;  // a declared MEL overrides the class's
+  out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
+  EXPECT_DOUBLE_EQ(out.design->candidate_mel_kJ, 3300);
+  EXPECT_DOUBLE_EQ(out.design->candidate_sel_kJ, 1000);
+}
+
+TEST(BarrierProcedure, NoDesignWithoutCrossingsOrWithAMissingAnswer) {
+  auto s = sample();
+  s.speed.resize(1);
+  s.height.resize(1);
+  s.energy.resize(1);
+  auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 1);
+  EXPECT_FALSE(out.design);
+  EXPECT_NE(out.error.find("fewer than two"), std::string::npos) << out.error;
+  out = design::design_barrier(spec(), test::peila_ronco_2009(), test::etag027(), sample(), std::nullopt, 0, 1);
+  EXPECT_FALSE(out.design);
+  EXPECT_NE(out.error.find("trajectory"), std::string::npos) << out.error;
+}
+
+TEST(BarrierProcedure, BootstrapIsDeterministicPerSeedAndCoversTheEstimate) {
+  const auto s = sample(400);
+  const auto a = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 42);
+  const auto b = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 42);
+  const auto c = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 43);
+  ASSERT_TRUE(a.design && b.design && c.design);
+  const auto& ia = *a.design->v_k.interval;
+  EXPECT_EQ(ia.resamples, design::kBarrierBootstrapResamples);
+  EXPECT_DOUBLE_EQ(ia.confidence, 0.90);
+  EXPECT_EQ(ia.lower, b.design->v_k.interval->lower);
+  EXPECT_EQ(ia.upper, b.design->v_k.interval->upper);
+  EXPECT_EQ(a.design->h_i_interval->lower, b.design->h_i_interval->lower);
+  EXPECT_TRUE(ia.lower != c.design->v_k.interval->lower || ia.upper != c.design->v_k.interval->upper);
+  EXPECT_LT(ia.lower, a.design->v_k.value);
+  EXPECT_GT(ia.upper, a.design->v_k.value);
+  // E_d and h_i intervals are the images of the v_k and h_k ones.
+  const auto& d = *a.design;
+  const double gF = d.gamma_F.value;
+  // (up to the type-7 interpolation between two neighbouring replicates, which a quadratic
+  // map does not commute with exactly)
+  EXPECT_NEAR(d.E_d_interval->lower, 0.5 * d.m_d * std::pow(ia.lower * gF, 2) / 1000, 1e-5 * d.E_d_kJ);
+  EXPECT_NEAR(d.h_i_interval->upper, d.h_k.interval->upper * d.gamma_h.value + d.free_board, 1e-12);
+  // Seeds of different barriers differ; the same barrier of the same run has the same one.
+  EXPECT_NE(design::barrier_bootstrap_seed(5, 0), design::barrier_bootstrap_seed(5, 1));
+  EXPECT_EQ(design::barrier_bootstrap_seed(5, 1), design::barrier_bootstrap_seed(5, 1));
+  EXPECT_NE(design::barrier_bootstrap_seed(5, 0), design::barrier_bootstrap_seed(6, 0));
+}
+
+TEST(BarrierProcedure, SmallSampleWarnsOnSampleSizeAndReach) {
+  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(20),
+                                          std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  for (const auto& l : out.design->checks) {
+    if (l.id == "reach") {
+      EXPECT_EQ(l.status, design::CheckStatus::warn);
+    }
+    if (l.id == "sample.size") {
+      EXPECT_EQ(l.status, design::CheckStatus::warn) << l.reason;
+    }
+  }
+}
+
+}  // namespace
