@@ -1,0 +1,211 @@
+// [[barriers]] in a scenario (docs/scenario-format.md): every field read, defaults, and every
+// input error naming the file, the line, the field and the value found.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pierre/io/scenario_reader.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using namespace pierre;
+using io::InputError;
+using test::TempDir;
+
+const std::filesystem::path kRules = PIERRE_SOURCE_DIR "/rules";
+
+// The base scenario (26 lines, observation line "L"), a blank line 27, the barrier from line 28.
+std::string with_barrier(const std::string& barrier) { return test::base() + "\n" + barrier; }
+
+const char* kFull = R"([[barriers]]
+name = "B1"
+line = "L"
+rules = "peila-ronco-2009"
+design_block = { percentile = 90, density = 2700.0 }
+free_board_diameter = 1.1
+data_quality = { trajectory = "literature", topography = "high", block_volume = "estimated" }
+acceptable_energy_exceedance = 0.001
+acceptable_height_exceedance = 0.05
+observed = "obs.csv"
+
+[barriers.candidate]
+energy_class = 5
+mel = 3200.0
+height = 5.0
+elongation_mel = 6.0
+elongation_sel = 4.0
+distance_to_object = 9.0
+residual_height = 2.0
+
+[[barriers]]
+name = "B2"
+line = "L"
+rules = "thesis-2015"
+)";
+
+TEST(BarrierReader, ReadsEveryField) {
+  TempDir dir;
+  dir.write("obs.csv", "speed_m_s,height_m,energy_kJ\n10.5,1.2,300\n,2.0,\n12.0,,410.5\n");
+  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(kFull)), kRules);
+  ASSERT_EQ(l.barriers.size(), 2u);
+  ASSERT_EQ(l.barrier_rules.size(), 2u);
+  ASSERT_EQ(l.barrier_classes.size(), 2u);
+  ASSERT_EQ(l.barrier_observed.size(), 2u);
+  const design::BarrierSpec& b = l.barriers[0];
+  EXPECT_EQ(b.name, "B1");
+  EXPECT_EQ(b.line, "L");
+  EXPECT_EQ(b.rules, "peila-ronco-2009");
+  EXPECT_EQ(b.design_block.kind, design::DesignBlock::Kind::percentile);
+  EXPECT_DOUBLE_EQ(b.design_block.percentile, 90);
+  EXPECT_DOUBLE_EQ(b.design_block.density, 2700);
+  EXPECT_DOUBLE_EQ(*b.free_board_diameter, 1.1);
+  EXPECT_EQ(b.data_quality.at("trajectory"), "literature");
+  EXPECT_EQ(b.data_quality.at("block_volume"), "estimated");
+  EXPECT_DOUBLE_EQ(*b.acceptable_energy_exceedance, 0.001);
+  EXPECT_DOUBLE_EQ(*b.acceptable_height_exceedance, 0.05);
+  ASSERT_TRUE(b.candidate);
+  EXPECT_EQ(*b.candidate->energy_class, 5);
+  EXPECT_DOUBLE_EQ(*b.candidate->mel_kJ, 3200);
+  EXPECT_FALSE(b.candidate->sel_kJ);
+  EXPECT_DOUBLE_EQ(*b.candidate->height, 5.0);
+  EXPECT_DOUBLE_EQ(*b.candidate->elongation_mel, 6.0);
+  EXPECT_DOUBLE_EQ(*b.candidate->elongation_sel, 4.0);
+  EXPECT_DOUBLE_EQ(*b.candidate->distance_to_object, 9.0);
+  EXPECT_DOUBLE_EQ(*b.candidate->residual_height, 2.0);
+  EXPECT_EQ(b.observed_file, "obs.csv");
+  ASSERT_TRUE(l.barrier_observed[0]);
+  EXPECT_EQ(l.barrier_observed[0]->speed, (std::vector<double>{10.5, 12.0}));
+  EXPECT_EQ(l.barrier_observed[0]->height, (std::vector<double>{1.2, 2.0}));
+  EXPECT_EQ(l.barrier_observed[0]->energy, (std::vector<double>{300e3, 410.5e3}));  // J
+  EXPECT_EQ(l.barrier_rules[0].name, "peila-ronco-2009");
+  EXPECT_EQ(l.barrier_classes[0].classes.size(), 8u);
+  // The second: defaults.
+  const design::BarrierSpec& c = l.barriers[1];
+  EXPECT_EQ(l.barrier_rules[1].name, "thesis-2015");
+  EXPECT_EQ(c.design_block.kind, design::DesignBlock::Kind::largest);
+  EXPECT_FALSE(c.free_board_diameter);
+  EXPECT_FALSE(c.candidate);
+  EXPECT_TRUE(c.data_quality.empty());
+  EXPECT_FALSE(l.barrier_observed[1]);
+}
+
+TEST(BarrierReader, DefaultRuleSetIsPeilaRonco) {
+  TempDir dir;
+  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(R"([[barriers]]
+name = "B"
+line = "L"
+design_block = { volume = 1.26, density = 2800 }
+data_quality = { trajectory = "back-analysed", topography = "low", block_volume = "surveyed" }
+)")), kRules);
+  EXPECT_EQ(l.barriers[0].rules, "peila-ronco-2009");
+  EXPECT_EQ(l.barrier_rules[0].name, "peila-ronco-2009");
+  EXPECT_EQ(l.barriers[0].design_block.kind, design::DesignBlock::Kind::given);
+  EXPECT_DOUBLE_EQ(l.barriers[0].design_block.volume, 1.26);
+}
+
+TEST(BarrierReader, NoBarriersNoVectors) {
+  TempDir dir;
+  const auto l = io::load_scenario(dir.write("s.toml", test::base()), kRules);
+  EXPECT_TRUE(l.barriers.empty());
+  EXPECT_TRUE(l.barrier_rules.empty());
+}
+
+struct Case {
+  std::string name;
+  std::string barrier;  // from line 28
+  std::vector<std::pair<std::string, std::string>> files;
+  std::string file;  // named by the error ("" = the scenario)
+  long line;
+  std::string field, found, expected;  // found and expected: substrings
+};
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+class BarrierError : public ::testing::TestWithParam<Case> {};
+
+TEST_P(BarrierError, NamesFileLineFieldFoundExpected) {
+  const Case& c = GetParam();
+  TempDir dir;
+  const auto s = dir.write("s.toml", with_barrier(c.barrier));
+  for (const auto& [n, t] : c.files) dir.write(n, t);
+  try {
+    (void)io::load_scenario(s, kRules);
+    FAIL() << "no InputError for " << c.name;
+  } catch (const InputError& e) {
+    SCOPED_TRACE(e.what());
+    EXPECT_EQ(e.file(), c.file.empty() ? s : dir.path() / c.file);
+    EXPECT_EQ(e.line(), c.line);
+    EXPECT_EQ(e.field(), c.field);
+    EXPECT_NE(e.found().find(c.found), std::string::npos) << "found: " << e.found();
+    EXPECT_NE(e.expected().find(c.expected), std::string::npos) << "expected: " << e.expected();
+  }
+}
+
+const std::string kHead = "[[barriers]]\nname = \"B\"\nline = \"L\"\n";           // lines 28-30
+const std::string kThesis = kHead + "rules = \"thesis-2015\"\n";                     // line 31
+const std::string kPR = kHead + "data_quality = { trajectory = \"literature\", topography = \"low\", block_volume = \"surveyed\" }\n";  // 31
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BarrierError,
+    ::testing::Values(
+        Case{"unknown_line", "[[barriers]]\nname = \"B\"\nline = \"Screen 9\"\n", {}, "", 30,
+             "barriers[0].line", "\"Screen 9\"", "\"L\""},
+        Case{"no_name", "[[barriers]]\nline = \"L\"\n", {}, "", 28, "barriers[0].name", "nothing", "name"},
+        Case{"duplicate_name", kThesis + "[[barriers]]\nname = \"B\"\nline = \"L\"\nrules = \"thesis-2015\"\n", {}, "", 33,
+             "barriers[1].name", "\"B\"", "not used by another barrier"},
+        Case{"unknown_key", kThesis + "heigth = 3.0\n", {}, "", 32, "barriers[0].heigth", "unknown key", "design_block"},
+        Case{"unknown_rules", kHead + "rules = \"etag-2099\"\n", {}, "", 31, "barriers[0].rules",
+             "\"etag-2099\"", "thesis-2015"},
+        Case{"rules_path_missing", kHead + "rules = \"nothere.toml\"\n", {}, "", 31, "barriers[0].rules",
+             "\"nothere.toml\"", "path"},
+        Case{"rules_file_broken", kHead + "rules = \"r.toml\"\n",
+             {{"r.toml", "[rule_set]\nkind = \"barrier\"\ntitle = 3\n"}}, "r.toml", 3, "rule_set.title", "3", "string"},
+        Case{"missing_answer", kHead + "data_quality = { trajectory = \"literature\", topography = \"low\" }\n", {}, "", 31,
+             "barriers[0].data_quality.block_volume", "nothing", "\"surveyed\""},
+        Case{"no_data_quality", kHead, {}, "", 28, "barriers[0].data_quality.block_volume", "nothing",
+             "\"surveyed\""},
+        Case{"wrong_answer", kHead + "data_quality = { trajectory = \"guess\", topography = \"low\", block_volume = \"surveyed\" }\n", {}, "", 31,
+             "barriers[0].data_quality.trajectory", "\"guess\"", "\"back-analysed\" or \"literature\""},
+        Case{"unasked_question", kThesis + "data_quality = { trajectory = \"literature\" }\n", {}, "", 32,
+             "barriers[0].data_quality.trajectory", "does not ask", "asks none"},
+        Case{"design_block_word", kThesis + "design_block = \"biggest\"\n", {}, "", 32, "barriers[0].design_block",
+             "\"biggest\"", "largest"},
+        Case{"design_block_both", kThesis + "design_block = { percentile = 95, volume = 1.0 }\n", {}, "", 32,
+             "barriers[0].design_block", "both", "largest"},
+        Case{"design_block_no_density", kThesis + "design_block = { volume = 1.0 }\n", {}, "", 32,
+             "barriers[0].design_block.density", "nothing", "density"},
+        Case{"design_block_percentile", kThesis + "design_block = { percentile = 0 }\n", {}, "", 32,
+             "barriers[0].design_block.percentile", "0", "(0, 100]"},
+        Case{"free_board_negative", kThesis + "free_board_diameter = -1.0\n", {}, "", 32,
+             "barriers[0].free_board_diameter", "-1.0", "> 0"},
+        Case{"class_unknown", kThesis + "[barriers.candidate]\nenergy_class = 9\n", {}, "", 33,
+             "barriers[0].candidate.energy_class", "9", "0, 1, 2, 3, 4, 5, 6, 7"},
+        Case{"class_open_ended", kThesis + "[barriers.candidate]\nenergy_class = 7\nmel = 6000.0\n", {}, "", 33,
+             "barriers[0].candidate.energy_class", "7", "mel and sel"},
+        Case{"class_float", kThesis + "[barriers.candidate]\nenergy_class = 5.0\n", {}, "", 33,
+             "barriers[0].candidate.energy_class", "5.0", "integer"},
+        Case{"candidate_empty", kThesis + "[barriers.candidate]\ndistance_to_object = 5.0\n", {}, "", 32,
+             "barriers[0].candidate.energy_class", "nothing to check", "height"},
+        Case{"candidate_height", kThesis + "[barriers.candidate]\nheight = 0\n", {}, "", 33,
+             "barriers[0].candidate.height", "0", "> 0"},
+        Case{"residual_above_height", kThesis + "[barriers.candidate]\nheight = 4.0\nresidual_height = 5.0\n", {}, "", 34,
+             "barriers[0].candidate.residual_height", "5.0", "<= the height"},
+        Case{"candidate_unknown_key", kThesis + "[barriers.candidate]\nMEL = 3000.0\n", {}, "", 33,
+             "barriers[0].candidate.MEL", "unknown key", "mel"},
+        Case{"acceptable_range", kThesis + "acceptable_height_exceedance = 5.0\n[barriers.candidate]\nheight = 4.0\n", {}, "", 32,
+             "barriers[0].acceptable_height_exceedance", "5.0", "(0, 1)"},
+        Case{"acceptable_without_candidate", kThesis + "acceptable_energy_exceedance = 0.01\n", {}, "", 32,
+             "barriers[0].acceptable_energy_exceedance", "0.01", "candidate"},
+        Case{"observed_missing", kThesis + "observed = \"none.csv\"\n", {}, "none.csv", 0, "file", "no such file", "readable"},
+        Case{"observed_column", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "speed,height\n1,2\n"}}, "o.csv", 1,
+             "header", "speed", "speed_m_s"},
+        Case{"observed_value", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "speed_m_s,height_m\n10,1\n-3,2\n"}}, "o.csv", 3,
+             "speed_m_s", "-3", ">= 0"},
+        Case{"observed_text", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "energy_kJ\n10\nabc\n"}}, "o.csv", 3,
+             "energy_kJ", "abc", "number"},
+        Case{"pr_ok_but_bad_rules_type", kPR + "rules = 5\n", {}, "", 32, "barriers[0].rules", "5", "string"}),
+    [](const auto& info) { return info.param.name; });
+
+}  // namespace

@@ -1,0 +1,326 @@
+// Barrier rule sets and class tables as data: the shipped files say what design-checks.md §1
+// says (and carry their (verify) marks), the thesis-2015 file reproduces Table 4.1, a rule set
+// written to a temporary TOML file is used by a scenario without recompiling (by path and by
+// name), and every error in a rule file names the file, the line and the field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "pierre/design/barrier_check.hpp"
+#include "pierre/io/rule_set_reader.hpp"
+#include "pierre/io/scenario_reader.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using namespace pierre;
+using io::InputError;
+using test::TempDir;
+
+const std::filesystem::path kRules = PIERRE_SOURCE_DIR "/rules";
+
+TEST(ShippedRuleSets, Thesis2015IsSection47) {
+  const auto r = io::load_rule_set("thesis-2015", kRules);
+  EXPECT_EQ(r.name, "thesis-2015");
+  EXPECT_DOUBLE_EQ(r.percentile, 95);
+  EXPECT_EQ(r.governing, design::Governing::weibull);
+  EXPECT_EQ(r.design_on, design::DesignOn::both);
+  ASSERT_TRUE(r.gamma_F.value && r.gamma_M.value && r.gamma_h.value);  // given, not products
+  EXPECT_DOUBLE_EQ(*r.gamma_F.value, 1.16);
+  EXPECT_DOUBLE_EQ(*r.gamma_M.value, 1.05);
+  EXPECT_DOUBLE_EQ(*r.gamma_h.value, 1.0);
+  EXPECT_DOUBLE_EQ(r.gamma_E_MEL, 1.3);
+  EXPECT_DOUBLE_EQ(r.gamma_E_SEL, 1.0);
+  EXPECT_DOUBLE_EQ(r.free_board_abs, 0.0);
+  EXPECT_DOUBLE_EQ(r.free_board_rel, 0.5);
+  EXPECT_FALSE(r.gamma_d_MEL);
+  EXPECT_FALSE(r.gamma_d_SEL);
+  EXPECT_EQ(r.classes, "etag027-classes");
+  EXPECT_FALSE(r.clauses.at("energy.mel").empty());
+}
+
+TEST(ShippedRuleSets, Thesis2015FileReproducesTable41) {
+  const auto r = io::load_rule_set("thesis-2015", kRules);
+  const auto c = io::load_energy_classes(r.classes, kRules);
+  design::DesignInputs in;
+  in.v_k = 24.9 / 1.16;
+  in.h_k = 3.56;
+  in.volume = 1.26;
+  in.density = 2800;
+  in.free_board_diameter = 1.2;
+  const auto d = design::design_values(r, c, in);
+  ASSERT_TRUE(d.ok()) << d.error;
+  EXPECT_NEAR(d->m_d, 3704.4, 1e-9);
+  EXPECT_NEAR(d->SEL_req_kJ, 1148.4, 0.05);
+  EXPECT_NEAR(d->MEL_req_kJ, 1492.9, 0.05);
+  EXPECT_NEAR(d->h_i, 4.16, 1e-12);
+  EXPECT_EQ(d->energy_class->number, 6);
+}
+
+TEST(ShippedRuleSets, PeilaRonco2009PartsAndFactors) {
+  const auto r = io::load_rule_set("peila-ronco-2009", kRules);
+  EXPECT_EQ(r.governing, design::Governing::larger);
+  EXPECT_EQ(r.design_on, design::DesignOn::mel);
+  EXPECT_DOUBLE_EQ(r.gamma_E_MEL, 1.2);
+  EXPECT_DOUBLE_EQ(r.gamma_E_SEL, 1.0);
+  EXPECT_DOUBLE_EQ(r.free_board_abs, 0.5);
+  EXPECT_DOUBLE_EQ(r.free_board_rel, 0.5);
+  EXPECT_DOUBLE_EQ(*r.gamma_d_MEL, 1.3);
+  EXPECT_DOUBLE_EQ(*r.gamma_d_SEL, 1.5);
+  const auto q = design::data_quality_questions(r);
+  ASSERT_EQ(q.size(), 3u);
+  const std::map<std::string, std::string> worst = {
+      {"trajectory", "literature"}, {"topography", "low"}, {"block_volume", "estimated"}};
+  const std::map<std::string, std::string> best = {
+      {"trajectory", "back-analysed"}, {"topography", "high"}, {"block_volume", "surveyed"}};
+  EXPECT_DOUBLE_EQ(design::resolve_factor(r.gamma_F, worst)->value, 1.10 * 1.10);
+  EXPECT_DOUBLE_EQ(design::resolve_factor(r.gamma_F, best)->value, 1.02 * 1.02);
+  EXPECT_DOUBLE_EQ(design::resolve_factor(r.gamma_M, worst)->value, 1.10 * 1.0);
+  EXPECT_DOUBLE_EQ(design::resolve_factor(r.gamma_M, best)->value, 1.02 * 1.0);
+  EXPECT_DOUBLE_EQ(design::resolve_factor(r.gamma_h, worst)->value, 1.10 * 1.10);
+}
+
+// Every value design-checks.md marks (verify) carries the mark on its line.
+TEST(ShippedRuleSets, VerifyMarksWhereTheSpecAsksForThem) {
+  const std::string pr = test::read_file(kRules / "peila-ronco-2009.toml");
+  std::istringstream in(pr);
+  std::string l;
+  int marked = 0;
+  for (const char* key : {"gamma_h =", "gamma_E_MEL =", "gamma_E_SEL =", "gamma_d_MEL =",
+                          "gamma_d_SEL =", "options =", "absolute =", "relative =", "value ="}) {
+    in.clear();
+    in.seekg(0);
+    bool found = false;
+    while (std::getline(in, l))
+      if (l.rfind(key, 0) == 0) {
+        found = true;
+        EXPECT_NE(l.find("(verify"), std::string::npos) << l;
+        ++marked;
+      }
+    EXPECT_TRUE(found) << key;
+  }
+  EXPECT_GE(marked, 11);  // three options lines
+  const std::string classes = test::read_file(kRules / "etag027-classes.toml");
+  std::istringstream cin(classes);
+  while (std::getline(cin, l)) {
+    if (l.rfind("mel =", 0) == 0 || l.rfind("sel =", 0) == 0 || l.rfind("A =", 0) == 0 ||
+        l.rfind("B =", 0) == 0) {
+      EXPECT_NE(l.find("(verify)"), std::string::npos) << l;
+    }
+  }
+}
+
+TEST(ShippedRuleSets, Etag027ClassTableWhole) {
+  const auto t = io::load_energy_classes("etag027-classes", kRules);
+  const double sel[] = {NAN, 85, 170, 330, 660, 1000, 1500, 1500};
+  const double mel[] = {100, 250, 500, 1000, 2000, 3000, 4500, 4500};
+  ASSERT_EQ(t.classes.size(), 8u);
+  for (int i = 0; i < 8; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(t.classes[static_cast<std::size_t>(i)].number, i);
+    EXPECT_DOUBLE_EQ(t.classes[static_cast<std::size_t>(i)].mel_kJ, mel[i]);
+    if (i == 0)
+      EXPECT_TRUE(std::isnan(t.classes[0].sel_kJ));
+    else
+      EXPECT_DOUBLE_EQ(t.classes[static_cast<std::size_t>(i)].sel_kJ, sel[i]);
+    EXPECT_EQ(t.classes[static_cast<std::size_t>(i)].open_ended, i == 7);
+  }
+  ASSERT_TRUE(t.residual_height);
+  EXPECT_DOUBLE_EQ(t.residual_height->a_min, 0.5);
+  EXPECT_DOUBLE_EQ(t.residual_height->b_min, 0.3);
+}
+
+TEST(ShippedRuleSets, NamesListsTheBarrierRuleSetsOnly) {
+  const auto names = io::barrier_rule_set_names(kRules);
+  EXPECT_NE(std::find(names.begin(), names.end(), "thesis-2015"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "peila-ronco-2009"), names.end());
+  EXPECT_EQ(std::find(names.begin(), names.end(), "etag027-classes"), names.end());
+  EXPECT_EQ(std::find(names.begin(), names.end(), "materials"), names.end());
+}
+
+// A new code as data: consequence classes on the velocity factor (ONR 24810-like; the numbers
+// are made up for the test).
+const char* kOnrLike = R"([rule_set]
+kind = "barrier"
+title = "test code with consequence classes"
+source = "a test"
+percentile = 98.0
+governing = "empirical"
+design_on = "SEL"
+
+[factors]
+gamma_F = ["gamma_cc"]
+gamma_M = 1.0
+gamma_h = 1.25
+gamma_E_MEL = 1.0
+gamma_E_SEL = 2.0
+
+[parts.gamma_cc]
+symbol = "γCC"
+choice = "consequence"
+options = { CC1 = 1.0, CC2 = 1.1, CC3 = 1.2 }
+source = "made up"
+
+[free_board]
+absolute = 1.0
+relative = 0.0
+)";
+
+std::string with_barrier(const std::string& barrier) {
+  return test::base() + "\n" + barrier;  // the base has 26 lines, then a blank one: line 28 on
+}
+
+TEST(TemporaryRuleSet, UsedByPathWithoutRecompiling) {
+  TempDir dir;
+  dir.write("onr-like.toml", kOnrLike);
+  const auto s = dir.write("s.toml", with_barrier(R"([[barriers]]
+name = "B1"
+line = "L"
+rules = "onr-like.toml"
+design_block = { volume = 2.0, density = 2500.0 }
+free_board_diameter = 1.0
+data_quality = { consequence = "CC2" }
+)"));
+  const auto l = io::load_scenario(s, kRules);
+  ASSERT_EQ(l.barriers.size(), 1u);
+  const auto& r = l.barrier_rules[0];
+  EXPECT_EQ(r.name, "onr-like");
+  EXPECT_EQ(l.barrier_rules_files[0], dir.path() / "onr-like.toml");
+  EXPECT_EQ(l.barrier_classes[0].name, "etag027-classes");  // from the rules folder
+  design::DesignInputs in;
+  in.v_k = 20;
+  in.h_k = 2;
+  in.volume = 2.0;
+  in.density = 2500;
+  in.free_board_diameter = 1.0;
+  in.data_quality = l.barriers[0].data_quality;
+  const auto d = design::design_values(r, l.barrier_classes[0], in);
+  ASSERT_TRUE(d.ok()) << d.error;
+  EXPECT_DOUBLE_EQ(d->v_d, 22.0);                       // γCC(CC2) = 1.1
+  EXPECT_DOUBLE_EQ(d->E_d_kJ, 0.5 * 5000 * 22 * 22 / 1000);
+  EXPECT_DOUBLE_EQ(d->SEL_req_kJ, 2 * d->E_d_kJ);        // 2420 kJ: above class 6's SEL
+  EXPECT_EQ(d->energy_class->number, 7);
+  EXPECT_DOUBLE_EQ(d->h_i, 2 * 1.25 + 1.0);
+}
+
+TEST(TemporaryRuleSet, UsedByNameFromAnotherRulesFolder) {
+  TempDir rules, dir;
+  rules.write("my-code.toml", kOnrLike);
+  rules.write("etag027-classes.toml", test::read_file(kRules / "etag027-classes.toml"));
+  const auto s = dir.write("s.toml", with_barrier(R"([[barriers]]
+name = "B1"
+line = "L"
+rules = "my-code"
+data_quality = { consequence = "CC3" }
+)"));
+  const auto l = io::load_scenario(s, rules.path());
+  EXPECT_EQ(l.barrier_rules[0].name, "my-code");
+  EXPECT_DOUBLE_EQ(design::resolve_factor(l.barrier_rules[0].gamma_F, l.barriers[0].data_quality)->value, 1.2);
+}
+
+TEST(TemporaryRuleSet, AnswerOutsideItsOptionsNamesThem) {
+  TempDir dir;
+  dir.write("onr-like.toml", kOnrLike);
+  const auto s = dir.write("s.toml", with_barrier(R"([[barriers]]
+name = "B1"
+line = "L"
+rules = "onr-like.toml"
+data_quality = { consequence = "CC4" }
+)"));
+  try {
+    (void)io::load_scenario(s, kRules);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), s);
+    EXPECT_EQ(e.line(), 32);
+    EXPECT_EQ(e.field(), "barriers[0].data_quality.consequence");
+    EXPECT_EQ(e.found(), "\"CC4\"");
+    EXPECT_NE(e.expected().find("\"CC1\" or \"CC2\" or \"CC3\""), std::string::npos) << e.expected();
+  }
+}
+
+// ---- errors inside rule files ----
+
+struct RuleCase {
+  std::string name;
+  std::string from, to;  // replace in kOnrLike
+  long line;
+  std::string field, found;
+};
+void PrintTo(const RuleCase& c, std::ostream* os) { *os << c.name; }
+
+class RuleSetError : public ::testing::TestWithParam<RuleCase> {};
+
+TEST_P(RuleSetError, NamesFileLineField) {
+  const RuleCase& c = GetParam();
+  std::string text = kOnrLike;
+  const auto at = text.find(c.from);
+  ASSERT_NE(at, std::string::npos) << c.from;
+  text.replace(at, c.from.size(), c.to);
+  TempDir dir;
+  const auto f = dir.write("r.toml", text);
+  try {
+    (void)io::load_rule_set(f.string(), kRules);
+    FAIL() << "no error for " << c.name;
+  } catch (const InputError& e) {
+    SCOPED_TRACE(e.what());
+    EXPECT_EQ(e.file(), f);
+    EXPECT_EQ(e.line(), c.line);
+    EXPECT_EQ(e.field(), c.field);
+    EXPECT_NE(e.found().find(c.found), std::string::npos) << e.found();
+    EXPECT_FALSE(e.expected().empty());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, RuleSetError,
+    ::testing::Values(
+        RuleCase{"wrong_kind", "kind = \"barrier\"", "kind = \"quarry\"", 2, "rule_set.kind", "\"quarry\""},
+        RuleCase{"governing", "governing = \"empirical\"", "governing = \"median\"", 6, "rule_set.governing", "\"median\""},
+        RuleCase{"design_on", "design_on = \"SEL\"", "design_on = \"sel\"", 7, "rule_set.design_on", "\"sel\""},
+        RuleCase{"percentile", "percentile = 98.0", "percentile = 100.0", 5, "rule_set.percentile", "100"},
+        RuleCase{"unknown_part", "gamma_F = [\"gamma_cc\"]", "gamma_F = [\"gamma_xx\"]", 10, "factors.gamma_F", "\"gamma_xx\""},
+        RuleCase{"factor_type", "gamma_h = 1.25", "gamma_h = \"1.25\"", 12, "factors.gamma_h", "\"1.25\""},
+        RuleCase{"factor_zero", "gamma_E_SEL = 2.0", "gamma_E_SEL = 0.0", 14, "factors.gamma_E_SEL", "0.0"},
+        RuleCase{"part_both", "choice = \"consequence\"", "choice = \"consequence\"\nvalue = 1.0", 16, "parts.gamma_cc.value", "both"},
+        RuleCase{"option_value", "CC2 = 1.1", "CC2 = -1.1", 19, "parts.gamma_cc.options.CC2", "-1.1"},
+        RuleCase{"no_free_board", "[free_board]\nabsolute = 1.0\nrelative = 0.0\n", "", 0, "free_board", "nothing"},
+        RuleCase{"unknown_key", "source = \"a test\"", "source = \"a test\"\nsourse = \"typo\"", 5, "rule_set.sourse", "unknown"},
+        RuleCase{"unknown_clause", "[free_board]", "[clauses]\n\"energy.xyz\" = \"§1\"\n[free_board]", 23, "clauses.energy.xyz", "unknown check id"},
+        RuleCase{"syntax", "gamma_M = 1.0", "gamma_M = = 1.0", 11, "TOML syntax", ""}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(EnergyClassErrors, OrderAndOpenEnd) {
+  TempDir dir;
+  const std::string head = "[rule_set]\nkind = \"energy-classes\"\ntitle = \"t\"\nsource = \"s\"\n";
+  const auto f1 = dir.write("c1.toml", head + "[[classes]]\nclass = 1\nmel = 200\n[[classes]]\nclass = 1\nmel = 300\n");
+  try {
+    (void)io::load_energy_classes(f1.string(), kRules);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 9);
+    EXPECT_EQ(e.field(), "classes[1].class");
+  }
+  const auto f2 = dir.write("c2.toml", head + "[[classes]]\nclass = 1\nmel = 200\nopen_ended = true\n[[classes]]\nclass = 2\nmel = 300\n");
+  try {
+    (void)io::load_energy_classes(f2.string(), kRules);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 8);
+    EXPECT_EQ(e.field(), "classes[0].open_ended");
+  }
+  const auto f3 = dir.write("c3.toml", head + "[[classes]]\nclass = 1\nmel = 200\n[[classes]]\nclass = 2\nmel = 150\n");
+  try {
+    (void)io::load_energy_classes(f3.string(), kRules);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 10);
+    EXPECT_EQ(e.field(), "classes[1].mel");
+  }
+}
+
+}  // namespace
