@@ -42,6 +42,12 @@ class ValidateCommand final : public Command {
         s.lines.size(), s.lines.size() == 1 ? "" : "s", lines.empty() ? "" : ": ", lines,
         s.settings.throws, s.settings.throws == 1 ? "" : "s", s.settings.seed,
         s.trajectory_count());
+    for (std::size_t i = 0; i < l.barriers.size(); ++i) {
+      const auto& b = l.barriers[i];
+      fmt::print("  barrier \"{}\" at {}: rule set {} ({}), {}\n", b.name, b.line,
+                 l.barrier_rules[i].name, l.barrier_rules_files[i].string(),
+                 b.candidate ? "checks a candidate" : "a design (no candidate)");
+    }
     return kExitOk;
   }
 
