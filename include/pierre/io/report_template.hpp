@@ -1,0 +1,66 @@
+// The layout of report.xlsx, read from templates/report.toml (the format is described in that
+// file): sheet names and order, headings with units, number formats, titles and labels, chart
+// titles and axis labels, colours of PASS / FAIL / WARN, page set-up and the row caps of the
+// data sheets. Data, so that a firm restyles its report without recompiling.
+//
+// Every key the writer uses is required and every unknown key is an error: load_report_template
+// throws InputError (file, line of the table or the value, the dotted field, what was found and
+// what was expected).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pierre/io/input_error.hpp"
+
+namespace pierre::io {
+
+struct ReportTemplate {
+  std::filesystem::path file;  // where it was read from
+
+  // Text by section and key: "sheets", "titles", "labels", "formats", "headings.<table>",
+  // "chart.<chart>" (keys title, x_axis, y_axis). Every key of report_template_sections().
+  std::map<std::string, std::map<std::string, std::string, std::less<>>, std::less<>> text;
+  // Colours (0xRRGGBB) by key of the [colours] table.
+  std::map<std::string, std::uint32_t, std::less<>> colours;
+
+  // Sheet order by key: summary, barriers, profile, inputs, trajectories, crossings (each once).
+  std::vector<std::string> order;
+
+  std::size_t trajectory_rows = 10000;  // cap of the Trajectories sheet
+  std::size_t crossing_rows = 10000;    // cap of the Crossings sheet
+  std::size_t print_rows = 200;         // data rows of those sheets in the print area
+
+  bool landscape = true;
+  int paper = 9;  // Excel paper code (9: A4)
+
+  int histogram_bins = 30;
+  int curve_points = 120;
+  double profile_line_height = 10;  // m
+  int chart_width = 620, chart_height = 330;  // px
+
+  // The text of `section`.`key`; throws std::out_of_range naming both when absent (only a
+  // template built or edited in code can lack one).
+  const std::string& get(std::string_view section, std::string_view key) const;
+  std::uint32_t colour(std::string_view key) const;
+};
+
+// The required keys of every text section (the schema the loader checks), by section name.
+const std::map<std::string, std::vector<std::string>, std::less<>>& report_template_sections();
+// The keys of [colours].
+const std::vector<std::string>& report_template_colours();
+
+ReportTemplate load_report_template(const std::filesystem::path& file);
+
+// templates/report.toml next to the rules folder's parent when the caller has none:
+// $PIERRE_TEMPLATES/report.toml if set and not empty; else `<executable's folder>/../templates`
+// or `<executable's folder>/../share/pierre/templates` when it holds report.toml; else
+// "templates/report.toml" (relative to the working folder).
+std::filesystem::path default_report_template();
+
+}  // namespace pierre::io

@@ -1,0 +1,340 @@
+#include "pierre/io/report_template.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "toml_fields.hpp"
+
+namespace pierre::io {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::line_of;
+using detail::TomlTable;
+
+using Keys = std::vector<std::string>;
+
+const Keys kChartKeys = {"title", "x_axis", "y_axis"};
+const Keys kCharts = {"speed_histogram", "height_histogram", "energy_histogram",
+                      "speed_cdf",       "height_cdf",       "energy_cdf",
+                      "profile"};
+const Keys kSheetKeys = {"summary",      "inputs",   "barrier", "profile",
+                         "trajectories", "crossings"};
+const Keys kOrderKeys = {"summary", "barriers", "profile", "inputs", "trajectories", "crossings"};
+
+std::map<std::string, Keys, std::less<>> make_sections() {
+  std::map<std::string, Keys, std::less<>> s;
+  s["sheets"] = kSheetKeys;
+  s["formats"] = {"count",   "speed",     "length",   "coordinate",  "energy",  "mass",
+                  "volume",  "density",   "factor",   "parameter",   "probability",
+                  "percent", "time",      "angle",    "material",    "general", "date"};
+  s["titles"] = {"summary",      "run",          "barriers",       "lines",
+                 "checks",       "inputs",       "simulation",     "materials",
+                 "blocks",       "sources",      "observation_lines", "barrier_inputs",
+                 "scenario_text", "barrier",     "statistics",     "bootstrap",
+                 "design",       "factors",      "exceedance",     "barrier_checks",
+                 "notes",        "chart_data",   "profile",        "trajectories",
+                 "crossings",    "capped",       "complete"};
+  s["labels"] = {"project",       "description", "scenario_file", "date",        "version",
+                 "seed",          "throws",      "trajectories",  "rule_sets",   "runout",
+                 "materials_file", "rules",      "crossings",     "not_reached", "design_block",
+                 "bootstrap_seed", "none"};
+  s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
+                            "class_mel", "class_sel", "mel_req", "sel_req",
+                            "interception_height", "rules"};
+  s["headings.lines"] = {"name",       "chainage",   "count",      "not_reached", "speed_mean",
+                         "speed_p95",  "height_p95", "energy_p95", "energy_max"};
+  s["headings.checks"] = {"subject", "id", "what", "value", "limit", "unit",
+                          "rule",    "status", "reason"};
+  s["headings.simulation"] = {"seed",        "throws",           "gravity",          "max_time",
+                              "max_impacts", "stop_head_factor", "max_sliding_speed"};
+  s["headings.materials"] = {"name",      "source",    "normal_energy", "normal_energy_k",
+                             "tangential_energy", "tangential_energy_k", "roughness",
+                             "friction_angle"};
+  s["headings.blocks"] = {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"};
+  s["headings.sources"] = {"name", "x", "z", "vx", "vz", "omega"};
+  s["headings.observation_lines"] = {"name", "x"};
+  s["headings.barrier_inputs"] = {
+      "field",          "name",           "line",          "rules",
+      "design_block",   "volume",         "density",       "percentile",
+      "free_board_diameter", "data_quality", "energy_class", "mel",
+      "sel",            "height",         "elongation_mel", "elongation_sel",
+      "distance_to_object", "residual_height", "acceptable_energy", "acceptable_height",
+      "observed_file"};
+  s["headings.statistics"] = {
+      "statistic",      "speed",          "height",        "energy",         "rotational_energy",
+      "observed_speed", "observed_height", "observed_energy", "count",        "mean",
+      "sd",             "min",            "max",           "p50",            "p95",
+      "weibull_k",      "weibull_lambda", "weibull_ks_d",  "weibull_ks_p",   "lognormal_mu",
+      "lognormal_sigma", "lognormal_ks_d", "lognormal_ks_p"};
+  s["headings.bootstrap"] = {"quantity",   "estimate",  "lower", "upper", "half_width",
+                             "confidence", "resamples", "v_k",   "h_k",   "E_d",
+                             "h_i"};
+  s["headings.design"] = {"v_d", "m_d", "E_d", "sel_req", "mel_req", "h_i", "energy_class"};
+  s["headings.factors"] = {
+      "quantity",      "value",       "unit",          "how",         "v_k_weibull",
+      "v_k_empirical", "v_k",         "gamma_F",       "v_d",         "density",
+      "volume",        "gamma_M",     "m_d",           "E_d",         "gamma_E_SEL",
+      "sel_req",       "gamma_E_MEL", "mel_req",       "h_k_weibull", "h_k_empirical",
+      "h_k",           "gamma_h",     "h_d",           "free_board_diameter", "free_board",
+      "h_i",           "h_max_sim",   "candidate_mel", "candidate_sel",
+      "residual_height_category"};
+  s["headings.exceedance"] = {"what",     "threshold", "unit", "simulated_weibull",
+                              "simulated_empirical", "observed_weibull"};
+  s["headings.histogram"] = {"bin_lower",   "bin_upper",     "count",         "density",
+                             "outline_x",   "outline_y",     "curve_x",       "weibull_pdf",
+                             "lognormal_pdf", "empirical_cdf", "weibull_cdf", "lognormal_cdf",
+                             "histogram",   "source"};
+  s["headings.profile"] = {"x", "z", "profile", "paths", "lines", "barriers"};
+  s["headings.trajectories"] = {
+      "trajectory", "source",   "block",       "throw",          "mass",
+      "start_x",    "start_z",  "stop_x",      "stop_z",         "runout",
+      "stop_reason", "duration", "impacts",    "first_impact_x", "first_impact_z",
+      "max_jump_height", "max_speed", "max_energy"};
+  s["headings.crossings"] = {"trajectory", "line",  "chainage", "block",  "mass",
+                             "time",       "direction", "vx",   "vz",     "speed",
+                             "omega",      "translational_energy", "rotational_energy",
+                             "passing_height", "sliding"};
+  for (const auto& c : kCharts) s["chart." + c] = kChartKeys;
+  return s;
+}
+
+const Keys kColours = {"heading_font", "heading_fill", "title_font", "note_font", "pass_font",
+                       "pass_fill",    "fail_font",    "fail_fill",  "warn_font", "warn_fill",
+                       "profile",      "paths",        "lines",      "barriers",  "histogram",
+                       "weibull",      "lognormal",    "empirical"};
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    std::error_code ec;
+    const bool exists = fs::is_regular_file(file, ec);
+    throw InputError(file, 0, "file", exists ? "a file that cannot be read" : "no such file",
+                     "a readable report template (templates/report.toml)");
+  }
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return buf.str();
+}
+
+std::string joined(const Keys& keys) {
+  std::string s;
+  for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
+  return s;
+}
+
+// A table holding exactly `keys`, each a string.
+std::map<std::string, std::string, std::less<>> read_strings(const TomlTable& t, const Keys& keys,
+                                                             std::string_view what) {
+  // TomlTable rejects unknown keys only from an initializer list; check them here.
+  for (auto&& [k, v] : t.table()) {
+    if (std::find(keys.begin(), keys.end(), k.str()) == keys.end())
+      throw InputError(t.file(), static_cast<long>(k.source().begin.line), t.field(k.str()),
+                       "an unknown key", fmt::format("one of {}", joined(keys)));
+  }
+  std::map<std::string, std::string, std::less<>> out;
+  for (const auto& k : keys) out[k] = t.required_string(k, std::string(what));
+  return out;
+}
+
+// The sub-table `key` of `t` (required).
+TomlTable required_table(const TomlTable& t, std::string_view key) {
+  const toml::node* n = t.find(key);
+  if (!n) t.missing(key, "a table");
+  const auto* sub = n->as_table();
+  if (!sub) t.fail(key, "a table");
+  return TomlTable(t.file(), *sub, t.field(key), line_of(*n), {});
+}
+
+void reject_unknown(const TomlTable& t, const Keys& keys) {
+  for (auto&& [k, v] : t.table()) {
+    if (std::find(keys.begin(), keys.end(), k.str()) == keys.end())
+      throw InputError(t.file(), static_cast<long>(k.source().begin.line), t.field(k.str()),
+                       "an unknown key", fmt::format("one of {}", joined(keys)));
+  }
+}
+
+std::int64_t required_integer(const TomlTable& t, std::string_view key, std::int64_t lo,
+                              std::int64_t hi) {
+  const auto expected = fmt::format("an integer from {} to {}", lo, hi);
+  const auto v = t.integer(key);
+  if (!v) t.missing(key, expected);
+  t.check(key, *v >= lo && *v <= hi, expected);
+  return *v;
+}
+
+std::uint32_t parse_colour(const TomlTable& t, std::string_view key) {
+  const std::string expected = "a colour \"#RRGGBB\"";
+  const std::string s = t.required_string(key, expected);
+  bool ok = s.size() == 7 && s[0] == '#' &&
+            std::all_of(s.begin() + 1, s.end(), [](char c) { return std::isxdigit(
+                                                           static_cast<unsigned char>(c)) != 0; });
+  t.check(key, ok, expected);
+  return static_cast<std::uint32_t>(std::strtoul(s.c_str() + 1, nullptr, 16));
+}
+
+// Excel's rules for a sheet name (checked again by libxlsxwriter when writing).
+void check_sheet_name(const TomlTable& t, std::string_view key, const std::string& name) {
+  const std::string expected =
+      "a sheet name: 1 to 31 characters, none of [ ] : * ? / \\, not starting or ending with '";
+  bool ok = !name.empty() && name.size() <= 31 &&
+            name.find_first_of("[]:*?/\\") == std::string::npos && name.front() != '\'' &&
+            name.back() != '\'';
+  if (key == "barrier") ok = ok || (!name.empty() && name.find("{name}") != std::string::npos);
+  t.check(key, ok, expected);
+}
+
+}  // namespace
+
+const std::map<std::string, std::vector<std::string>, std::less<>>& report_template_sections() {
+  static const auto s = make_sections();
+  return s;
+}
+
+const std::vector<std::string>& report_template_colours() { return kColours; }
+
+const std::string& ReportTemplate::get(std::string_view section, std::string_view key) const {
+  const auto s = text.find(section);
+  if (s != text.end()) {
+    const auto k = s->second.find(key);
+    if (k != s->second.end()) return k->second;
+  }
+  throw std::out_of_range(fmt::format("report template {}: no {}.{}", file.string(), section, key));
+}
+
+std::uint32_t ReportTemplate::colour(std::string_view key) const {
+  const auto c = colours.find(key);
+  if (c == colours.end())
+    throw std::out_of_range(fmt::format("report template {}: no colours.{}", file.string(), key));
+  return c->second;
+}
+
+ReportTemplate load_report_template(const std::filesystem::path& file) {
+  const std::string text = read_text(file);
+  toml::table root;
+  try {
+    root = toml::parse(text, file.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
+                     fmt::format("{} (column {})", e.description(), e.source().begin.column),
+                     "valid TOML (https://toml.io)");
+  }
+  const TomlTable top(file, root, "", 0,
+                      {"sheets", "rows", "page", "charts", "colours", "formats", "titles",
+                       "labels", "headings", "chart"});
+
+  ReportTemplate tpl;
+  tpl.file = file;
+  const auto& sections = report_template_sections();
+
+  // [sheets]: the names (strings) and the order (an array).
+  {
+    const TomlTable t = required_table(top, "sheets");
+    Keys allowed = kSheetKeys;
+    allowed.push_back("order");
+    reject_unknown(t, allowed);
+    auto& names = tpl.text["sheets"];
+    for (const auto& k : kSheetKeys) {
+      names[k] = t.required_string(k, "a string: the sheet's name");
+      check_sheet_name(t, k, names[k]);
+    }
+    const std::string expected = fmt::format("an array holding each of {} once", joined(kOrderKeys));
+    const toml::array* order = t.array("order");
+    if (!order) t.missing("order", expected);
+    for (const auto& e : *order) {
+      const auto* s = e.as_string();
+      if (!s) t.fail("order", expected);
+      tpl.order.push_back(s->get());
+    }
+    Keys sorted = tpl.order, want = kOrderKeys;
+    std::sort(sorted.begin(), sorted.end());
+    std::sort(want.begin(), want.end());
+    t.check("order", sorted == want, expected);
+    // Distinct fixed names (the barrier sheets are made distinct when written).
+    for (std::size_t i = 0; i < kSheetKeys.size(); ++i)
+      for (std::size_t j = i + 1; j < kSheetKeys.size(); ++j)
+        if (kSheetKeys[i] != "barrier" && kSheetKeys[j] != "barrier" &&
+            names[kSheetKeys[i]] == names[kSheetKeys[j]])
+          t.fail(kSheetKeys[j], fmt::format("a name other than sheets.{}'s", kSheetKeys[i]));
+  }
+  {
+    const TomlTable t = required_table(top, "rows");
+    reject_unknown(t, {"trajectories", "crossings", "print"});
+    tpl.trajectory_rows =
+        static_cast<std::size_t>(required_integer(t, "trajectories", 0, 1'000'000));
+    tpl.crossing_rows = static_cast<std::size_t>(required_integer(t, "crossings", 0, 1'000'000));
+    tpl.print_rows = static_cast<std::size_t>(required_integer(t, "print", 0, 1'000'000));
+  }
+  {
+    const TomlTable t = required_table(top, "page");
+    reject_unknown(t, {"landscape", "paper", "footer"});
+    const auto l = t.boolean("landscape");
+    if (!l) t.missing("landscape", "true or false");
+    tpl.landscape = *l;
+    tpl.paper = static_cast<int>(required_integer(t, "paper", 0, 118));
+    tpl.text["page"]["footer"] = t.required_string("footer", "a string: the page footer");
+  }
+  {
+    const TomlTable t = required_table(top, "charts");
+    reject_unknown(t, {"histogram_bins", "curve_points", "profile_line_height", "width",
+                       "height"});
+    tpl.histogram_bins = static_cast<int>(required_integer(t, "histogram_bins", 2, 500));
+    tpl.curve_points = static_cast<int>(required_integer(t, "curve_points", 2, 2000));
+    tpl.profile_line_height = t.required_number("profile_line_height", "a height in m");
+    t.check("profile_line_height", tpl.profile_line_height > 0, "a positive height in m");
+    tpl.chart_width = static_cast<int>(required_integer(t, "width", 100, 4000));
+    tpl.chart_height = static_cast<int>(required_integer(t, "height", 100, 4000));
+  }
+  {
+    const TomlTable t = required_table(top, "colours");
+    reject_unknown(t, kColours);
+    for (const auto& k : kColours) tpl.colours[k] = parse_colour(t, k);
+  }
+  for (const char* plain : {"formats", "titles", "labels"}) {
+    const TomlTable t = required_table(top, plain);
+    tpl.text[plain] = read_strings(t, sections.at(plain), "a string");
+  }
+  {
+    const TomlTable h = required_table(top, "headings");
+    Keys tables;
+    for (const auto& [name, keys] : sections)
+      if (name.rfind("headings.", 0) == 0) tables.push_back(name.substr(9));
+    reject_unknown(h, tables);
+    for (const auto& name : tables) {
+      const TomlTable t = required_table(h, name);
+      tpl.text["headings." + name] =
+          read_strings(t, sections.at("headings." + name), "a string: the column heading");
+    }
+  }
+  {
+    const TomlTable c = required_table(top, "chart");
+    reject_unknown(c, kCharts);
+    for (const auto& name : kCharts) {
+      const TomlTable t = required_table(c, name);
+      tpl.text["chart." + name] = read_strings(t, kChartKeys, "a string: the chart's label");
+    }
+  }
+  return tpl;
+}
+
+std::filesystem::path default_report_template() {
+  if (const char* env = std::getenv("PIERRE_TEMPLATES"); env && *env)
+    return fs::path(env) / "report.toml";
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    for (const fs::path& cand :
+         {exe.parent_path().parent_path() / "templates",
+          exe.parent_path().parent_path() / "share" / "pierre" / "templates"})
+      if (fs::is_regular_file(cand / "report.toml", ec)) return cand / "report.toml";
+  }
+  return "templates/report.toml";
+}
+
+}  // namespace pierre::io

@@ -1,0 +1,1407 @@
+#include "pierre/io/xlsx_report.hpp"
+
+#include <unistd.h>
+#include <xlsxwriter.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <map>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "pierre/stats/empirical_cdf.hpp"
+#include "pierre/stats/lognormal_fit.hpp"
+#include "pierre/stats/percentile.hpp"
+#include "pierre/stats/weibull_fit.hpp"
+
+namespace pierre::io {
+namespace {
+
+namespace fs = std::filesystem;
+using Row = lxw_row_t;
+using Col = lxw_col_t;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+[[noreturn]] void fail(std::string_view what, lxw_error e) {
+  throw std::runtime_error(
+      fmt::format("report.xlsx: {}: {}", what, lxw_strerror(e)));
+}
+void check(lxw_error e, std::string_view what) {
+  if (e != LXW_NO_ERROR) fail(what, e);
+}
+template <class T>
+T* check_ptr(T* p, std::string_view what) {
+  if (!p) throw std::runtime_error(fmt::format("report.xlsx: {} failed", what));
+  return p;
+}
+
+std::string replace_all(std::string s, std::string_view key, std::string_view value) {
+  for (std::size_t p = s.find(key); p != std::string::npos; p = s.find(key, p + value.size()))
+    s.replace(p, key.size(), value);
+  return s;
+}
+
+// The first `n` UTF-8 code points of s.
+std::string utf8_prefix(const std::string& s, std::size_t n) {
+  std::size_t i = 0, count = 0;
+  while (i < s.size() && count < n) {
+    ++i;
+    while (i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80) ++i;
+    ++count;
+  }
+  return s.substr(0, i);
+}
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// An ISO date "YYYY-MM-DD" (anything after the tenth character is ignored).
+std::chrono::year_month_day parse_date(const std::string& s) {
+  int y = 0;
+  unsigned m = 0, d = 0;
+  char dash1 = 0, dash2 = 0;
+  if (s.size() >= 10 &&
+      std::sscanf(s.substr(0, 10).c_str(), "%4d%c%2u%c%2u", &y, &dash1, &m, &dash2, &d) == 5 &&
+      dash1 == '-' && dash2 == '-') {
+    const std::chrono::year_month_day ymd{std::chrono::year{y}, std::chrono::month{m},
+                                          std::chrono::day{d}};
+    if (ymd.ok() && y >= 1900 && y <= 9999) return ymd;
+  }
+  throw std::runtime_error(fmt::format(
+      "report.xlsx: the run's date \"{}\" is not an ISO date (YYYY-MM-DD); it fixes the "
+      "workbook's creation time",
+      s));
+}
+
+std::string format_number(double v) {
+  if (!std::isfinite(v)) return "—";
+  return fmt::format("{:.4g}", v);
+}
+
+// ---- the data behind the charts --------------------------------------------------------
+
+struct Histogram {
+  double lo = 0, width = 1;
+  std::vector<std::uint64_t> counts;
+  std::vector<double> density;
+};
+
+Histogram histogram(std::span<const double> x, int bins) {
+  Histogram h;
+  double mn = std::numeric_limits<double>::infinity(), mx = -mn;
+  std::size_t n = 0;
+  for (double v : x)
+    if (std::isfinite(v)) {
+      mn = std::min(mn, v);
+      mx = std::max(mx, v);
+      ++n;
+    }
+  if (n == 0) return h;
+  // Non-negative quantities start at zero unless the data sit far from it.
+  h.lo = (mn >= 0 && mn <= 0.25 * mx) ? 0.0 : mn;
+  double hi = mx;
+  if (!(hi > h.lo)) hi = h.lo + 1;
+  h.width = (hi - h.lo) / bins;
+  h.counts.assign(static_cast<std::size_t>(bins), 0);
+  for (double v : x) {
+    if (!std::isfinite(v)) continue;
+    auto b = static_cast<long>(std::floor((v - h.lo) / h.width));
+    b = std::clamp(b, 0L, static_cast<long>(bins) - 1);
+    ++h.counts[static_cast<std::size_t>(b)];
+  }
+  for (auto c : h.counts)
+    h.density.push_back(static_cast<double>(c) / (static_cast<double>(n) * h.width));
+  return h;
+}
+
+// ---- the workbook --------------------------------------------------------------------
+
+struct Cell {
+  Row row;
+  Col col;
+};
+
+class Report {
+ public:
+  Report(lxw_workbook* wb, const ReportData& data, const ReportTemplate& tpl)
+      : wb_(wb), d_(data), t_(tpl) {}
+
+  void write();
+
+ private:
+  // -- formats
+  lxw_format* add_format() { return check_ptr(workbook_add_format(wb_), "workbook_add_format"); }
+  lxw_format* number(std::string_view kind);  // a number format of the template, cached
+  lxw_format* heading();
+  lxw_format* title();
+  lxw_format* section();
+  lxw_format* note();
+  lxw_format* bold();
+  lxw_format* wrap();
+  lxw_format* status_format(std::string_view status);  // for the conditional formats
+
+  // -- cells
+  void text(lxw_worksheet* ws, Row r, Col c, const std::string& s, lxw_format* f = nullptr);
+  void num(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
+  void opt(lxw_worksheet* ws, Row r, Col c, const std::optional<double>& v, lxw_format* f) {
+    if (v) num(ws, r, c, *v, f);
+  }
+  void count(lxw_worksheet* ws, Row r, Col c, std::uint64_t v) {
+    num(ws, r, c, static_cast<double>(v), number("count"));
+  }
+  // A heading row: the template's headings of `table` for `keys`, from column `c0`.
+  void headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
+                std::initializer_list<std::string_view> keys, double height = 30);
+  void width(lxw_worksheet* ws, Col c0, Col c1, double w) {
+    check(worksheet_set_column(ws, c0, c1, w, nullptr), "worksheet_set_column");
+  }
+  const std::string& h(std::string_view table, std::string_view key) const {
+    return t_.get("headings." + std::string(table), key);
+  }
+  const char* keep(std::string s) { return strings_.emplace_back(std::move(s)).c_str(); }
+  void page_setup(lxw_worksheet* ws);
+  void status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c);
+
+  // -- charts
+  lxw_chart* scatter_chart(std::string_view chart_key, const std::string& name);
+  void xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc, Col yc,
+                 const std::string& name, std::uint32_t colour, float line_width,
+                 std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
+  void insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale = 1,
+                    double y_scale = 1);
+
+  // -- sheets
+  std::string barrier_sheet_name(const std::string& barrier, std::vector<std::string>& used);
+  void summary(lxw_worksheet* ws);
+  Row check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
+                  bool subject);
+  void inputs(lxw_worksheet* ws);
+  void barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b);
+  void profile(lxw_worksheet* ws, const std::string& sheet);
+  void trajectories(lxw_worksheet* ws);
+  void crossings(lxw_worksheet* ws);
+  Row cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
+               const char* csv);
+
+  std::string line_name(std::uint32_t i) const;
+  double line_chainage(std::uint32_t i) const;
+  std::optional<std::uint32_t> line_index(const std::string& name) const;
+
+  lxw_workbook* wb_;
+  const ReportData& d_;
+  const ReportTemplate& t_;
+  std::map<std::string, lxw_format*, std::less<>> formats_;
+  std::deque<std::string> strings_;
+};
+
+// ---- formats ---------------------------------------------------------------------------
+
+lxw_format* Report::number(std::string_view kind) {
+  const std::string key = "num." + std::string(kind);
+  if (auto it = formats_.find(key); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_num_format(f, keep(t_.get("formats", kind)));
+  return formats_[key] = f;
+}
+
+lxw_format* Report::heading() {
+  if (auto it = formats_.find("heading"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_bold(f);
+  format_set_font_color(f, t_.colour("heading_font"));
+  format_set_bg_color(f, t_.colour("heading_fill"));
+  format_set_text_wrap(f);
+  format_set_align(f, LXW_ALIGN_VERTICAL_CENTER);
+  format_set_align(f, LXW_ALIGN_CENTER);
+  format_set_border(f, LXW_BORDER_THIN);
+  format_set_border_color(f, 0xBFBFBF);
+  return formats_["heading"] = f;
+}
+
+lxw_format* Report::title() {
+  if (auto it = formats_.find("title"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_bold(f);
+  format_set_font_size(f, 16);
+  format_set_font_color(f, t_.colour("title_font"));
+  return formats_["title"] = f;
+}
+
+lxw_format* Report::section() {
+  if (auto it = formats_.find("section"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_bold(f);
+  format_set_font_size(f, 12);
+  format_set_font_color(f, t_.colour("title_font"));
+  return formats_["section"] = f;
+}
+
+lxw_format* Report::note() {
+  if (auto it = formats_.find("note"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_italic(f);
+  format_set_font_color(f, t_.colour("note_font"));
+  return formats_["note"] = f;
+}
+
+lxw_format* Report::bold() {
+  if (auto it = formats_.find("bold"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_bold(f);
+  return formats_["bold"] = f;
+}
+
+lxw_format* Report::wrap() {
+  if (auto it = formats_.find("wrap"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_text_wrap(f);
+  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  return formats_["wrap"] = f;
+}
+
+lxw_format* Report::status_format(std::string_view status) {
+  const std::string key = "status." + std::string(status);
+  if (auto it = formats_.find(key); it != formats_.end()) return it->second;
+  const std::string k = lower(std::string(status));
+  lxw_format* f = add_format();
+  format_set_bold(f);
+  format_set_font_color(f, t_.colour(k + "_font"));
+  format_set_bg_color(f, t_.colour(k + "_fill"));
+  return formats_[key] = f;
+}
+
+// ---- cells -----------------------------------------------------------------------------
+
+void Report::text(lxw_worksheet* ws, Row r, Col c, const std::string& s, lxw_format* f) {
+  if (s.empty()) {
+    if (f) check(worksheet_write_blank(ws, r, c, f), "worksheet_write_blank");
+    return;
+  }
+  constexpr std::size_t kMax = 32767;  // Excel's limit of a cell's text
+  if (s.size() <= kMax) {
+    check(worksheet_write_string(ws, r, c, s.c_str(), f), "worksheet_write_string");
+    return;
+  }
+  std::size_t n = kMax;
+  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+  check(worksheet_write_string(ws, r, c, s.substr(0, n).c_str(), f), "worksheet_write_string");
+}
+
+void Report::num(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f) {
+  if (!std::isfinite(v)) {  // an empty cell, never text in a number column
+    if (f) check(worksheet_write_blank(ws, r, c, f), "worksheet_write_blank");
+    return;
+  }
+  check(worksheet_write_number(ws, r, c, v, f), "worksheet_write_number");
+}
+
+void Report::headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
+                      std::initializer_list<std::string_view> keys, double height) {
+  Col c = c0;
+  for (auto k : keys) text(ws, r, c++, h(table, k), heading());
+  check(worksheet_set_row(ws, r, height, nullptr), "worksheet_set_row");
+}
+
+void Report::page_setup(lxw_worksheet* ws) {
+  if (t_.landscape) worksheet_set_landscape(ws);
+  worksheet_set_paper(ws, static_cast<std::uint8_t>(t_.paper));
+  worksheet_fit_to_pages(ws, 1, 0);
+  worksheet_set_margins(ws, 0.5, 0.5, 0.6, 0.6);
+  check(worksheet_set_footer(ws, t_.get("page", "footer").c_str()), "worksheet_set_footer");
+}
+
+void Report::status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c) {
+  if (r1 < r0) return;
+  for (const char* s : {"PASS", "FAIL", "WARN"}) {
+    lxw_conditional_format cf{};
+    cf.type = LXW_CONDITIONAL_TYPE_TEXT;
+    cf.criteria = LXW_CONDITIONAL_CRITERIA_TEXT_CONTAINING;
+    cf.value_string = const_cast<char*>(s);
+    cf.format = status_format(s);
+    check(worksheet_conditional_format_range(ws, r0, c, r1, c, &cf),
+          "worksheet_conditional_format_range");
+  }
+}
+
+// ---- charts ----------------------------------------------------------------------------
+
+lxw_chart* Report::scatter_chart(std::string_view chart_key, const std::string& name) {
+  lxw_chart* chart =
+      check_ptr(workbook_add_chart(wb_, LXW_CHART_SCATTER_STRAIGHT), "workbook_add_chart");
+  const std::string section = "chart." + std::string(chart_key);
+  chart_title_set_name(chart, keep(replace_all(t_.get(section, "title"), "{name}", name)));
+  lxw_chart_font title_font{};
+  title_font.size = 11;
+  title_font.bold = LXW_EXPLICIT_FALSE;
+  chart_title_set_name_font(chart, &title_font);
+  chart_axis_set_name(chart->x_axis, keep(t_.get(section, "x_axis")));
+  chart_axis_set_name(chart->y_axis, keep(t_.get(section, "y_axis")));
+  chart_axis_major_gridlines_set_visible(chart->x_axis, LXW_TRUE);
+  lxw_chart_line grid{};
+  grid.color = 0xD9D9D9;
+  grid.width = 0.5f;
+  chart_axis_major_gridlines_set_line(chart->x_axis, &grid);
+  chart_axis_major_gridlines_set_line(chart->y_axis, &grid);
+  chart_axis_set_label_position(chart->x_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
+  chart_axis_set_label_position(chart->y_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
+  chart_legend_set_position(chart, LXW_CHART_LEGEND_BOTTOM);
+  chart_show_blanks_as(chart, LXW_CHART_BLANKS_AS_GAP);
+  return chart;
+}
+
+void Report::xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc,
+                       Col yc, const std::string& name, std::uint32_t colour, float line_width,
+                       std::uint8_t dash) {
+  lxw_chart_series* s = check_ptr(chart_add_series(chart, nullptr, nullptr), "chart_add_series");
+  // A scatter series needs categories (x) AND values (y), or libxlsxwriter drops the chart.
+  chart_series_set_categories(s, keep(sheet), r0, xc, r1, xc);
+  chart_series_set_values(s, keep(sheet), r0, yc, r1, yc);
+  chart_series_set_name(s, keep(name));
+  lxw_chart_line line{};
+  line.color = colour;
+  line.width = line_width;
+  line.dash_type = dash;
+  chart_series_set_line(s, &line);
+  chart_series_set_marker_type(s, LXW_CHART_MARKER_NONE);
+}
+
+void Report::insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale,
+                          double y_scale) {
+  lxw_chart_options o{};
+  o.x_scale = x_scale * t_.chart_width / 480.0;  // libxlsxwriter's default chart: 480 × 288 px
+  o.y_scale = y_scale * t_.chart_height / 288.0;
+  o.x_offset = 4;
+  o.y_offset = 4;
+  check(worksheet_insert_chart_opt(ws, at.row, at.col, chart, &o), "worksheet_insert_chart");
+}
+
+// ---- names -----------------------------------------------------------------------------
+
+std::string Report::line_name(std::uint32_t i) const {
+  if (d_.scenario && i < d_.scenario->scenario.lines.size())
+    return d_.scenario->scenario.lines[i].name;
+  if (i < d_.statistics.lines.size()) return d_.statistics.lines[i].name;
+  return fmt::format("line {}", i + 1);
+}
+
+double Report::line_chainage(std::uint32_t i) const {
+  if (d_.scenario && i < d_.scenario->scenario.lines.size())
+    return d_.scenario->scenario.lines[i].x;
+  if (i < d_.statistics.lines.size()) return d_.statistics.lines[i].chainage;
+  return kNaN;
+}
+
+std::optional<std::uint32_t> Report::line_index(const std::string& name) const {
+  if (d_.scenario) {
+    const auto& ls = d_.scenario->scenario.lines;
+    for (std::size_t i = 0; i < ls.size(); ++i)
+      if (ls[i].name == name) return static_cast<std::uint32_t>(i);
+  }
+  for (std::size_t i = 0; i < d_.statistics.lines.size(); ++i)
+    if (d_.statistics.lines[i].name == name) return static_cast<std::uint32_t>(i);
+  return std::nullopt;
+}
+
+// Excel's rules: at most 31 characters, none of []:*?/\, not starting or ending with ', unique
+// regardless of case. Apostrophes are replaced too, so that chart ranges never need escaping.
+std::string Report::barrier_sheet_name(const std::string& barrier,
+                                       std::vector<std::string>& used) {
+  std::string base = replace_all(t_.get("sheets", "barrier"), "{name}", barrier);
+  for (char& c : base)
+    if (std::string_view("[]:*?/\\'").find(c) != std::string_view::npos) c = '_';
+  if (base.empty()) base = "Barrier";
+  auto trimmed = [](std::string t) {
+    while (!t.empty() && t.back() == ' ') t.pop_back();
+    return t.empty() ? std::string("Barrier") : t;
+  };
+  base = trimmed(utf8_prefix(base, 31));
+  std::string name = base;
+  for (int k = 2; std::find(used.begin(), used.end(), lower(name)) != used.end(); ++k) {
+    const std::string suffix = fmt::format(" ({})", k);
+    name = trimmed(utf8_prefix(base, 31 - suffix.size())) + suffix;
+  }
+  used.push_back(lower(name));
+  return name;
+}
+
+// ---- Summary ---------------------------------------------------------------------------
+
+Row Report::check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
+                        bool subject) {
+  Col c0 = subject ? 0 : 1;
+  if (subject)
+    headings(ws, r, 0, "checks",
+             {"subject", "id", "what", "value", "limit", "unit", "rule", "status", "reason"});
+  else
+    headings(ws, r, 1, "checks", {"id", "what", "value", "limit", "unit", "rule", "status",
+                                  "reason"});
+  const Row first = ++r;
+  for (const auto& l : lines) {
+    Col c = c0;
+    if (subject) text(ws, r, c++, l.subject, wrap());
+    text(ws, r, c++, l.id, wrap());
+    text(ws, r, c++, l.what, wrap());
+    const char* kind = l.unit == "kJ"    ? "energy"
+                       : l.unit == "m"   ? "length"
+                       : l.unit == "m/s" ? "speed"
+                                         : "general";
+    num(ws, r, c++, l.value, number(kind));
+    num(ws, r, c++, l.limit, number(kind));
+    text(ws, r, c++, l.unit, wrap());
+    text(ws, r, c++, l.rule, wrap());
+    text(ws, r, c++, std::string(design::to_string(l.status)), bold());
+    text(ws, r, c++, l.reason, wrap());
+    ++r;
+  }
+  // The status column, coloured by conditional formats (the words decide, not static colours).
+  status_colours(ws, first, r - 1, static_cast<Col>(c0 + (subject ? 7 : 6)));
+  return r;
+}
+
+void Report::summary(lxw_worksheet* ws) {
+  page_setup(ws);
+  width(ws, 0, 0, 16);
+  width(ws, 1, 1, 20);
+  width(ws, 2, 2, 40);
+  width(ws, 3, 5, 12);
+  width(ws, 6, 6, 26);
+  width(ws, 7, 7, 12);
+  width(ws, 8, 8, 44);
+  width(ws, 9, 9, 12);
+
+  const LoadedScenario* sc = d_.scenario;
+  text(ws, 0, 0, t_.get("titles", "summary"), title());
+  check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
+  Row r = 2;
+  text(ws, r++, 0, t_.get("titles", "run"), section());
+  auto label = [&](std::string_view key) { text(ws, r, 0, t_.get("labels", key), bold()); };
+  label("project");
+  text(ws, r++, 2, sc ? sc->scenario.name : std::string());
+  if (sc && !sc->description.empty()) {
+    label("description");
+    text(ws, r++, 2, sc->description);
+  }
+  if (sc) {
+    label("scenario_file");
+    text(ws, r++, 2, sc->file.string());
+  }
+  label("date");
+  {
+    const auto ymd = parse_date(d_.date);
+    lxw_datetime dt{static_cast<int>(ymd.year()), static_cast<int>(unsigned(ymd.month())),
+                    static_cast<int>(unsigned(ymd.day())), 0, 0, 0.0};
+    lxw_format* f = number("date");
+    format_set_align(f, LXW_ALIGN_LEFT);
+    check(worksheet_write_datetime(ws, r++, 2, &dt, f), "worksheet_write_datetime");
+  }
+  label("version");
+  text(ws, r++, 2, d_.pierre_version);
+  label("seed");
+  if (d_.seed <= (std::uint64_t{1} << 53)) {  // exact as a double
+    lxw_format* f = number("count");
+    num(ws, r++, 2, static_cast<double>(d_.seed), f);
+  } else {
+    text(ws, r++, 2, std::to_string(d_.seed));  // a double would round it
+  }
+  label("throws");
+  count(ws, r++, 2, d_.throws);
+  label("trajectories");
+  count(ws, r++, 2, d_.total_trajectories ? d_.total_trajectories : d_.statistics.trajectories);
+  label("rule_sets");
+  if (d_.rule_sets.empty()) text(ws, r++, 2, t_.get("labels", "none"));
+  for (const auto& rs : d_.rule_sets) text(ws, r++, 2, rs);
+  if (d_.statistics.runout.count > 0) {
+    label("runout");
+    const auto& ro = d_.statistics.runout;
+    num(ws, r, 2, ro.p50, number("length"));
+    num(ws, r, 3, ro.p95, number("length"));
+    num(ws, r, 4, ro.p99, number("length"));
+    num(ws, r++, 5, ro.max, number("length"));
+  }
+
+  // Recommended barriers.
+  if (!d_.barriers.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "barriers"), section());
+    headings(ws, r++, 0, "barriers",
+             {"name", "line", "rules", "chainage", "energy_class", "class_mel", "class_sel",
+              "mel_req", "sel_req", "interception_height"},
+             45);
+    for (const auto& b : d_.barriers) {
+      text(ws, r, 0, b.spec.name);
+      text(ws, r, 1, b.spec.line);
+      text(ws, r, 2, b.rules_name.empty() ? b.spec.rules : b.rules_name, wrap());
+      num(ws, r, 3, b.chainage, number("coordinate"));
+      if (b.energy_class) {
+        num(ws, r, 4, b.energy_class->number, number("count"));
+        num(ws, r, 5, b.energy_class->mel_kJ, number("energy"));
+        num(ws, r, 6, b.energy_class->sel_kJ, number("energy"));
+      } else {
+        text(ws, r, 4, t_.get("labels", "none"));
+      }
+      num(ws, r, 7, b.MEL_req_kJ, number("energy"));
+      num(ws, r, 8, b.SEL_req_kJ, number("energy"));
+      num(ws, r, 9, b.h_i, number("length"));
+      ++r;
+    }
+  }
+
+  // Observation lines.
+  if (!d_.statistics.lines.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "lines"), section());
+    headings(ws, r++, 0, "lines",
+             {"name", "chainage", "count", "not_reached", "speed_mean", "speed_p95",
+              "height_p95", "energy_p95", "energy_max"},
+             45);
+    for (const auto& l : d_.statistics.lines) {
+      text(ws, r, 0, l.name);
+      num(ws, r, 1, l.chainage, number("coordinate"));
+      count(ws, r, 2, l.count);
+      count(ws, r, 3, l.not_reached);
+      num(ws, r, 4, l.count ? l.speed.mean : kNaN, number("speed"));
+      num(ws, r, 5, l.count ? l.speed.p95 : kNaN, number("speed"));
+      num(ws, r, 6, l.count ? l.height.p95 : kNaN, number("length"));
+      num(ws, r, 7, l.count ? l.translational_energy.p95 / 1000 : kNaN, number("energy"));
+      num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy"));
+      ++r;
+    }
+  }
+
+  // Every check line.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "checks"), section());
+  const Row head = r;
+  r = check_table(ws, r, d_.checks, true);
+  check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, 9), "worksheet_print_area");
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+}
+
+// ---- Inputs ----------------------------------------------------------------------------
+
+void Report::inputs(lxw_worksheet* ws) {
+  page_setup(ws);
+  width(ws, 0, 0, 30);
+  width(ws, 1, 8, 16);
+  text(ws, 0, 0, t_.get("titles", "inputs"), title());
+  Row r = 2;
+  const LoadedScenario* sc = d_.scenario;
+  if (sc) {
+    const auto& s = sc->scenario;
+    text(ws, r++, 0, t_.get("titles", "simulation"), section());
+    headings(ws, r++, 0, "simulation",
+             {"seed", "throws", "gravity", "max_time", "max_impacts", "stop_head_factor",
+              "max_sliding_speed"});
+    if (s.settings.seed <= (std::uint64_t{1} << 53))
+      num(ws, r, 0, static_cast<double>(s.settings.seed), number("count"));
+    else
+      text(ws, r, 0, std::to_string(s.settings.seed));
+    count(ws, r, 1, s.settings.throws);
+    num(ws, r, 2, s.settings.gravity, number("material"));
+    num(ws, r, 3, s.settings.max_time, number("time"));
+    num(ws, r, 4, static_cast<double>(s.settings.max_impacts), number("count"));
+    num(ws, r, 5, s.settings.stop_head_factor, number("factor"));
+    num(ws, r++, 6, s.settings.max_sliding_speed, number("speed"));
+
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "materials"), section());
+    if (!sc->materials_file.empty()) {
+      text(ws, r, 0, t_.get("labels", "materials_file"), bold());
+      text(ws, r++, 1, sc->materials_file.string());
+    }
+    headings(ws, r++, 0, "materials",
+             {"name", "source", "normal_energy", "normal_energy_k", "tangential_energy",
+              "tangential_energy_k", "roughness", "friction_angle"});
+    for (const auto& m : s.materials) {
+      text(ws, r, 0, m.name);
+      text(ws, r, 1, m.source, wrap());
+      num(ws, r, 2, m.normal_energy, number("material"));
+      num(ws, r, 3, m.normal_energy_k, number("material"));
+      num(ws, r, 4, m.tangential_energy, number("material"));
+      num(ws, r, 5, m.tangential_energy_k, number("material"));
+      num(ws, r, 6, m.roughness, number("material"));
+      num(ws, r++, 7, m.friction_angle_deg, number("angle"));
+    }
+
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "blocks"), section());
+    headings(ws, r++, 0, "blocks",
+             {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"});
+    for (const auto& b : sc->block_groups) {
+      text(ws, r, 0, b.id);
+      num(ws, r, 1, b.mass, number("mass"));
+      num(ws, r, 2, b.volume, number("volume"));
+      num(ws, r, 3, b.density, number("density"));
+      num(ws, r, 4, b.shape_min, number("factor"));
+      num(ws, r, 5, b.shape_max, number("factor"));
+      count(ws, r++, 6, b.count);
+    }
+
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "sources"), section());
+    headings(ws, r++, 0, "sources", {"name", "x", "z", "vx", "vz", "omega"});
+    for (const auto& so : s.sources) {
+      text(ws, r, 0, so.name);
+      num(ws, r, 1, so.position.x, number("coordinate"));
+      num(ws, r, 2, so.position.z, number("coordinate"));
+      num(ws, r, 3, so.velocity.x, number("speed"));
+      num(ws, r, 4, so.velocity.z, number("speed"));
+      num(ws, r++, 5, so.omega, number("speed"));
+    }
+
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "observation_lines"), section());
+    headings(ws, r++, 0, "observation_lines", {"name", "x"});
+    for (const auto& l : s.lines) {
+      text(ws, r, 0, l.name);
+      num(ws, r++, 1, l.x, number("coordinate"));
+    }
+  }
+
+  // Barriers: one column per barrier, one row per input.
+  if (!d_.barriers.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "barrier_inputs"), section());
+    text(ws, r, 0, h("barrier_inputs", "field"), heading());
+    for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i)
+      text(ws, r, static_cast<Col>(1 + i), d_.barriers[i].spec.name, heading());
+    ++r;
+    const Row top = r;
+    auto row = [&](std::string_view key) {
+      text(ws, r, 0, h("barrier_inputs", key), bold());
+      return r++;
+    };
+    const Row line = row("line"), rules = row("rules"), block = row("design_block"),
+              volume = row("volume"), density = row("density"), pct = row("percentile"),
+              df = row("free_board_diameter"), dq = row("data_quality"),
+              cls = row("energy_class"), mel = row("mel"), sel = row("sel"),
+              height = row("height"), el_mel = row("elongation_mel"),
+              el_sel = row("elongation_sel"), dist = row("distance_to_object"),
+              resid = row("residual_height"), acc_e = row("acceptable_energy"),
+              acc_h = row("acceptable_height"), obs = row("observed_file");
+    (void)top;
+    for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i) {
+      const auto& s = d_.barriers[i].spec;
+      const Col c = static_cast<Col>(1 + i);
+      text(ws, line, c, s.line);
+      text(ws, rules, c, s.rules);
+      using K = design::DesignBlock::Kind;
+      const auto& db = s.design_block;
+      text(ws, block, c,
+           db.kind == K::given     ? "given"
+           : db.kind == K::largest ? "largest"
+                                   : "percentile");
+      if (db.kind == K::given) num(ws, volume, c, db.volume, number("volume"));
+      if (db.density > 0) num(ws, density, c, db.density, number("density"));
+      if (db.kind == K::percentile) num(ws, pct, c, db.percentile, number("general"));
+      opt(ws, df, c, s.free_board_diameter, number("length"));
+      std::string q;
+      for (const auto& [k, v] : s.data_quality) q += (q.empty() ? "" : "; ") + k + " = " + v;
+      text(ws, dq, c, q, wrap());
+      if (s.candidate) {
+        const auto& cb = *s.candidate;
+        if (cb.energy_class) num(ws, cls, c, *cb.energy_class, number("count"));
+        opt(ws, mel, c, cb.mel_kJ, number("energy"));
+        opt(ws, sel, c, cb.sel_kJ, number("energy"));
+        opt(ws, height, c, cb.height, number("length"));
+        opt(ws, el_mel, c, cb.elongation_mel, number("length"));
+        opt(ws, el_sel, c, cb.elongation_sel, number("length"));
+        opt(ws, dist, c, cb.distance_to_object, number("length"));
+        opt(ws, resid, c, cb.residual_height, number("length"));
+      }
+      opt(ws, acc_e, c, s.acceptable_energy_exceedance, number("probability"));
+      opt(ws, acc_h, c, s.acceptable_height_exceedance, number("probability"));
+      text(ws, obs, c, s.observed_file);
+    }
+  }
+
+  // The scenario file as read, one line per row.
+  if (sc) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "scenario_text"), section());
+    text(ws, r++, 0, sc->file.string(), note());
+    std::size_t line_no = 1, p = 0;
+    const std::string& s = sc->text;
+    while (p < s.size()) {
+      std::size_t e = s.find('\n', p);
+      if (e == std::string::npos) e = s.size();
+      std::string l = s.substr(p, e - p);
+      if (!l.empty() && l.back() == '\r') l.pop_back();
+      num(ws, r, 0, static_cast<double>(line_no++), number("count"));
+      text(ws, r++, 1, l);
+      p = e + 1;
+    }
+  }
+}
+
+// ---- a barrier -------------------------------------------------------------------------
+
+void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b) {
+  page_setup(ws);
+  width(ws, 0, 0, 34);
+  width(ws, 1, 12, 14);
+  text(ws, 0, 0, replace_all(t_.get("titles", "barrier"), "{name}", b.spec.name), title());
+  check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
+  Row r = 2;
+  auto kv_text = [&](std::string_view label, const std::string& v) {
+    text(ws, r, 0, std::string(label), bold());
+    text(ws, r++, 1, v);
+  };
+  kv_text(h("barriers", "line"), fmt::format("{} ({} m)", b.spec.line, format_number(b.chainage)));
+  kv_text(t_.get("labels", "rules"),
+          fmt::format("{} — {}", b.rules_name.empty() ? b.spec.rules : b.rules_name,
+                      b.rules_title));
+  if (!b.rules_source.empty()) {
+    text(ws, r++, 1, b.rules_source, note());
+  }
+  text(ws, r, 0, t_.get("labels", "crossings"), bold());
+  count(ws, r++, 1, b.crossings);
+  text(ws, r, 0, t_.get("labels", "not_reached"), bold());
+  count(ws, r++, 1, b.not_reached);
+  text(ws, r, 0, t_.get("labels", "bootstrap_seed"), bold());
+  if (b.bootstrap_seed <= (std::uint64_t{1} << 53))
+    num(ws, r++, 1, static_cast<double>(b.bootstrap_seed), number("count"));
+  else
+    text(ws, r++, 1, std::to_string(b.bootstrap_seed));
+
+  // The sample at the line, from the report's crossings (first crossing in the main direction).
+  std::vector<double> speed, height, energy, rotational;
+  const auto li = line_index(b.spec.line);
+  const int dir = d_.scenario ? d_.scenario->scenario.profile.main_direction() : 1;
+  if (li) {
+    std::uint64_t last = std::numeric_limits<std::uint64_t>::max();
+    for (const auto& c : d_.crossings) {
+      if (c.line != *li || c.direction != dir || c.trajectory == last) continue;
+      last = c.trajectory;
+      speed.push_back(c.speed);
+      height.push_back(c.height);
+      energy.push_back(c.translational_energy / 1000);
+      rotational.push_back(c.rotational_energy / 1000);
+    }
+  }
+
+  // Statistics: one row per statistic, one column per quantity.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "statistics"), section());
+  struct Q {
+    const design::QuantityFit* fit;
+    const stats::SampleSummary* summary;
+    std::string_view key, fmt;
+    const std::vector<double>* sample;  // for the empirical percentiles (may be empty)
+  };
+  std::vector<Q> qs = {{&b.speed, &b.speed.summary, "speed", "speed", &speed},
+                       {&b.height, &b.height.summary, "height", "length", &height},
+                       {&b.energy, &b.energy.summary, "energy", "energy", &energy},
+                       {nullptr, &b.rotational_energy, "rotational_energy", "energy", &rotational}};
+  const std::vector<double> none;
+  if (b.observed_speed) qs.push_back({&*b.observed_speed, &b.observed_speed->summary,
+                                      "observed_speed", "speed", &none});
+  if (b.observed_height) qs.push_back({&*b.observed_height, &b.observed_height->summary,
+                                       "observed_height", "length", &none});
+  if (b.observed_energy) qs.push_back({&*b.observed_energy, &b.observed_energy->summary,
+                                       "observed_energy", "energy", &none});
+  text(ws, r, 0, h("statistics", "statistic"), heading());
+  for (std::size_t i = 0; i < qs.size(); ++i)
+    text(ws, r, static_cast<Col>(1 + i), h("statistics", qs[i].key), heading());
+  check(worksheet_set_row(ws, r++, 30, nullptr), "worksheet_set_row");
+  // P50 / P95 (empirical, type 7) of the sample drawn from the report's crossings.
+  const char* rows[] = {"count", "mean", "sd", "min", "max", "p50", "p95", "weibull_k",
+                        "weibull_lambda", "weibull_ks_d", "weibull_ks_p", "lognormal_mu",
+                        "lognormal_sigma", "lognormal_ks_d", "lognormal_ks_p"};
+  for (const char* stat : rows) {
+    const std::string_view s = stat;
+    text(ws, r, 0, h("statistics", s), bold());
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      const Q& q = qs[i];
+      const Col c = static_cast<Col>(1 + i);
+      lxw_format* qf = number(q.fmt);
+      const auto& sm = *q.summary;
+      if (s == "count") count(ws, r, c, sm.count);
+      else if (s == "mean") num(ws, r, c, sm.count ? sm.mean : kNaN, qf);
+      else if (s == "sd") num(ws, r, c, sm.count > 1 ? sm.standard_deviation : kNaN, qf);
+      else if (s == "min") num(ws, r, c, sm.count ? sm.min : kNaN, qf);
+      else if (s == "max") num(ws, r, c, sm.count ? sm.max : kNaN, qf);
+      else if (s == "p50" || s == "p95") {
+        if (!q.sample->empty()) num(ws, r, c, stats::percentile(*q.sample, s == "p50" ? 50 : 95), qf);
+      } else if (!q.fit) {
+        continue;
+      } else if (s == "weibull_k" && q.fit->weibull) num(ws, r, c, q.fit->weibull->shape, number("parameter"));
+      else if (s == "weibull_lambda" && q.fit->weibull) num(ws, r, c, q.fit->weibull->scale, qf);
+      else if (s == "weibull_ks_d" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->statistic, number("parameter"));
+      else if (s == "weibull_ks_p" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->p_value_stephens, number("parameter"));
+      else if (s == "lognormal_mu" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->mu, number("parameter"));
+      else if (s == "lognormal_sigma" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->sigma, number("parameter"));
+      else if (s == "lognormal_ks_d" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->statistic, number("parameter"));
+      else if (s == "lognormal_ks_p" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->p_value_stephens, number("parameter"));
+    }
+    ++r;
+  }
+  for (const auto& q : qs)
+    if (q.fit && !q.fit->error.empty())
+      text(ws, r++, 0, fmt::format("{}: {}", h("statistics", q.key), q.fit->error), note());
+
+  // Bootstrap intervals.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "bootstrap"), section());
+  headings(ws, r++, 0, "bootstrap",
+           {"quantity", "estimate", "lower", "upper", "half_width", "confidence", "resamples"});
+  struct BI {
+    std::string_view key, fmt;
+    const std::optional<stats::BootstrapInterval>* iv;
+  };
+  for (const BI& bi : {BI{"v_k", "speed", &b.v_k.interval}, BI{"h_k", "length", &b.h_k.interval},
+                       BI{"E_d", "energy", &b.E_d_interval}, BI{"h_i", "length", &b.h_i_interval}}) {
+    text(ws, r, 0, h("bootstrap", bi.key), bold());
+    if (*bi.iv) {
+      const auto& iv = **bi.iv;
+      num(ws, r, 1, iv.estimate, number(bi.fmt));
+      num(ws, r, 2, iv.lower, number(bi.fmt));
+      num(ws, r, 3, iv.upper, number(bi.fmt));
+      num(ws, r, 4, iv.estimate != 0 ? iv.half_width() / std::abs(iv.estimate) : kNaN,
+          number("percent"));
+      num(ws, r, 5, iv.confidence, number("percent"));
+      count(ws, r, 6, iv.resamples);
+    } else {
+      text(ws, r, 1, t_.get("labels", "none"), note());
+    }
+    ++r;
+  }
+
+  // Design table (Table 4.1's columns).
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "design"), section());
+  headings(ws, r++, 1, "design", {"v_d", "m_d", "E_d", "sel_req", "mel_req", "h_i", "energy_class"},
+           45);
+  text(ws, r, 0, b.spec.name, bold());
+  num(ws, r, 1, b.v_d, number("speed"));
+  num(ws, r, 2, b.m_d, number("mass"));
+  num(ws, r, 3, b.E_d_kJ, number("energy"));
+  num(ws, r, 4, b.SEL_req_kJ, number("energy"));
+  num(ws, r, 5, b.MEL_req_kJ, number("energy"));
+  num(ws, r, 6, b.h_i, number("length"));
+  if (b.energy_class)
+    num(ws, r, 7, b.energy_class->number, number("count"));
+  else
+    text(ws, r, 7, t_.get("labels", "none"));
+  r += 2;
+
+  // The factors and design quantities, with how each was obtained.
+  text(ws, r++, 0, t_.get("titles", "factors"), section());
+  headings(ws, r++, 0, "factors", {"quantity", "value", "unit", "how"});
+  auto fr = [&](std::string_view key, double v, std::string_view kind, std::string_view unit,
+                const std::string& how) {
+    text(ws, r, 0, h("factors", key), bold());
+    num(ws, r, 1, v, number(kind));
+    text(ws, r, 2, std::string(unit));
+    text(ws, r, 3, how);
+    ++r;
+  };
+  fr("v_k_weibull", b.v_k.weibull, "speed", "m/s", "");
+  fr("v_k_empirical", b.v_k.empirical, "speed", "m/s", "");
+  fr("v_k", b.v_k.value, "speed", "m/s", "");
+  fr("gamma_F", b.gamma_F.value, "factor", "", b.gamma_F.how);
+  fr("v_d", b.v_d, "speed", "m/s", "v_k · γF");
+  fr("density", b.design_density, "density", "kg/m³", "");
+  fr("volume", b.design_volume, "volume", "m³", "");
+  fr("gamma_M", b.gamma_M.value, "factor", "", b.gamma_M.how);
+  fr("m_d", b.m_d, "mass", "kg", "ρ · Vol · γM");
+  fr("E_d", b.E_d_kJ, "energy", "kJ", "½ m_d v_d²");
+  fr("gamma_E_SEL", b.gamma_E_SEL, "factor", "", "");
+  fr("sel_req", b.SEL_req_kJ, "energy", "kJ", "γE,SEL · E_d");
+  fr("gamma_E_MEL", b.gamma_E_MEL, "factor", "", "");
+  fr("mel_req", b.MEL_req_kJ, "energy", "kJ", "γE,MEL · E_d");
+  fr("h_k_weibull", b.h_k.weibull, "length", "m", "");
+  fr("h_k_empirical", b.h_k.empirical, "length", "m", "");
+  fr("h_k", b.h_k.value, "length", "m", "");
+  fr("gamma_h", b.gamma_h.value, "factor", "", b.gamma_h.how);
+  fr("h_d", b.h_d, "length", "m", "");
+  fr("free_board_diameter", b.free_board_diameter, "length", "m", "");
+  fr("free_board", b.free_board, "length", "m", "");
+  fr("h_i", b.h_i, "length", "m", "");
+  fr("h_max_sim", b.h_max_sim, "length", "m", "");
+  if (std::isfinite(b.candidate_mel_kJ)) fr("candidate_mel", b.candidate_mel_kJ, "energy", "kJ", "");
+  if (std::isfinite(b.candidate_sel_kJ)) fr("candidate_sel", b.candidate_sel_kJ, "energy", "kJ", "");
+  if (!b.residual_height_category.empty()) {
+    text(ws, r, 0, h("factors", "residual_height_category"), bold());
+    text(ws, r++, 1, b.residual_height_category);
+  }
+
+  // Exceedance (Table 4.2's columns).
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "exceedance"), section());
+  headings(ws, r++, 0, "exceedance",
+           {"what", "threshold", "unit", "simulated_weibull", "simulated_empirical",
+            "observed_weibull"});
+  for (const auto& e : b.exceedance) {
+    text(ws, r, 0, e.what, bold());
+    num(ws, r, 1, e.threshold, number(e.unit == "kJ" ? "energy" : "length"));
+    text(ws, r, 2, e.unit);
+    num(ws, r, 3, e.simulated_weibull, number("probability"));
+    num(ws, r, 4, e.simulated_empirical, number("probability"));
+    if (e.observed_weibull) num(ws, r, 5, *e.observed_weibull, number("probability"));
+    ++r;
+  }
+
+  // This barrier's check lines.
+  if (!b.checks.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "barrier_checks"), section());
+    // id in A (wide), what in B.. would be cut: keep Summary's columns minus the subject.
+    r = check_table(ws, r, b.checks, false);
+  }
+  if (!b.notes.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "notes"), section());
+    for (const auto& n : b.notes) text(ws, r++, 0, n, note());
+  }
+
+  // ---- charts and their data ----
+  ++r;
+  const Row chart_row = r;
+  const Row rows_per_chart = static_cast<Row>(std::ceil(t_.chart_height / 20.0)) + 1;
+  Row data_row = chart_row + 3 * rows_per_chart + 1;
+
+  text(ws, data_row++, 0, t_.get("titles", "chart_data"), section());
+  text(ws, data_row++, 0,
+       replace_all(replace_all(replace_all(h("histogram", "source"), "{n}",
+                                           std::to_string(speed.size())),
+                               "{line}", b.spec.line),
+                   "{total}", std::to_string(b.crossings)),
+       note());
+  // Print the tables and charts; the data block stays on the sheet, out of the print area.
+  check(worksheet_print_area(ws, 0, 0, data_row - 3, 8), "worksheet_print_area");
+
+  struct Plot {
+    std::string_view key, fmt;
+    const std::vector<double>* sample;
+    const design::QuantityFit* fit;
+  };
+  const Plot plots[] = {{"speed", "speed", &speed, &b.speed},
+                        {"height", "length", &height, &b.height},
+                        {"energy", "energy", &energy, &b.energy}};
+  for (std::size_t p = 0; p < 3; ++p) {
+    const Plot& pl = plots[p];
+    const auto& x = *pl.sample;
+    const auto& fit = *pl.fit;
+    ++data_row;
+    text(ws, data_row++, 0, h("statistics", pl.key), section());
+    const Row top = data_row;
+    headings(ws, data_row++, 0, "histogram",
+             {"bin_lower", "bin_upper", "count", "density", "outline_x", "outline_y", "curve_x",
+              "weibull_pdf", "lognormal_pdf", "empirical_cdf", "weibull_cdf", "lognormal_cdf"});
+    const Row r0 = data_row;
+    // Curve range: the histogram's, or the fit's central 99.9 % when there is no sample.
+    const Histogram hg = histogram(x, t_.histogram_bins);
+    double lo = hg.lo, hi = hg.lo + hg.width * static_cast<double>(hg.counts.size());
+    if (x.empty()) {
+      lo = 0;
+      hi = fit.weibull ? stats::quantile(*fit.weibull, 0.999)
+                       : (fit.summary.count ? fit.summary.max : 1.0);
+      if (!(hi > lo)) hi = lo + 1;
+    }
+    lxw_format* qf = number(pl.fmt);
+    // Bins.
+    for (std::size_t i = 0; i < hg.counts.size(); ++i) {
+      const double a = hg.lo + hg.width * static_cast<double>(i);
+      num(ws, r0 + static_cast<Row>(i), 0, a, qf);
+      num(ws, r0 + static_cast<Row>(i), 1, a + hg.width, qf);
+      count(ws, r0 + static_cast<Row>(i), 2, hg.counts[i]);
+      num(ws, r0 + static_cast<Row>(i), 3, hg.density[i], number("parameter"));
+    }
+    // The outline of the columns: (e_i, 0), (e_i, d_i), (e_i+1, d_i), (e_i+1, 0), ...
+    Row o = r0;
+    for (std::size_t i = 0; i < hg.counts.size(); ++i) {
+      const double a = hg.lo + hg.width * static_cast<double>(i), e = a + hg.width;
+      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, hg.density[i]},
+                            std::pair{e, hg.density[i]}, std::pair{e, 0.0}}) {
+        num(ws, o, 4, px, qf);
+        num(ws, o++, 5, py, number("parameter"));
+      }
+    }
+    // Curves on an even grid.
+    const int n = t_.curve_points;
+    std::vector<double> grid(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
+    const std::vector<double> ecdf =
+        x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
+    for (int i = 0; i < n; ++i) {
+      const Row rr = r0 + static_cast<Row>(i);
+      const double g = grid[static_cast<std::size_t>(i)];
+      num(ws, rr, 6, g, qf);
+      if (fit.weibull) {
+        num(ws, rr, 7, stats::pdf(*fit.weibull, g), number("parameter"));
+        num(ws, rr, 10, stats::cdf(*fit.weibull, g), number("parameter"));
+      }
+      if (fit.lognormal) {
+        num(ws, rr, 8, stats::pdf(*fit.lognormal, g), number("parameter"));
+        num(ws, rr, 11, stats::cdf(*fit.lognormal, g), number("parameter"));
+      }
+      num(ws, rr, 9, ecdf[static_cast<std::size_t>(i)], number("parameter"));
+    }
+    data_row = std::max<Row>(o, r0 + static_cast<Row>(n)) + 1;
+    (void)top;
+
+    // The histogram chart: columns' outline, Weibull and log-normal densities.
+    const std::string key(pl.key);
+    lxw_chart* hc = nullptr;
+    const Row rn = r0 + static_cast<Row>(n) - 1;
+    if (!hg.counts.empty() || fit.weibull || fit.lognormal) {
+      hc = scatter_chart(key + "_histogram", b.spec.name);
+      if (!hg.counts.empty())
+        xy_series(hc, sheet, r0, o - 1, 4, 5, h("histogram", "histogram"), t_.colour("histogram"),
+                  1.25f);
+      if (fit.weibull)
+        xy_series(hc, sheet, r0, rn, 6, 7, h("histogram", "weibull_pdf"), t_.colour("weibull"),
+                  2.0f);
+      if (fit.lognormal)
+        xy_series(hc, sheet, r0, rn, 6, 8, h("histogram", "lognormal_pdf"),
+                  t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
+      chart_axis_set_min(hc->x_axis, lo);
+      chart_axis_set_max(hc->x_axis, hi);
+      chart_axis_set_min(hc->y_axis, 0);
+      chart_axis_set_num_format(hc->x_axis, keep(t_.get("formats", "general")));
+      insert_chart(ws, {chart_row + static_cast<Row>(p) * rows_per_chart, 0}, hc);
+    }
+    // The CDF chart: empirical against fitted.
+    if (!x.empty() || fit.weibull || fit.lognormal) {
+      lxw_chart* cc = scatter_chart(key + "_cdf", b.spec.name);
+      if (!x.empty())
+        xy_series(cc, sheet, r0, rn, 6, 9, h("histogram", "empirical_cdf"),
+                  t_.colour("empirical"), 2.0f);
+      if (fit.weibull)
+        xy_series(cc, sheet, r0, rn, 6, 10, h("histogram", "weibull_cdf"), t_.colour("weibull"),
+                  1.5f);
+      if (fit.lognormal)
+        xy_series(cc, sheet, r0, rn, 6, 11, h("histogram", "lognormal_cdf"),
+                  t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
+      chart_axis_set_min(cc->x_axis, lo);
+      chart_axis_set_max(cc->x_axis, hi);
+      chart_axis_set_min(cc->y_axis, 0);
+      chart_axis_set_max(cc->y_axis, 1);
+      chart_axis_set_num_format(cc->x_axis, keep(t_.get("formats", "general")));
+      // Right of the histogram: column A (34) + 3 columns of 14 ≈ 620 px at 7 px/char + padding.
+      insert_chart(ws, {chart_row + static_cast<Row>(p) * rows_per_chart, 5}, cc);
+    }
+  }
+}
+
+// ---- Profile ---------------------------------------------------------------------------
+
+void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
+  page_setup(ws);
+  width(ws, 0, 7, 12);
+  text(ws, 0, 0, t_.get("titles", "profile"), title());
+  const Row chart_row = 2;
+  const Row rows_for_chart = static_cast<Row>(std::ceil(1.8 * t_.chart_height / 20.0)) + 2;
+  Row r = chart_row + rows_for_chart;
+  text(ws, r++, 0, t_.get("titles", "chart_data"), section());
+  check(worksheet_print_area(ws, 0, 0, r - 2, 12), "worksheet_print_area");
+  const Row head = r;
+  text(ws, head, 0, h("profile", "profile"), heading());
+  text(ws, head, 2, h("profile", "paths"), heading());
+  text(ws, head, 4, h("profile", "lines"), heading());
+  text(ws, head, 6, h("profile", "barriers"), heading());
+  for (Col c = 0; c < 8; c += 2) {
+    text(ws, head + 1, c, h("profile", "x"), heading());
+    text(ws, head + 1, c + 1, h("profile", "z"), heading());
+  }
+  const Row r0 = head + 2;
+  lxw_format* xf = number("coordinate");
+
+  lxw_chart* chart = check_ptr(workbook_add_chart(wb_, LXW_CHART_SCATTER_STRAIGHT),
+                               "workbook_add_chart");
+  chart_title_set_name(chart, keep(t_.get("chart.profile", "title")));
+  chart_axis_set_name(chart->x_axis, keep(t_.get("chart.profile", "x_axis")));
+  chart_axis_set_name(chart->y_axis, keep(t_.get("chart.profile", "y_axis")));
+  chart_legend_set_position(chart, LXW_CHART_LEGEND_BOTTOM);
+  chart_show_blanks_as(chart, LXW_CHART_BLANKS_AS_GAP);
+  lxw_chart_line grid{};
+  grid.color = 0xD9D9D9;
+  grid.width = 0.5f;
+  chart_axis_major_gridlines_set_visible(chart->x_axis, LXW_TRUE);
+  chart_axis_major_gridlines_set_line(chart->x_axis, &grid);
+  chart_axis_major_gridlines_set_line(chart->y_axis, &grid);
+  chart_axis_set_label_position(chart->x_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
+  chart_axis_set_label_position(chart->y_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
+  bool any = false;
+  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
+
+  // Paths first so that the profile is drawn over them.
+  Row pr = r0;
+  for (const auto& path : d_.sample_paths) {
+    if (path.empty()) continue;
+    for (const auto& p : path) {
+      num(ws, pr, 2, p.x, xf);
+      num(ws, pr++, 3, p.z, xf);
+    }
+    ++pr;  // an empty row: a gap between paths
+  }
+  if (pr > r0) {
+    xy_series(chart, sheet, r0, pr - 2, 2, 3, h("profile", "paths"), t_.colour("paths"), 0.75f);
+    any = true;
+  }
+  if (d_.scenario) {
+    const auto& prof = d_.scenario->scenario.profile;
+    const auto& v = prof.vertices();
+    Row vr = r0;
+    for (const auto& p : v) {
+      num(ws, vr, 0, p.x, xf);
+      num(ws, vr++, 1, p.z, xf);
+      xmin = std::min(xmin, p.x);
+      xmax = std::max(xmax, p.x);
+    }
+    if (!v.empty()) {
+      xy_series(chart, sheet, r0, vr - 1, 0, 1, h("profile", "profile"), t_.colour("profile"),
+                2.25f);
+      any = true;
+    }
+    // Observation lines: vertical segments from the ground up.
+    Row lr = r0;
+    for (const auto& l : d_.scenario->scenario.lines) {
+      const auto g = prof.top_ground(l.x);
+      if (!g) continue;
+      num(ws, lr, 4, l.x, xf);
+      num(ws, lr++, 5, g->z, xf);
+      num(ws, lr, 4, l.x, xf);
+      num(ws, lr++, 5, g->z + t_.profile_line_height, xf);
+      ++lr;
+    }
+    if (lr > r0) {
+      xy_series(chart, sheet, r0, lr - 2, 4, 5, h("profile", "lines"), t_.colour("lines"), 1.25f,
+                LXW_CHART_LINE_DASH_DASH);
+    }
+    // Barriers: the candidate's height when known, else h_i.
+    Row br = r0;
+    for (const auto& b : d_.barriers) {
+      const auto g = prof.top_ground(b.chainage);
+      if (!g) continue;
+      const double hb = b.spec.candidate && b.spec.candidate->height ? *b.spec.candidate->height
+                                                                     : b.h_i;
+      if (!std::isfinite(hb)) continue;
+      num(ws, br, 6, b.chainage, xf);
+      num(ws, br++, 7, g->z, xf);
+      num(ws, br, 6, b.chainage, xf);
+      num(ws, br++, 7, g->z + hb, xf);
+      ++br;
+    }
+    if (br > r0) {
+      xy_series(chart, sheet, r0, br - 2, 6, 7, h("profile", "barriers"), t_.colour("barriers"),
+                3.5f);
+    }
+  }
+  if (any) {
+    if (xmax > xmin) {
+      chart_axis_set_min(chart->x_axis, xmin);
+      chart_axis_set_max(chart->x_axis, xmax);
+    }
+    insert_chart(ws, {chart_row, 0}, chart, 1.6, 1.6);
+  }
+}
+
+// ---- data sheets -----------------------------------------------------------------------
+
+Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
+                     const char* csv) {
+  const std::string key = shown < total ? "capped" : "complete";
+  std::string s = replace_all(t_.get("titles", key), "{shown}", std::to_string(shown));
+  s = replace_all(replace_all(s, "{total}", std::to_string(total)), "{file}", csv);
+  text(ws, r++, 0, s, note());
+  return r;
+}
+
+void Report::trajectories(lxw_worksheet* ws) {
+  page_setup(ws);
+  width(ws, 0, 17, 11);
+  width(ws, 1, 2, 14);
+  width(ws, 10, 10, 13);
+  text(ws, 0, 0, t_.get("titles", "trajectories"), title());
+  const std::size_t shown = std::min(d_.trajectories.size(), t_.trajectory_rows);
+  const std::uint64_t total = std::max<std::uint64_t>(d_.total_trajectories, d_.trajectories.size());
+  Row r = cap_note(ws, 1, shown, total, "trajectories.csv");
+  const Row head = r;
+  headings(ws, r++, 0, "trajectories",
+           {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x",
+            "stop_z", "runout", "stop_reason", "duration", "impacts", "first_impact_x",
+            "first_impact_z", "max_jump_height", "max_speed", "max_energy"},
+           45);
+  worksheet_freeze_panes(ws, r, 1);
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  const sim::Scenario* s = d_.scenario ? &d_.scenario->scenario : nullptr;
+  lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
+             *lf = number("length"), *tf = number("time"), *sf = number("speed"),
+             *ef = number("energy");
+  for (std::size_t i = 0; i < shown; ++i, ++r) {
+    const auto& t = d_.trajectories[i];
+    num(ws, r, 0, static_cast<double>(t.trajectory), cf);
+    if (s && t.source < s->sources.size()) text(ws, r, 1, s->sources[t.source].name);
+    else num(ws, r, 1, t.source, cf);
+    if (s && t.block < s->blocks.size()) text(ws, r, 2, s->blocks[t.block].id);
+    else num(ws, r, 2, t.block, cf);
+    num(ws, r, 3, t.throw_index, cf);
+    num(ws, r, 4, t.mass, mf);
+    num(ws, r, 5, t.start.x, xf);
+    num(ws, r, 6, t.start.z, xf);
+    num(ws, r, 7, t.stop.x, xf);
+    num(ws, r, 8, t.stop.z, xf);
+    num(ws, r, 9, t.runout(), lf);
+    text(ws, r, 10, std::string(sim::to_string(t.stop_reason)));
+    num(ws, r, 11, t.duration, tf);
+    num(ws, r, 12, t.impacts, cf);
+    if (t.has_first_impact) {
+      num(ws, r, 13, t.first_impact.x, xf);
+      num(ws, r, 14, t.first_impact.z, xf);
+    }
+    num(ws, r, 15, t.max_jump_height, lf);
+    num(ws, r, 16, t.max_speed, sf);
+    num(ws, r, 17, t.max_energy / 1000, ef);
+  }
+  const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
+  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 17), "worksheet_print_area");
+}
+
+void Report::crossings(lxw_worksheet* ws) {
+  page_setup(ws);
+  width(ws, 0, 14, 11);
+  width(ws, 1, 1, 16);
+  width(ws, 3, 3, 14);
+  text(ws, 0, 0, t_.get("titles", "crossings"), title());
+  const std::size_t shown = std::min(d_.crossings.size(), t_.crossing_rows);
+  const std::uint64_t total = std::max<std::uint64_t>(d_.total_crossings, d_.crossings.size());
+  Row r = cap_note(ws, 1, shown, total, "crossings.csv");
+  const Row head = r;
+  headings(ws, r++, 0, "crossings",
+           {"trajectory", "line", "chainage", "block", "mass", "time", "direction", "vx", "vz",
+            "speed", "omega", "translational_energy", "rotational_energy", "passing_height",
+            "sliding"},
+           45);
+  worksheet_freeze_panes(ws, r, 1);
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  const sim::Scenario* s = d_.scenario ? &d_.scenario->scenario : nullptr;
+  lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
+             *lf = number("length"), *tf = number("time"), *sf = number("speed"),
+             *ef = number("energy"), *gf = number("general");
+  for (std::size_t i = 0; i < shown; ++i, ++r) {
+    const auto& c = d_.crossings[i];
+    num(ws, r, 0, static_cast<double>(c.trajectory), cf);
+    text(ws, r, 1, line_name(c.line));
+    num(ws, r, 2, line_chainage(c.line), xf);
+    if (s && c.block < s->blocks.size()) text(ws, r, 3, s->blocks[c.block].id);
+    else num(ws, r, 3, c.block, cf);
+    num(ws, r, 4, c.mass, mf);
+    num(ws, r, 5, c.time, tf);
+    num(ws, r, 6, c.direction, gf);
+    num(ws, r, 7, c.velocity.x, sf);
+    num(ws, r, 8, c.velocity.z, sf);
+    num(ws, r, 9, c.speed, sf);
+    num(ws, r, 10, c.omega, sf);
+    num(ws, r, 11, c.translational_energy / 1000, ef);
+    num(ws, r, 12, c.rotational_energy / 1000, ef);
+    num(ws, r, 13, c.height, lf);
+    num(ws, r, 14, c.sliding ? 1 : 0, cf);
+  }
+  const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
+  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 14), "worksheet_print_area");
+}
+
+// ---- the whole workbook ----------------------------------------------------------------
+
+void Report::write() {
+  // Properties: a fixed creation time (the run's date at 00:00 UTC) for reproducible bytes.
+  const auto ymd = parse_date(d_.date);
+  const auto created = std::chrono::sys_days(ymd).time_since_epoch();
+  lxw_doc_properties props{};
+  const std::string title = d_.scenario ? d_.scenario->scenario.name : std::string("pierre");
+  const std::string comments =
+      fmt::format("pierre {}, seed {}", d_.pierre_version, d_.seed);
+  props.title = const_cast<char*>(title.c_str());
+  props.subject = const_cast<char*>(t_.get("titles", "summary").c_str());
+  props.author = const_cast<char*>("pierre");
+  props.comments = const_cast<char*>(comments.c_str());
+  props.created =
+      static_cast<time_t>(std::chrono::duration_cast<std::chrono::seconds>(created).count());
+  check(workbook_set_properties(wb_, &props), "workbook_set_properties");
+
+  // Create the sheets in the template's order (the tab order), then fill them.
+  std::vector<std::string> used;
+  auto add = [&](const std::string& name) {
+    const lxw_error e = workbook_validate_sheet_name(wb_, name.c_str());
+    if (e != LXW_NO_ERROR) fail(fmt::format("sheet name \"{}\"", name), e);
+    used.push_back(lower(name));
+    return check_ptr(workbook_add_worksheet(wb_, name.c_str()), "workbook_add_worksheet");
+  };
+  for (const char* k : {"summary", "inputs", "profile", "trajectories", "crossings"})
+    used.push_back(lower(t_.get("sheets", k)));
+  std::vector<std::string> barrier_names;
+  for (const auto& b : d_.barriers) barrier_names.push_back(barrier_sheet_name(b.spec.name, used));
+  used.clear();
+  std::map<std::string, lxw_worksheet*> sheets;
+  std::vector<lxw_worksheet*> barrier_sheets;
+  for (const auto& key : t_.order) {
+    if (key == "barriers") {
+      for (const auto& n : barrier_names) barrier_sheets.push_back(add(n));
+    } else {
+      sheets[key] = add(t_.get("sheets", key));
+    }
+  }
+  summary(sheets.at("summary"));
+  for (std::size_t i = 0; i < d_.barriers.size(); ++i)
+    barrier(barrier_sheets[i], barrier_names[i], d_.barriers[i]);
+  profile(sheets.at("profile"), t_.get("sheets", "profile"));
+  inputs(sheets.at("inputs"));
+  trajectories(sheets.at("trajectories"));
+  crossings(sheets.at("crossings"));
+  worksheet_activate(sheets.at("summary"));
+}
+
+}  // namespace
+
+void write_report(const std::filesystem::path& file, const ReportData& data,
+                  const ReportTemplate& tpl) {
+  parse_date(data.date);  // before anything is written
+  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  const fs::path tmp =
+      dir / fmt::format(".{}.partial-{}", file.filename().string(), static_cast<long>(::getpid()));
+  std::error_code ec;
+  fs::remove(tmp, ec);
+
+  lxw_workbook_options options{};
+  options.constant_memory = LXW_FALSE;  // charts need the cells to fill their caches
+  options.tmpdir = nullptr;
+  options.use_zip64 = LXW_FALSE;
+  const std::string tmp_name = tmp.string();
+  lxw_workbook* wb = workbook_new_opt(tmp_name.c_str(), &options);
+  if (!wb) throw std::runtime_error("report.xlsx: workbook_new failed (out of memory)");
+  try {
+    Report(wb, data, tpl).write();
+  } catch (...) {
+    lxw_workbook_free(wb);
+    fs::remove(tmp, ec);
+    throw;
+  }
+  const lxw_error e = workbook_close(wb);  // writes the file and frees the workbook
+  if (e != LXW_NO_ERROR) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error(fmt::format("report.xlsx: cannot write {}: {}", file.string(),
+                                         lxw_strerror(e)));
+  }
+  fs::rename(tmp, file, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    fs::remove(tmp, ec);
+    throw std::runtime_error(fmt::format("report.xlsx: cannot move the report into place as {}: {}",
+                                         file.string(), why));
+  }
+}
+
+}  // namespace pierre::io

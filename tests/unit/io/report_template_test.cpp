@@ -1,0 +1,117 @@
+// The report template reader (templates/report.toml): the shipped template loads with every
+// key the writer uses; each kind of mistake is an InputError naming the file, the line, the
+// dotted field and what was found.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "pierre/io/report_template.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using pierre::io::InputError;
+using pierre::io::load_report_template;
+using pierre::test::read_file;
+using pierre::test::TempDir;
+
+const std::filesystem::path kTemplate = PIERRE_SOURCE_DIR "/templates/report.toml";
+
+// The shipped template with the first occurrence of `from` replaced by `to`.
+std::string shipped_with(const std::string& from, const std::string& to) {
+  std::string s = read_file(kTemplate);
+  const auto p = s.find(from);
+  EXPECT_NE(p, std::string::npos) << from;
+  if (p != std::string::npos) s.replace(p, from.size(), to);
+  return s;
+}
+
+// 1-based line of the first occurrence of `needle` in `s`.
+long line_of(const std::string& s, const std::string& needle) {
+  const auto p = s.find(needle);
+  EXPECT_NE(p, std::string::npos) << needle;
+  return 1 + static_cast<long>(std::count(s.begin(), s.begin() + static_cast<long>(p), '\n'));
+}
+
+TEST(ReportTemplate, ShippedTemplateHasEveryKey) {
+  const auto t = load_report_template(kTemplate);
+  for (const auto& [section, keys] : pierre::io::report_template_sections())
+    for (const auto& k : keys) EXPECT_NO_THROW((void)t.get(section, k)) << section << "." << k;
+  for (const auto& k : pierre::io::report_template_colours())
+    EXPECT_NO_THROW((void)t.colour(k)) << k;
+  EXPECT_EQ(t.get("sheets", "summary"), "Summary");
+  EXPECT_EQ(t.get("headings.design", "mel_req"), "MEL_req (kJ)");
+  EXPECT_EQ(t.colour("fail_fill"), 0xFFC7CEu);
+  EXPECT_EQ(t.trajectory_rows, 10000u);
+  EXPECT_EQ(t.order.size(), 6u);
+  EXPECT_EQ(t.order.front(), "summary");
+  EXPECT_THROW((void)t.get("sheets", "nope"), std::out_of_range);
+}
+
+struct Bad {
+  std::string name, from, to;
+  long line;           // 0: the line of `line_needle` in the edited template
+  std::string line_needle;
+  std::string field;
+  std::string found;  // substring of found()
+};
+
+void PrintTo(const Bad& b, std::ostream* os) { *os << b.name; }
+
+class ReportTemplateError : public ::testing::TestWithParam<Bad> {};
+
+TEST_P(ReportTemplateError, NamesFileLineAndField) {
+  const Bad& b = GetParam();
+  TempDir dir;
+  const std::string text = shipped_with(b.from, b.to);
+  const auto file = dir.write("report.toml", text);
+  try {
+    (void)load_report_template(file);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    SCOPED_TRACE(e.what());
+    EXPECT_EQ(e.file(), file);
+    EXPECT_EQ(e.line(), b.line ? b.line : line_of(text, b.line_needle));
+    EXPECT_EQ(e.field(), b.field);
+    EXPECT_NE(e.found().find(b.found), std::string::npos) << e.found();
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ReportTemplateError,
+    ::testing::Values(
+        // A missing sheet name: the line of its table, the dotted field, "nothing".
+        Bad{"missing_sheet_name", "summary = \"Summary\"\n", "", 0, "[sheets]", "sheets.summary",
+            "nothing"},
+        Bad{"missing_heading", "status = \"Status\"\n", "", 0, "[headings.checks]",
+            "headings.checks.status", "nothing"},
+        Bad{"unknown_key", "mel_req = \"MEL_req (kJ)\"\nh_i", "mel_req = \"MEL_req (kJ)\"\nmell = 1\nh_i",
+            0, "mell = 1", "headings.design.mell", "unknown key"},
+        Bad{"bad_colour", "fail_fill = \"#FFC7CE\"", "fail_fill = \"red\"", 0, "fail_fill",
+            "colours.fail_fill", "\"red\""},
+        Bad{"bad_sheet_name", "profile = \"Profile\"", "profile = \"Pro[file]\"", 0,
+            "profile = \"Pro[file]\"", "sheets.profile", "Pro[file]"},
+        Bad{"order_incomplete", "\"crossings\"]", "\"summary\"]", 0, "order =", "sheets.order",
+            "an array"},
+        Bad{"heading_not_string", "count = \"Crossings\"", "count = 3", 0, "count = 3",
+            "headings.lines.count", "3"},
+        Bad{"rows_not_integer", "print = 200", "print = 2.5", 0, "print = 2.5", "rows.print",
+            "2.5"},
+        Bad{"missing_table", "[chart.profile]", "[chart.profil]", 0, "[chart.profil]",
+            "chart.profil", "unknown key"},
+        Bad{"syntax", "[sheets]", "[sheets", 0, "[sheets", "TOML syntax", ""}));
+
+TEST(ReportTemplate, MissingFile) {
+  TempDir dir;
+  try {
+    (void)load_report_template(dir.path() / "nope.toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 0);
+    EXPECT_EQ(e.found(), "no such file");
+  }
+}
+
+}  // namespace
