@@ -32,7 +32,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   std::map<std::string, Keys, std::less<>> s;
   s["sheets"] = kSheetKeys;
   s["formats"] = {"count",   "speed",     "length",   "coordinate",  "energy",  "mass",
-                  "volume",  "density",   "factor",   "parameter",   "probability",
+                  "volume",  "density",   "factor",   "parameter",   "scientific", "probability",
                   "percent", "time",      "angle",    "material",    "general", "date"};
   s["titles"] = {"summary",      "run",          "barriers",       "lines",
                  "checks",       "inputs",       "simulation",     "materials",
@@ -42,7 +42,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "notes",        "chart_data",   "profile",        "trajectories",
                  "crossings",    "capped",       "complete"};
   s["labels"] = {"project",       "description", "scenario_file", "date",        "version",
-                 "seed",          "throws",      "trajectories",  "rule_sets",   "runout",
+                 "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
                  "bootstrap_seed", "none"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",

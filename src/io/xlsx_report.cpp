@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -142,13 +143,20 @@ class Report {
  private:
   // -- formats
   lxw_format* add_format() { return check_ptr(workbook_add_format(wb_), "workbook_add_format"); }
-  lxw_format* number(std::string_view kind);  // a number format of the template, cached
+  // A number format of the template, cached; `align`: 0 as Excel does (right), 1 centred,
+  // 2 left.
+  lxw_format* number(std::string_view kind, int align = 0);
+  // The format of a check line's value: by unit, else by size (integers, tiny probabilities).
+  lxw_format* check_number(const std::string& unit, double v, int align);
   lxw_format* heading();
   lxw_format* title();
   lxw_format* section();
   lxw_format* note();
   lxw_format* bold();
   lxw_format* wrap();
+  lxw_format* centred();
+  lxw_format* top();
+  lxw_format* centred_bold();
   lxw_format* status_format(std::string_view status);  // for the conditional formats
 
   // -- cells
@@ -170,12 +178,15 @@ class Report {
     return t_.get("headings." + std::string(table), key);
   }
   const char* keep(std::string s) { return strings_.emplace_back(std::move(s)).c_str(); }
+  // Sets row r's height to show every wrapped text: (text, width of its cells in characters).
+  void fit_row(lxw_worksheet* ws, Row r,
+               std::initializer_list<std::pair<const std::string*, double>> cells);
   void page_setup(lxw_worksheet* ws);
   void status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c);
 
   // -- charts
   lxw_chart* scatter_chart(std::string_view chart_key, const std::string& name);
-  void xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc, Col yc,
+  lxw_chart_series* xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc, Col yc,
                  const std::string& name, std::uint32_t colour, float line_width,
                  std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
   void insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale = 1,
@@ -203,16 +214,29 @@ class Report {
   const ReportTemplate& t_;
   std::map<std::string, lxw_format*, std::less<>> formats_;
   std::deque<std::string> strings_;
+  std::deque<std::vector<lxw_row_t>> breaks_;  // kept alive until the workbook is written
 };
 
 // ---- formats ---------------------------------------------------------------------------
 
-lxw_format* Report::number(std::string_view kind) {
-  const std::string key = "num." + std::string(kind);
+lxw_format* Report::number(std::string_view kind, int align) {
+  const std::string key = fmt::format("num.{}.{}", kind, align);
   if (auto it = formats_.find(key); it != formats_.end()) return it->second;
   lxw_format* f = add_format();
   format_set_num_format(f, keep(t_.get("formats", kind)));
+  if (align == 1) format_set_align(f, LXW_ALIGN_CENTER);
+  if (align == 2) format_set_align(f, LXW_ALIGN_LEFT);
+  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
   return formats_[key] = f;
+}
+
+lxw_format* Report::check_number(const std::string& unit, double v, int align) {
+  if (unit == "kJ") return number("energy", align);
+  if (unit == "m") return number("length", align);
+  if (unit == "m/s") return number("speed", align);
+  if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15) return number("count", align);
+  if (std::isfinite(v) && v != 0 && std::abs(v) < 1e-3) return number("scientific", align);
+  return number("parameter", align);
 }
 
 lxw_format* Report::heading() {
@@ -270,6 +294,30 @@ lxw_format* Report::wrap() {
   return formats_["wrap"] = f;
 }
 
+lxw_format* Report::top() {
+  if (auto it = formats_.find("top"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  return formats_["top"] = f;
+}
+
+lxw_format* Report::centred() {
+  if (auto it = formats_.find("centred"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_align(f, LXW_ALIGN_CENTER);
+  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  return formats_["centred"] = f;
+}
+
+lxw_format* Report::centred_bold() {
+  if (auto it = formats_.find("centred_bold"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_bold(f);
+  format_set_align(f, LXW_ALIGN_CENTER);
+  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  return formats_["centred_bold"] = f;
+}
+
 lxw_format* Report::status_format(std::string_view status) {
   const std::string key = "status." + std::string(status);
   if (auto it = formats_.find(key); it != formats_.end()) return it->second;
@@ -288,6 +336,7 @@ void Report::text(lxw_worksheet* ws, Row r, Col c, const std::string& s, lxw_for
     if (f) check(worksheet_write_blank(ws, r, c, f), "worksheet_write_blank");
     return;
   }
+  if (!f) f = top();  // plain text sits at the top of a row made taller by wrapped neighbours
   constexpr std::size_t kMax = 32767;  // Excel's limit of a cell's text
   if (s.size() <= kMax) {
     check(worksheet_write_string(ws, r, c, s.c_str(), f), "worksheet_write_string");
@@ -311,6 +360,28 @@ void Report::headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
   Col c = c0;
   for (auto k : keys) text(ws, r, c++, h(table, k), heading());
   check(worksheet_set_row(ws, r, height, nullptr), "worksheet_set_row");
+}
+
+void Report::fit_row(lxw_worksheet* ws, Row r,
+                     std::initializer_list<std::pair<const std::string*, double>> cells) {
+  double lines = 1;
+  for (const auto& [text, w] : cells) {
+    double n = 0;
+    std::size_t p = 0;
+    while (p <= text->size()) {  // each line of the text wraps on its own
+      std::size_t e = text->find('\n', p);
+      if (e == std::string::npos) e = text->size();
+      std::size_t chars = 0;
+      for (std::size_t i = p; i < e; ++i)
+        if ((static_cast<unsigned char>((*text)[i]) & 0xC0) != 0x80) ++chars;
+      // An average character of text is narrower than Excel's width unit (the digit 0).
+      n += std::max(1.0, std::ceil(static_cast<double>(chars) / (w * 1.15)));
+      p = e + 1;
+    }
+    lines = std::max(lines, n);
+  }
+  if (lines > 1)
+    check(worksheet_set_row(ws, r, 15.0 * lines, nullptr), "worksheet_set_row");
 }
 
 void Report::page_setup(lxw_worksheet* ws) {
@@ -360,7 +431,7 @@ lxw_chart* Report::scatter_chart(std::string_view chart_key, const std::string& 
   return chart;
 }
 
-void Report::xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc,
+lxw_chart_series* Report::xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc,
                        Col yc, const std::string& name, std::uint32_t colour, float line_width,
                        std::uint8_t dash) {
   lxw_chart_series* s = check_ptr(chart_add_series(chart, nullptr, nullptr), "chart_add_series");
@@ -374,6 +445,7 @@ void Report::xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r
   line.dash_type = dash;
   chart_series_set_line(s, &line);
   chart_series_set_marker_type(s, LXW_CHART_MARKER_NONE);
+  return s;
 }
 
 void Report::insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale,
@@ -439,33 +511,49 @@ std::string Report::barrier_sheet_name(const std::string& barrier,
 
 Row Report::check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
                         bool subject) {
-  Col c0 = subject ? 0 : 1;
-  if (subject)
+  if (subject) {  // Summary: one column per field
     headings(ws, r, 0, "checks",
              {"subject", "id", "what", "value", "limit", "unit", "rule", "status", "reason"});
-  else
-    headings(ws, r, 1, "checks", {"id", "what", "value", "limit", "unit", "rule", "status",
-                                  "reason"});
+  } else {  // a barrier sheet (columns of 14): id, value, limit, unit, status, then merged text
+    headings(ws, r, 0, "checks", {"id", "value", "limit", "unit", "status"});
+    for (auto [c0, c1, key] : {std::tuple{5, 7, "what"}, std::tuple{8, 9, "rule"},
+                               std::tuple{10, 12, "reason"}})
+      check(worksheet_merge_range(ws, r, static_cast<Col>(c0), r, static_cast<Col>(c1),
+                                  h("checks", key).c_str(), heading()),
+            "worksheet_merge_range");
+  }
   const Row first = ++r;
   for (const auto& l : lines) {
-    Col c = c0;
-    if (subject) text(ws, r, c++, l.subject, wrap());
-    text(ws, r, c++, l.id, wrap());
-    text(ws, r, c++, l.what, wrap());
-    const char* kind = l.unit == "kJ"    ? "energy"
-                       : l.unit == "m"   ? "length"
-                       : l.unit == "m/s" ? "speed"
-                                         : "general";
-    num(ws, r, c++, l.value, number(kind));
-    num(ws, r, c++, l.limit, number(kind));
-    text(ws, r, c++, l.unit, wrap());
-    text(ws, r, c++, l.rule, wrap());
-    text(ws, r, c++, std::string(design::to_string(l.status)), bold());
-    text(ws, r, c++, l.reason, wrap());
+    const std::string status(design::to_string(l.status));
+    if (subject) {
+      text(ws, r, 0, l.subject, wrap());
+      text(ws, r, 1, l.id, wrap());
+      text(ws, r, 2, l.what, wrap());
+      num(ws, r, 3, l.value, check_number(l.unit, l.value, 1));
+      num(ws, r, 4, l.limit, check_number(l.unit, l.limit, 1));
+      text(ws, r, 5, l.unit, centred());
+      text(ws, r, 6, l.rule, wrap());
+      text(ws, r, 7, status, centred_bold());
+      text(ws, r, 8, l.reason, wrap());
+      fit_row(ws, r, {{&l.subject, 16}, {&l.id, 20}, {&l.what, 34}, {&l.rule, 26},
+                      {&l.reason, 44}});
+    } else {
+      text(ws, r, 0, l.id, wrap());
+      num(ws, r, 1, l.value, check_number(l.unit, l.value, 1));
+      num(ws, r, 2, l.limit, check_number(l.unit, l.limit, 1));
+      text(ws, r, 3, l.unit, centred());
+      text(ws, r, 4, status, centred_bold());
+      for (auto [c0, c1, t] : {std::tuple{5, 7, &l.what}, std::tuple{8, 9, &l.rule},
+                               std::tuple{10, 12, &l.reason}})
+        check(worksheet_merge_range(ws, r, static_cast<Col>(c0), r, static_cast<Col>(c1),
+                                    t->c_str(), wrap()),
+              "worksheet_merge_range");
+      fit_row(ws, r, {{&l.what, 42}, {&l.rule, 28}, {&l.reason, 42}});
+    }
     ++r;
   }
   // The status column, coloured by conditional formats (the words decide, not static colours).
-  status_colours(ws, first, r - 1, static_cast<Col>(c0 + (subject ? 7 : 6)));
+  status_colours(ws, first, r - 1, static_cast<Col>(subject ? 7 : 4));
   return r;
 }
 
@@ -473,10 +561,11 @@ void Report::summary(lxw_worksheet* ws) {
   page_setup(ws);
   width(ws, 0, 0, 16);
   width(ws, 1, 1, 20);
-  width(ws, 2, 2, 40);
-  width(ws, 3, 5, 12);
+  width(ws, 2, 2, 34);
+  width(ws, 3, 4, 12);
+  width(ws, 5, 5, 10);
   width(ws, 6, 6, 26);
-  width(ws, 7, 7, 12);
+  width(ws, 7, 7, 10);
   width(ws, 8, 8, 44);
   width(ws, 9, 9, 12);
 
@@ -509,25 +598,27 @@ void Report::summary(lxw_worksheet* ws) {
   text(ws, r++, 2, d_.pierre_version);
   label("seed");
   if (d_.seed <= (std::uint64_t{1} << 53)) {  // exact as a double
-    lxw_format* f = number("count");
-    num(ws, r++, 2, static_cast<double>(d_.seed), f);
+    num(ws, r++, 2, static_cast<double>(d_.seed), number("general", 2));
   } else {
     text(ws, r++, 2, std::to_string(d_.seed));  // a double would round it
   }
   label("throws");
-  count(ws, r++, 2, d_.throws);
+  num(ws, r++, 2, d_.throws, number("count", 2));
   label("trajectories");
-  count(ws, r++, 2, d_.total_trajectories ? d_.total_trajectories : d_.statistics.trajectories);
+  num(ws, r++, 2,
+      static_cast<double>(d_.total_trajectories ? d_.total_trajectories
+                                                : d_.statistics.trajectories),
+      number("count", 2));
   label("rule_sets");
   if (d_.rule_sets.empty()) text(ws, r++, 2, t_.get("labels", "none"));
   for (const auto& rs : d_.rule_sets) text(ws, r++, 2, rs);
   if (d_.statistics.runout.count > 0) {
-    label("runout");
     const auto& ro = d_.statistics.runout;
-    num(ws, r, 2, ro.p50, number("length"));
-    num(ws, r, 3, ro.p95, number("length"));
-    num(ws, r, 4, ro.p99, number("length"));
-    num(ws, r++, 5, ro.max, number("length"));
+    for (auto [key, v] : {std::pair{"runout_p50", ro.p50}, std::pair{"runout_p95", ro.p95},
+                          std::pair{"runout_p99", ro.p99}, std::pair{"runout_max", ro.max}}) {
+      label(key);
+      num(ws, r++, 2, v, number("length", 2));
+    }
   }
 
   // Recommended barriers.
@@ -542,17 +633,19 @@ void Report::summary(lxw_worksheet* ws) {
       text(ws, r, 0, b.spec.name);
       text(ws, r, 1, b.spec.line);
       text(ws, r, 2, b.rules_name.empty() ? b.spec.rules : b.rules_name, wrap());
-      num(ws, r, 3, b.chainage, number("coordinate"));
+      num(ws, r, 3, b.chainage, number("coordinate", 1));
       if (b.energy_class) {
-        num(ws, r, 4, b.energy_class->number, number("count"));
-        num(ws, r, 5, b.energy_class->mel_kJ, number("energy"));
-        num(ws, r, 6, b.energy_class->sel_kJ, number("energy"));
+        num(ws, r, 4, b.energy_class->number, number("count", 1));
+        num(ws, r, 5, b.energy_class->mel_kJ, number("energy", 1));
+        num(ws, r, 6, b.energy_class->sel_kJ, number("energy", 1));
       } else {
-        text(ws, r, 4, t_.get("labels", "none"));
+        text(ws, r, 4, t_.get("labels", "none"), centred());
       }
-      num(ws, r, 7, b.MEL_req_kJ, number("energy"));
-      num(ws, r, 8, b.SEL_req_kJ, number("energy"));
-      num(ws, r, 9, b.h_i, number("length"));
+      num(ws, r, 7, b.MEL_req_kJ, number("energy", 1));
+      num(ws, r, 8, b.SEL_req_kJ, number("energy", 1));
+      num(ws, r, 9, b.h_i, number("length", 1));
+      const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
+      fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
       ++r;
     }
   }
@@ -567,14 +660,14 @@ void Report::summary(lxw_worksheet* ws) {
              45);
     for (const auto& l : d_.statistics.lines) {
       text(ws, r, 0, l.name);
-      num(ws, r, 1, l.chainage, number("coordinate"));
-      count(ws, r, 2, l.count);
-      count(ws, r, 3, l.not_reached);
-      num(ws, r, 4, l.count ? l.speed.mean : kNaN, number("speed"));
-      num(ws, r, 5, l.count ? l.speed.p95 : kNaN, number("speed"));
-      num(ws, r, 6, l.count ? l.height.p95 : kNaN, number("length"));
-      num(ws, r, 7, l.count ? l.translational_energy.p95 / 1000 : kNaN, number("energy"));
-      num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy"));
+      num(ws, r, 1, l.chainage, number("coordinate", 1));
+      num(ws, r, 2, static_cast<double>(l.count), number("count", 1));
+      num(ws, r, 3, static_cast<double>(l.not_reached), number("count", 1));
+      num(ws, r, 4, l.count ? l.speed.mean : kNaN, number("speed", 1));
+      num(ws, r, 5, l.count ? l.speed.p95 : kNaN, number("speed", 1));
+      num(ws, r, 6, l.count ? l.height.p95 : kNaN, number("length", 1));
+      num(ws, r, 7, l.count ? l.translational_energy.p95 / 1000 : kNaN, number("energy", 1));
+      num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy", 1));
       ++r;
     }
   }
@@ -604,7 +697,7 @@ void Report::inputs(lxw_worksheet* ws) {
              {"seed", "throws", "gravity", "max_time", "max_impacts", "stop_head_factor",
               "max_sliding_speed"});
     if (s.settings.seed <= (std::uint64_t{1} << 53))
-      num(ws, r, 0, static_cast<double>(s.settings.seed), number("count"));
+      num(ws, r, 0, static_cast<double>(s.settings.seed), number("general", 1));
     else
       text(ws, r, 0, std::to_string(s.settings.seed));
     count(ws, r, 1, s.settings.throws);
@@ -631,7 +724,8 @@ void Report::inputs(lxw_worksheet* ws) {
       num(ws, r, 4, m.tangential_energy, number("material"));
       num(ws, r, 5, m.tangential_energy_k, number("material"));
       num(ws, r, 6, m.roughness, number("material"));
-      num(ws, r++, 7, m.friction_angle_deg, number("angle"));
+      num(ws, r, 7, m.friction_angle_deg, number("angle"));
+      fit_row(ws, r++, {{&m.source, 16}});
     }
 
     ++r;
@@ -708,7 +802,8 @@ void Report::inputs(lxw_worksheet* ws) {
       opt(ws, df, c, s.free_board_diameter, number("length"));
       std::string q;
       for (const auto& [k, v] : s.data_quality) q += (q.empty() ? "" : "; ") + k + " = " + v;
-      text(ws, dq, c, q, wrap());
+      text(ws, dq, c, keep(q), wrap());
+      fit_row(ws, dq, {{&strings_.back(), 16}});
       if (s.candidate) {
         const auto& cb = *s.candidate;
         if (cb.energy_class) num(ws, cls, c, *cb.energy_class, number("count"));
@@ -738,7 +833,7 @@ void Report::inputs(lxw_worksheet* ws) {
       if (e == std::string::npos) e = s.size();
       std::string l = s.substr(p, e - p);
       if (!l.empty() && l.back() == '\r') l.pop_back();
-      num(ws, r, 0, static_cast<double>(line_no++), number("count"));
+      num(ws, r, 0, static_cast<double>(line_no++), number("count", 2));
       text(ws, r++, 1, l);
       p = e + 1;
     }
@@ -898,7 +993,10 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
 
   // The factors and design quantities, with how each was obtained.
   text(ws, r++, 0, t_.get("titles", "factors"), section());
-  headings(ws, r++, 0, "factors", {"quantity", "value", "unit", "how"});
+  headings(ws, r, 0, "factors", {"quantity", "value", "unit"});
+  check(worksheet_merge_range(ws, r, 3, r, 8, h("factors", "how").c_str(), heading()),
+        "worksheet_merge_range");
+  ++r;
   auto fr = [&](std::string_view key, double v, std::string_view kind, std::string_view unit,
                 const std::string& how) {
     text(ws, r, 0, h("factors", key), bold());
@@ -979,8 +1077,11 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
                                "{line}", b.spec.line),
                    "{total}", std::to_string(b.crossings)),
        note());
-  // Print the tables and charts; the data block stays on the sheet, out of the print area.
-  check(worksheet_print_area(ws, 0, 0, data_row - 3, 8), "worksheet_print_area");
+  // Print the tables, then the charts on a page of their own; the data block stays on the
+  // sheet, out of the print area.
+  check(worksheet_print_area(ws, 0, 0, data_row - 3, 12), "worksheet_print_area");
+  auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row, 0});
+  check(worksheet_set_h_pagebreaks(ws, breaks.data()), "worksheet_set_h_pagebreaks");
 
   struct Plot {
     std::string_view key, fmt;
@@ -1122,6 +1223,9 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   lxw_chart* chart = check_ptr(workbook_add_chart(wb_, LXW_CHART_SCATTER_STRAIGHT),
                                "workbook_add_chart");
   chart_title_set_name(chart, keep(t_.get("chart.profile", "title")));
+  lxw_chart_font title_font{};
+  title_font.size = 12;
+  chart_title_set_name_font(chart, &title_font);
   chart_axis_set_name(chart->x_axis, keep(t_.get("chart.profile", "x_axis")));
   chart_axis_set_name(chart->y_axis, keep(t_.get("chart.profile", "y_axis")));
   chart_legend_set_position(chart, LXW_CHART_LEGEND_BOTTOM);
@@ -1154,6 +1258,18 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   if (d_.scenario) {
     const auto& prof = d_.scenario->scenario.profile;
     const auto& v = prof.vertices();
+    double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
+    for (const auto& p : v) {
+      zmin = std::min(zmin, p.z);
+      zmax = std::max(zmax, p.z);
+    }
+    // Lines drawn at least 6 % of the profile's height, so that they show on a tall slope.
+    const double line_height =
+        std::max(t_.profile_line_height, std::isfinite(zmax - zmin) ? 0.06 * (zmax - zmin) : 0.0);
+    if (zmax > zmin) {  // the slope fills the chart: the vertical axis starts below its foot
+      const double step = std::pow(10.0, std::floor(std::log10(zmax - zmin)));
+      chart_axis_set_min(chart->y_axis, std::floor((zmin - 0.05 * (zmax - zmin)) / step) * step);
+    }
     Row vr = r0;
     for (const auto& p : v) {
       num(ws, vr, 0, p.x, xf);
@@ -1174,7 +1290,7 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
       num(ws, lr, 4, l.x, xf);
       num(ws, lr++, 5, g->z, xf);
       num(ws, lr, 4, l.x, xf);
-      num(ws, lr++, 5, g->z + t_.profile_line_height, xf);
+      num(ws, lr++, 5, g->z + line_height, xf);
       ++lr;
     }
     if (lr > r0) {
@@ -1196,8 +1312,19 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
       ++br;
     }
     if (br > r0) {
-      xy_series(chart, sheet, r0, br - 2, 6, 7, h("profile", "barriers"), t_.colour("barriers"),
-                3.5f);
+      lxw_chart_series* s = xy_series(chart, sheet, r0, br - 2, 6, 7, h("profile", "barriers"),
+                                      t_.colour("barriers"), 3.5f);
+      // Markers at the foot and the top, so that a barrier shows beside a tall slope.
+      {
+        chart_series_set_marker_type(s, LXW_CHART_MARKER_DIAMOND);
+        chart_series_set_marker_size(s, 7);
+        lxw_chart_fill fill{};
+        fill.color = t_.colour("barriers");
+        chart_series_set_marker_fill(s, &fill);
+        lxw_chart_line edge{};
+        edge.color = t_.colour("barriers");
+        chart_series_set_marker_line(s, &edge);
+      }
     }
   }
   if (any) {
@@ -1223,8 +1350,9 @@ Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t 
 void Report::trajectories(lxw_worksheet* ws) {
   page_setup(ws);
   width(ws, 0, 17, 11);
-  width(ws, 1, 2, 14);
-  width(ws, 10, 10, 13);
+  width(ws, 1, 1, 20);
+  width(ws, 2, 2, 12);
+  width(ws, 10, 10, 14);
   text(ws, 0, 0, t_.get("titles", "trajectories"), title());
   const std::size_t shown = std::min(d_.trajectories.size(), t_.trajectory_rows);
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_trajectories, d_.trajectories.size());
@@ -1255,7 +1383,7 @@ void Report::trajectories(lxw_worksheet* ws) {
     num(ws, r, 7, t.stop.x, xf);
     num(ws, r, 8, t.stop.z, xf);
     num(ws, r, 9, t.runout(), lf);
-    text(ws, r, 10, std::string(sim::to_string(t.stop_reason)));
+    text(ws, r, 10, std::string(sim::to_string(t.stop_reason)), centred());
     num(ws, r, 11, t.duration, tf);
     num(ws, r, 12, t.impacts, cf);
     if (t.has_first_impact) {
