@@ -1267,7 +1267,7 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
     const double line_height =
         std::max(t_.profile_line_height, std::isfinite(zmax - zmin) ? 0.06 * (zmax - zmin) : 0.0);
     if (zmax > zmin) {  // the slope fills the chart: the vertical axis starts below its foot
-      const double step = std::pow(10.0, std::floor(std::log10(zmax - zmin)));
+      const double step = std::pow(10.0, std::floor(std::log10(zmax - zmin))) / 2;
       chart_axis_set_min(chart->y_axis, std::floor((zmin - 0.05 * (zmax - zmin)) / step) * step);
     }
     Row vr = r0;
