@@ -123,6 +123,18 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
 
   p.nodes_.reserve(2 * p.segments_.size() / kLeafSize + 4);
   p.build_node(0, static_cast<int>(p.segments_.size()));
+  // Maximal straight runs: consecutive segments joined by vertices that are not events.
+  p.run_begin_.assign(p.segments_.size(), 0);
+  p.run_end_.assign(p.segments_.size(), 0);
+  for (std::size_t i = 0; i < p.segments_.size();) {
+    std::size_t e = i + 1;
+    while (e < p.segments_.size() && p.turns_[e - 1] == VertexTurn::straight) ++e;
+    for (std::size_t k = i; k < e; ++k) {
+      p.run_begin_[k] = static_cast<int>(i);
+      p.run_end_[k] = static_cast<int>(e);
+    }
+    i = e;
+  }
   p.parents_.assign(p.nodes_.size(), -1);
   p.leaf_of_.assign(p.segments_.size(), 0);
   for (std::size_t k = 0; k < p.nodes_.size(); ++k) {
@@ -273,16 +285,19 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
   };
   // A straight run of collinear segments is one line for the search; the segment hit is then
   // found by bisection along it. (A finely digitised straight face costs what one segment does.)
-  auto test_run = [&](const Node& nd) {
-    const Segment& s0 = segments_[nd.first];
+  auto test_range = [&](int first, int last) {  // segments [first, last), collinear
+    const Segment& s0 = segments_[first];
     int kind = 0;
     for (int k = 0; k < 2; ++k)
-      if (dep.segment[k] >= nd.first && dep.segment[k] < nd.last)
+      if (dep.segment[k] >= first && dep.segment[k] < last)
         kind = std::max(kind, dep.tangent[k] ? 2 : 1);
-    const double length = dot(segments_[nd.last - 1].b - s0.a, s0.d);
+    const Vec2 end = segments_[last - 1].b;
+    const double length = dot(end - s0.a, s0.d);
     double t, along;
-    if (!solve(s0.a, s0.n, s0.d, length, nd.x_lo, nd.x_hi, kind, t, along)) return;
-    int lo = nd.first, hi = nd.last - 1;  // last segment whose start is at or before `along`
+    if (!solve(s0.a, s0.n, s0.d, length, std::min(s0.a.x, end.x), std::max(s0.a.x, end.x), kind,
+               t, along))
+      return;
+    int lo = first, hi = last - 1;  // last segment whose start is at or before `along`
     while (lo < hi) {
       const int mid = (lo + hi + 1) / 2;
       if (dot(segments_[mid].a - s0.a, s0.d) <= along) lo = mid; else hi = mid - 1;
@@ -292,6 +307,7 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
     best = {t, lo, std::clamp(along - dot(sj.a - s0.a, s0.d), 0.0, sj.length)};
     found = true;
   };
+  auto test_run = [&](const Node& nd) { test_range(nd.first, nd.last); };
 
   // Best-first walk of a subtree: the child the block reaches first is visited first, and a
   // node is skipped when the arc cannot meet its segments before the best contact so far.
@@ -357,15 +373,23 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
     // only the siblings ahead, which keeps a short hop on a 10 000-vertex section cheap.
     const bool ahead_is_right = (v0.x > 0) == (main_direction_ > 0);
     if (!ahead_is_right) seed = std::min(dep.segment[0], dep.segment[1] >= 0 ? dep.segment[1] : dep.segment[0]);
-    // Most hops land within a few segments: test them in order first (in x order the first
-    // contact found is the earliest), and only then climb the tree.
+    // Most hops land within a few straight runs: test them in order first (in x order the
+    // first contact found is the earliest), and only then climb the tree. A run of collinear
+    // segments is one line (the departure's own run included: its other pieces lie on the
+    // departed line too).
     const int step = ahead_is_right ? 1 : -1;
     const int n = static_cast<int>(segments_.size());
-    int j = seed;
+    if (run_end_[seed] - run_begin_[seed] > 1) test_range(run_begin_[seed], run_end_[seed]);
+    int j = ahead_is_right ? run_end_[seed] - 1 : run_begin_[seed];
     for (int k = 0; k < kMarch && !found; ++k) {
       j += step;
       if (j < 0 || j >= n) break;
-      if (j != dep.segment[0] && j != dep.segment[1]) test_segment(j);
+      const int b = run_begin_[j], e = run_end_[j];
+      if (e - b > 1)
+        test_range(b, e);
+      else if (j != dep.segment[0] && j != dep.segment[1])
+        test_segment(j);
+      j = ahead_is_right ? e - 1 : b;
     }
     if (found) return best;
     if (j < 0 || j >= n) return std::nullopt;
@@ -453,9 +477,20 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     const double x = p0.x + v0.x * t_star;
     return z_at(t_star) - (s.a.z + (x - s.a.x) * slope);
   };
-  if (x_monotone_ && hi - lo < 2 * kMarch) {  // a short hop: the few segments under it, directly
-    for (int j = lo; j <= hi; ++j) best = std::max(best, segment_max(segments_[j]));
-    return best;
+  if (x_monotone_ && seg_a >= 0 && seg_b >= 0) {
+    // A short hop: the few straight runs under it, each one line, directly.
+    int runs = 0;
+    for (int j = lo; j <= hi && runs <= 2 * kMarch; j = run_end_[j]) ++runs;
+    if (runs <= 2 * kMarch) {
+      for (int j = lo; j <= hi; j = run_end_[j]) {
+        Segment line = segments_[run_begin_[j]];
+        const Vec2 end = segments_[run_end_[j] - 1].b;
+        line.x_lo = std::min(line.a.x, end.x);
+        line.x_hi = std::max(line.a.x, end.x);
+        best = std::max(best, segment_max(line));
+      }
+      return best;
+    }
   }
   auto bound = [&](const Node& nd) {
     if (nd.last <= lo || nd.first > hi) return -kInf;

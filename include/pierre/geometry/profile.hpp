@@ -109,6 +109,7 @@ class Profile {
   std::vector<Node> nodes_;
   std::vector<int> parents_;  // parent of each node (-1 for the root)
   std::vector<int> leaf_of_;  // leaf node holding each segment
+  std::vector<int> run_begin_, run_end_;  // the straight run [begin, end) holding each segment
   double x_min_ = 0, x_max_ = 0;
   int main_direction_ = 1;
   bool x_monotone_ = true;  // every vertical line meets the ground once: no overhangs
