@@ -874,7 +874,14 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
   std::vector<double> speed, height, energy, rotational;
   const auto li = line_index(b.spec.line);
   const int dir = d_.scenario ? d_.scenario->scenario.profile.main_direction() : 1;
-  if (li) {
+  if (li && d_.samples && *li < d_.samples->lines().size()) {
+    // The whole sample the design used (first crossings in the main direction).
+    const design::LineSamples& ls = d_.samples->lines()[*li];
+    speed = ls.speed;
+    height = ls.height;
+    for (double e : ls.translational_energy) energy.push_back(e / 1000);
+    for (double e : ls.rotational_energy) rotational.push_back(e / 1000);
+  } else if (li) {
     std::uint64_t last = std::numeric_limits<std::uint64_t>::max();
     for (const auto& c : d_.crossings) {
       if (c.line != *li || c.direction != dir || c.trajectory == last) continue;

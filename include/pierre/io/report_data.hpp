@@ -22,6 +22,7 @@ struct ReportData {
   std::uint32_t throws = 0;
   std::vector<std::string> rule_sets;  // names and titles of the rule sets used
   design::RunStatistics statistics;
+  const design::RunSamples* samples = nullptr;  // the samples at the lines (barrier charts)
   std::vector<design::BarrierDesign> barriers;
   std::vector<design::CheckLine> checks;        // every check line, all subjects
   std::vector<std::vector<geometry::Vec2>> sample_paths;  // a few trajectories, for drawing

@@ -1,0 +1,97 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+
+#include <fmt/format.h>
+
+#include "pierre/io/report_template.hpp"
+#include "pierre/io/xlsx_report.hpp"
+#include "pierre/sim/trajectory.hpp"
+
+namespace pierre::app {
+
+void FirstRows::consume(sim::ChunkResult&& chunk) {
+  total_trajectories += chunk.trajectories.size();
+  total_crossings += chunk.crossings.size();
+  for (const auto& t : chunk.trajectories) {
+    if (trajectories.size() >= max_trajectories_) break;
+    trajectories.push_back(t);
+  }
+  for (const auto& c : chunk.crossings) {
+    if (crossings.size() >= max_crossings_) break;
+    crossings.push_back(c);
+  }
+  next_.consume(std::move(chunk));
+}
+
+std::vector<std::vector<geometry::Vec2>> sample_paths(const sim::Scenario& scenario,
+                                                      std::size_t count) {
+  std::vector<std::vector<geometry::Vec2>> paths;
+  const std::uint64_t total = scenario.trajectory_count();
+  if (total == 0) return paths;
+  const sim::TrajectoryModel model(scenario);
+  sim::ObservationTally tally(scenario.lines, scenario.profile, false);
+  std::vector<sim::Crossing> ignored;
+  tally.output(&ignored);
+  const std::uint64_t n = std::min<std::uint64_t>(count, total);
+  for (std::uint64_t k = 0; k < n; ++k) {
+    std::vector<geometry::Vec2> path;
+    sim::simulate_trajectory(model, k * total / n, tally, nullptr, &path, 0.05);
+    paths.push_back(std::move(path));
+  }
+  return paths;
+}
+
+namespace {
+std::string today() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[16];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
+  return buf;
+}
+}  // namespace
+
+void write_run_report(const std::filesystem::path& file, const io::LoadedScenario& loaded,
+                      const design::RunStatistics& statistics, const design::RunSamples& samples,
+                      const io::DesignResults& design, FirstRows&& first) {
+  const io::ReportTemplate tpl = io::load_report_template(io::default_report_template());
+  io::ReportData d;
+  d.scenario = &loaded;
+  d.pierre_version = PIERRE_VERSION;
+  // SOURCE_DATE_EPOCH (reproducible-builds.org) pins the date, so a regenerated report is
+  // byte-identical; else today's date.
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"); epoch && *epoch) {
+    const std::time_t t = static_cast<std::time_t>(std::strtoll(epoch, nullptr, 10));
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[16];
+    std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
+    d.date = buf;
+  } else {
+    d.date = today();
+  }
+  d.seed = loaded.scenario.settings.seed;
+  d.throws = loaded.scenario.settings.throws;
+  for (const auto& r : loaded.barrier_rules) {
+    const std::string entry = r.title.empty() ? r.name : r.name + " — " + r.title;
+    if (std::find(d.rule_sets.begin(), d.rule_sets.end(), entry) == d.rule_sets.end())
+      d.rule_sets.push_back(entry);
+  }
+  d.statistics = statistics;
+  d.samples = &samples;
+  d.barriers = design.barriers;
+  d.checks = design.checks;
+  d.sample_paths = sample_paths(loaded.scenario, 30);
+  d.trajectories = std::move(first.trajectories);
+  d.crossings = std::move(first.crossings);
+  d.total_trajectories = first.total_trajectories;
+  d.total_crossings = first.total_crossings;
+  io::write_report(file, d, tpl);
+}
+
+}  // namespace pierre::app

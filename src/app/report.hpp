@@ -1,0 +1,44 @@
+// The design report of a run (report.xlsx): gathers what io::write_report shows. Shared by
+// `pierre run` and `pierre check`.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "pierre/design/run_statistics.hpp"
+#include "pierre/io/report_data.hpp"
+#include "pierre/io/result_writer.hpp"
+#include "pierre/io/scenario_reader.hpp"
+#include "pierre/sim/runner.hpp"
+
+namespace pierre::app {
+
+// Passes every chunk on to another sink and keeps the first rows for the report's data sheets
+// (the CSV files hold everything).
+class FirstRows final : public sim::ResultSink {
+ public:
+  FirstRows(sim::ResultSink& next, std::size_t trajectories, std::size_t crossings)
+      : next_(next), max_trajectories_(trajectories), max_crossings_(crossings) {}
+  void consume(sim::ChunkResult&& chunk) override;
+
+  std::vector<sim::TrajectorySummary> trajectories;
+  std::vector<sim::Crossing> crossings;
+  std::uint64_t total_trajectories = 0, total_crossings = 0;
+
+ private:
+  sim::ResultSink& next_;
+  std::size_t max_trajectories_, max_crossings_;
+};
+
+// A few trajectories of the scenario re-run with their paths recorded (the same random streams,
+// so the same trajectories as in the results), evenly spread over the run.
+std::vector<std::vector<geometry::Vec2>> sample_paths(const sim::Scenario& scenario,
+                                                      std::size_t count);
+
+// Writes report.xlsx into `file` (atomically) with the template from the templates/ folder.
+void write_run_report(const std::filesystem::path& file, const io::LoadedScenario& loaded,
+                      const design::RunStatistics& statistics, const design::RunSamples& samples,
+                      const io::DesignResults& design, FirstRows&& first);
+
+}  // namespace pierre::app
