@@ -17,14 +17,19 @@
 #include "barriers.hpp"
 #include "commands.hpp"
 #include "console.hpp"
+#include "report.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/result_writer.hpp"
 #include "pierre/io/scenario_reader.hpp"
+#include "pierre/io/xlsx_report.hpp"
 #include "pierre/sim/runner.hpp"
 
 namespace pierre::app {
 namespace {
+
+// Rows of the report's Trajectories and Crossings sheets (the CSV files hold every row).
+constexpr std::size_t kReportRows = 10000;
 
 class RunCommand final : public Command {
  public:
@@ -60,15 +65,15 @@ class RunCommand final : public Command {
           "Example:\n"
           "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
           "runs like `pierre run`, computes every [[barriers]] entry (design-checks.md §1), writes\n"
-          "summary.json with \"barriers\" and \"checks\", prints the check lines. Exit code 0 when\n"
-          "every check passes (WARN does not count), 1 when one FAILs, 2 on bad input, 3 on an\n"
+          "summary.json with \"barriers\" and \"checks\" and report.xlsx, prints the check lines.\n"
+          "Exit code 0 when every check passes (WARN does not count), 1 when one FAILs, 2 on bad input, 3 on an\n"
           "internal error.");
     else
       c->footer(
           "Example:\n"
           "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42 --threads 8\n"
-          "writes results/vaujany/{trajectories.csv, crossings.csv, summary.json}; with --impacts\n"
-          "also impacts.csv. Barriers are computed and printed too. Exit code 0 when it ran\n"
+          "writes results/vaujany/{trajectories.csv, crossings.csv, summary.json, report.xlsx}; with\n"
+          "--impacts also impacts.csv. Barriers are computed and printed too. Exit code 0 when it ran\n"
           "(whatever the checks say: see `pierre check`), 2 on bad input, 3 on an internal error.");
     return c;
   }
@@ -100,10 +105,11 @@ class RunCommand final : public Command {
       return kExitInput;
     }
     io::ResultFiles files(folder->staging(), sc, impacts_);
+    FirstRows first(files, kReportRows, kReportRows);  // the report's data sheets
     ProgressBar bar(!quiet_ && ::isatty(2));
     const auto t0 = std::chrono::steady_clock::now();
     const sim::RunReport rep = sim::run_simulation(
-        sc, opt, files, [&](std::uint64_t done, std::uint64_t n) { bar.update(done, n); });
+        sc, opt, first, [&](std::uint64_t done, std::uint64_t n) { bar.update(done, n); });
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bar.finish();
@@ -124,6 +130,8 @@ class RunCommand final : public Command {
     info.threads = used;
     info.all_crossings = all_crossings_;
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
+    write_run_report(folder->staged(io::kReportXlsx), loaded, stats, files.samples(),
+                     design_results, std::move(first));
     const auto written = folder->commit({io::kImpactsCsv});
     if (!quiet_) print_results(stdout, stats, seconds, written);
     if (!quiet_ || check_) print_design(stdout, design_results);

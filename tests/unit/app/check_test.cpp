@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -167,3 +168,35 @@ TEST_F(Check, HelpShowsTheExitCodes) {
 }
 
 }  // namespace
+
+namespace {
+// The part names of an xlsx (a zip), read with the unzip program (installed by the test set-up).
+std::string zip_listing(const fs::path& xlsx) {
+  const std::string cmd = "unzip -Z1 '" + xlsx.string() + "' 2>/dev/null";
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    ::pclose(p);
+  }
+  return out;
+}
+std::size_t count_of(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST_F(Check, WritesTheDesignReportWithABarrierSheetAndItsCharts) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " + kData + "fail.toml --out '" + out.string() + "'");
+  ASSERT_EQ(r.code, 1) << r.err << r.out;
+  ASSERT_TRUE(fs::is_regular_file(out / "report.xlsx"));
+  const std::string parts = zip_listing(out / "report.xlsx");
+  if (parts.empty()) GTEST_SKIP() << "the unzip program is missing";
+  // Summary, Inputs, Profile, Trajectories, Crossings and one sheet for the one barrier.
+  EXPECT_EQ(count_of(parts, "xl/worksheets/sheet"), 6u) << parts;
+  // Six charts on the barrier sheet (3 histograms, 3 CDFs) and the profile.
+  EXPECT_EQ(count_of(parts, "xl/charts/chart"), 7u) << parts;
+}

@@ -78,7 +78,7 @@ TEST_F(Cli, RunWritesTheResults) {
   const Result r = pierre("run " + kScenario + " --out " + q(out) + " --threads 2");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;  // stderr is not a terminal: no progress bar
-  for (const char* f : {"trajectories.csv", "crossings.csv", "summary.json"})
+  for (const char* f : {"trajectories.csv", "crossings.csv", "summary.json", "report.xlsx"})
     EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
   EXPECT_FALSE(fs::exists(out / "impacts.csv"));
   std::size_t entries = 0;
@@ -86,7 +86,7 @@ TEST_F(Cli, RunWritesTheResults) {
     ++entries;
     EXPECT_EQ(e.path().filename().string().rfind(".pierre-partial", 0), std::string::npos);
   }
-  EXPECT_EQ(entries, 3u);  // no staging folder left
+  EXPECT_EQ(entries, 4u);  // no staging folder left
 
   const std::string traj = slurp(out / "trajectories.csv");
   EXPECT_EQ(first_line(traj),
