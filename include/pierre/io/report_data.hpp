@@ -3,11 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "pierre/design/barrier_check.hpp"
 #include "pierre/design/check_line.hpp"
+#include "pierre/design/quarry_zones.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/scenario_reader.hpp"
 #include "pierre/sim/results.hpp"
@@ -25,6 +27,15 @@ struct ReportData {
   const design::RunSamples* samples = nullptr;  // the samples at the lines (barrier charts)
   std::vector<design::BarrierDesign> barriers;
   std::vector<design::CheckLine> checks;        // every check line, all subjects
+  // Quarry danger zones (design-checks.md §2): the design, and per section its profile and a
+  // few trajectory paths (sections have their own profiles).
+  std::optional<design::QuarryDesign> quarry;
+  struct QuarrySectionView {
+    std::string name;
+    const geometry::Profile* profile = nullptr;
+    std::vector<std::vector<geometry::Vec2>> paths;
+  };
+  std::vector<QuarrySectionView> quarry_sections;
   std::vector<std::vector<geometry::Vec2>> sample_paths;  // a few trajectories, for drawing
   // The first rows of the data sheets (the CSVs hold everything); the caps are stated on
   // the sheets.
