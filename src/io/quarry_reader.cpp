@@ -1,19 +1,15 @@
-// The quarry reader (docs/quarry.md) and quarry rule sets. The profile and block formats are
-// those of docs/scenario-format.md; the scenario reader keeps its readers private, so the
-// few lines they need are repeated here (same fields, same messages).
+// The quarry reader (docs/quarry.md) and quarry rule sets. The profile, blocks and sources of a
+// section are read by the scenario reader's own readers (section_readers.hpp): one format.
 #include "pierre/io/quarry_reader.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <fstream>
-#include <limits>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "csv_table.hpp"
+#include "section_readers.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io {
@@ -23,38 +19,10 @@ namespace fs = std::filesystem;
 using detail::CsvTable;
 using detail::describe;
 using detail::line_of;
+using detail::parse_toml;
+using detail::read_text;
+using detail::relative_to;
 using detail::TomlTable;
-using model::ModelDefaults;
-
-constexpr std::int64_t kMaxCount = 1'000'000;
-
-std::string read_text(const fs::path& file, std::string_view what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    std::error_code ec;
-    const bool exists = fs::is_regular_file(file, ec);
-    throw InputError(file, 0, "file", exists ? "a file that cannot be read" : "no such file",
-                     fmt::format("a readable {}", what));
-  }
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
-}
-
-toml::table parse_toml(const fs::path& file, const std::string& text) {
-  try {
-    return toml::parse(text, file.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
-                     fmt::format("{} (column {})", e.description(), e.source().begin.column),
-                     "valid TOML (https://toml.io)");
-  }
-}
-
-fs::path relative_to(const fs::path& base_file, const std::string& p) {
-  const fs::path q(p);
-  return q.is_absolute() ? q : base_file.parent_path() / q;
-}
 
 bool is_path(const std::string& s) {
   return s.find('/') != std::string::npos ||
@@ -162,15 +130,7 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
   return r;
 }
 
-// ---- profile ----
-
-struct Vertex {
-  geometry::Vec2 p;
-  std::string material;
-  long line;
-  std::string field;
-  fs::path file;
-};
+// ---- numbers ----
 
 double coordinate(const TomlTable& t, const toml::node& c, const std::string& field,
                   const std::string& expected) {
@@ -185,269 +145,7 @@ double coordinate(const TomlTable& t, const toml::node& c, const std::string& fi
   return v;
 }
 
-std::vector<Vertex> read_inline_points(const TomlTable& prof) {
-  const toml::array* pts = prof.array("points");
-  std::vector<Vertex> out;
-  const std::string expected = "an entry [x, z, \"material\"] with x and z finite numbers (m)";
-  for (std::size_t i = 0; i < pts->size(); ++i) {
-    const toml::node& e = *pts->get(i);
-    const std::string field = fmt::format("{}[{}]", prof.field("points"), i);
-    const auto* a = e.as_array();
-    if (!a || a->size() != 3)
-      throw InputError(prof.file(), line_of(e), field,
-                       a ? fmt::format("an array of {} values", a->size()) : describe(e), expected);
-    const double x = coordinate(prof, *a->get(0), field, expected);
-    const double z = coordinate(prof, *a->get(1), field, expected);
-    const toml::node& mc = *a->get(2);
-    const auto* ms = mc.as_string();
-    if (!ms) throw InputError(prof.file(), line_of(mc), field, describe(mc), expected);
-    out.push_back({{x, z}, ms->get(), line_of(e), field, prof.file()});
-  }
-  if (out.size() < 2)
-    throw InputError(prof.file(), line_of(*prof.find("points")), prof.field("points"),
-                     fmt::format("{} vert{}", out.size(), out.size() == 1 ? "ex" : "ices"),
-                     "at least two vertices");
-  return out;
-}
-
-std::vector<Vertex> read_profile_csv(const fs::path& file) {
-  const CsvTable t = detail::read_csv(file, {"x", "z", "material"}, "x,z,material");
-  for (std::string_view c : {"x", "z", "material"})
-    if (!t.column(c))
-      throw InputError(file, t.header_line, "header", fmt::format("no column \"{}\"", c),
-                       "the header x,z,material");
-  const std::size_t cx = *t.column("x"), cz = *t.column("z"), cm = *t.column("material");
-  std::vector<Vertex> out;
-  for (const auto& row : t.rows)
-    out.push_back({{t.number(row, cx), t.number(row, cz)}, row.cells[cm], row.line, "x,z", file});
-  if (out.size() < 2)
-    throw InputError(file, t.rows.empty() ? t.header_line : t.rows.back().line, "profile",
-                     fmt::format("{} vertex row{}", out.size(), out.size() == 1 ? "" : "s"),
-                     "at least two vertex rows after the header");
-  return out;
-}
-
-geometry::Profile read_profile(const TomlTable& q, const std::vector<model::Material>& mats) {
-  const auto prof = q.subtable("profile", {"file", "points"});
-  if (!prof) q.missing("profile", "a [quarries.profile] table with file = \"...\" or points = [...]");
-  const bool has_file = prof->has("file"), has_points = prof->has("points");
-  if (has_file == has_points)
-    throw InputError(q.file(), prof->line(), prof->field(has_file ? "points" : "file"),
-                     has_file ? "both file and points" : "neither file nor points",
-                     "exactly one of file (a CSV) or points (inline vertices)");
-  const std::vector<Vertex> vs = has_file ? read_profile_csv(relative_to(q.file(), *prof->string("file")))
-                                          : read_inline_points(*prof);
-  std::vector<geometry::Vec2> pts;
-  std::vector<int> mat_index;
-  std::string names;
-  for (const auto& m : mats) names += (names.empty() ? "" : ", ") + m.name;
-  for (std::size_t i = 0; i < vs.size(); ++i) {
-    const Vertex& v = vs[i];
-    pts.push_back(v.p);
-    const bool last = i + 1 == vs.size();
-    if (last && v.material.empty()) continue;
-    const auto it = std::find_if(mats.begin(), mats.end(),
-                                 [&](const model::Material& m) { return m.name == v.material; });
-    if (it == mats.end())
-      throw InputError(v.file, v.line, has_file ? "material" : v.field,
-                       fmt::format("\"{}\"", v.material),
-                       fmt::format("a material defined in [materials] ({})", names));
-    if (!last) mat_index.push_back(static_cast<int>(it - mats.begin()));
-  }
-  std::vector<geometry::ProfileIssue> issues;
-  auto profile = geometry::Profile::build(pts, mat_index, &issues);
-  if (!profile) {
-    const geometry::ProfileIssue& is = issues.front();
-    const Vertex& v = vs[std::min(is.vertex, vs.size() - 1)];
-    throw InputError(v.file, v.line, v.field, fmt::format("vertex ({}, {}): {}", v.p.x, v.p.z, is.what),
-                     "a profile of distinct, finite vertices that never crosses itself");
-  }
-  return std::move(*profile);
-}
-
-// ---- blocks ----
-
-struct ShapeRange {
-  double min = ModelDefaults::shape_factor_min, max = ModelDefaults::shape_factor_max;
-};
-
-bool shape_ok(double lo, double hi) {
-  return ModelDefaults::shape_factor_lower_bound <= lo && lo <= hi &&
-         hi <= ModelDefaults::shape_factor_upper_bound;
-}
-
-std::string shape_expected() {
-  return fmt::format("[f_min, f_max] with {} <= f_min <= f_max <= {}",
-                     ModelDefaults::shape_factor_lower_bound, ModelDefaults::shape_factor_upper_bound);
-}
-
-std::optional<ShapeRange> read_shape(const TomlTable& t) {
-  const toml::array* a = t.array("shape_factor");
-  if (!a) return std::nullopt;
-  if (a->size() != 2) t.fail("shape_factor", shape_expected());
-  const double lo = coordinate(t, *a->get(0), t.field("shape_factor"), shape_expected());
-  const double hi = coordinate(t, *a->get(1), t.field("shape_factor"), shape_expected());
-  if (!shape_ok(lo, hi))
-    throw InputError(t.file(), line_of(*t.find("shape_factor")), t.field("shape_factor"),
-                     fmt::format("[{}, {}]", lo, hi), shape_expected());
-  return ShapeRange{lo, hi};
-}
-
-struct GroupSource {
-  fs::path file;
-  long line;
-  std::string field;
-};
-
-void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
-                     std::vector<BlockGroup>& groups, std::vector<GroupSource>& where) {
-  const CsvTable t = detail::read_csv(
-      file, {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"},
-      "mass or volume, and optionally id, density, shape_min, shape_max, count");
-  const auto c_id = t.column("id"), c_mass = t.column("mass"), c_vol = t.column("volume"),
-             c_den = t.column("density"), c_smin = t.column("shape_min"),
-             c_smax = t.column("shape_max"), c_count = t.column("count");
-  if (!c_mass && !c_vol)
-    throw InputError(file, t.header_line, "header", "neither mass nor volume",
-                     "a column mass (kg) or volume (m³)");
-  if (t.rows.empty())
-    throw InputError(file, t.header_line, "blocks", "no block rows", "at least one block row");
-  auto present = [&](const detail::CsvRow& r, std::optional<std::size_t> c) {
-    return c && !r.cells[*c].empty();
-  };
-  for (const auto& r : t.rows) {
-    BlockGroup g;
-    g.id = present(r, c_id) ? r.cells[*c_id] : fmt::format("B{}", groups.size() + 1);
-    const bool has_mass = present(r, c_mass), has_vol = present(r, c_vol);
-    if (has_mass == has_vol)
-      throw InputError(file, r.line, has_mass ? "volume" : "mass",
-                       has_mass ? "both mass and volume" : "neither mass nor volume",
-                       "exactly one of mass (kg) or volume (m³) per row");
-    g.density = density;
-    if (present(r, c_den)) {
-      g.density = t.number(r, *c_den);
-      if (!(g.density > 0)) throw InputError(file, r.line, "density", r.cells[*c_den], "a density > 0 (kg/m³)");
-    }
-    if (has_mass) {
-      g.mass = t.number(r, *c_mass);
-      if (!(g.mass > 0)) throw InputError(file, r.line, "mass", r.cells[*c_mass], "a mass > 0 (kg)");
-      g.volume = g.mass / g.density;
-    } else {
-      g.volume = t.number(r, *c_vol);
-      if (!(g.volume > 0)) throw InputError(file, r.line, "volume", r.cells[*c_vol], "a volume > 0 (m³)");
-      g.mass = g.volume * g.density;
-    }
-    g.shape_min = present(r, c_smin) ? t.number(r, *c_smin) : shape.min;
-    g.shape_max = present(r, c_smax) ? t.number(r, *c_smax) : shape.max;
-    if (!shape_ok(g.shape_min, g.shape_max))
-      throw InputError(file, r.line, c_smin ? "shape_min" : "shape_max",
-                       fmt::format("shape_min {}, shape_max {}", g.shape_min, g.shape_max),
-                       fmt::format("{} <= shape_min <= shape_max <= {}",
-                                   ModelDefaults::shape_factor_lower_bound,
-                                   ModelDefaults::shape_factor_upper_bound));
-    if (present(r, c_count)) {
-      const std::string& s = r.cells[*c_count];
-      std::int64_t n = 0;
-      const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
-      if (ec != std::errc{} || p != s.data() + s.size() || n < 1 || n > kMaxCount)
-        throw InputError(file, r.line, "count", fmt::format("\"{}\"", s),
-                         fmt::format("an integer from 1 to {}", kMaxCount));
-      g.count = static_cast<unsigned>(n);
-    }
-    groups.push_back(std::move(g));
-    where.push_back({file, r.line, "id"});
-  }
-}
-
-void read_blocks(const TomlTable& q, QuarrySection& out) {
-  const auto b = q.subtable("blocks", {"density", "shape_factor", "file", "table"});
-  if (!b) q.missing("blocks", "a [quarries.blocks] table");
-  const double density = b->number("density", ModelDefaults::density);
-  b->check("density", density > 0, "a density > 0 (kg/m³)");
-  const ShapeRange shape = read_shape(*b).value_or(ShapeRange{});
-  std::vector<GroupSource> where;
-  if (auto f = b->string("file"))
-    read_blocks_csv(relative_to(q.file(), *f), density, shape, out.block_groups, where);
-  if (const toml::array* rows = b->array_of_tables("table")) {
-    for (std::size_t i = 0; i < rows->size(); ++i) {
-      const toml::node& node = *rows->get(i);
-      const TomlTable t(q.file(), *node.as_table(), fmt::format("{}[{}]", b->field("table"), i),
-                        line_of(node), {"id", "mass", "volume", "density", "count", "shape_factor"});
-      BlockGroup g;
-      g.id = t.string("id").value_or(fmt::format("B{}", out.block_groups.size() + 1));
-      g.density = t.number("density", density);
-      t.check("density", g.density > 0, "a density > 0 (kg/m³)");
-      const auto mass = t.number("mass"), volume = t.number("volume");
-      if (mass.has_value() == volume.has_value())
-        throw InputError(q.file(), t.line(), t.field(mass ? "volume" : "mass"),
-                         mass ? "both mass and volume" : "neither mass nor volume",
-                         "exactly one of mass (kg) or volume (m³)");
-      if (mass) {
-        t.check("mass", *mass > 0, "a mass > 0 (kg)");
-        g.mass = *mass;
-        g.volume = g.mass / g.density;
-      } else {
-        t.check("volume", *volume > 0, "a volume > 0 (m³)");
-        g.volume = *volume;
-        g.mass = g.volume * g.density;
-      }
-      const ShapeRange s = read_shape(t).value_or(shape);
-      g.shape_min = s.min;
-      g.shape_max = s.max;
-      if (auto n = t.integer("count")) {
-        t.check("count", *n >= 1 && *n <= kMaxCount, fmt::format("an integer from 1 to {}", kMaxCount));
-        g.count = static_cast<unsigned>(*n);
-      }
-      where.push_back({q.file(), t.has("id") ? line_of(*t.find("id")) : t.line(), t.field("id")});
-      out.block_groups.push_back(std::move(g));
-    }
-  }
-  if (out.block_groups.empty())
-    throw InputError(q.file(), b->line(), b->field("file"), "no blocks",
-                     "a blocks file or at least one [[quarries.blocks.table]]");
-  std::set<std::string> ids;
-  for (std::size_t i = 0; i < out.block_groups.size(); ++i) {
-    const BlockGroup& g = out.block_groups[i];
-    if (!ids.insert(g.id).second)
-      throw InputError(where[i].file, where[i].line, where[i].field, fmt::format("\"{}\"", g.id),
-                       "a block id not used by another row");
-    for (unsigned k = 1; k <= g.count; ++k) {
-      model::Block blk;
-      blk.id = g.count == 1 ? g.id : fmt::format("{}.{}", g.id, k);
-      blk.mass = g.mass;
-      blk.density = g.density;
-      blk.shape_min = g.shape_min;
-      blk.shape_max = g.shape_max;
-      out.scenario.blocks.push_back(std::move(blk));
-    }
-  }
-}
-
-// ---- sources, work areas, observed values ----
-
-std::string extent(const geometry::Profile& p) {
-  return fmt::format("inside the section's horizontal extent [{}, {}] m", p.x_min(), p.x_max());
-}
-
-void read_sources(const TomlTable& q, sim::Scenario& sc) {
-  const toml::array* a = q.array_of_tables("sources");
-  if (!a) q.missing("sources", "at least one [[quarries.sources]] table with x and z");
-  for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& node = *a->get(i);
-    const TomlTable t(q.file(), *node.as_table(), fmt::format("{}[{}]", q.field("sources"), i),
-                      line_of(node), {"name", "x", "z", "vx", "vz", "omega"});
-    sim::Source s;
-    s.name = t.string("name").value_or(fmt::format("S{}", i + 1));
-    s.position.x = t.required_number("x", "a number (m)");
-    t.check("x", s.position.x >= sc.profile.x_min() && s.position.x <= sc.profile.x_max(),
-            "an x " + extent(sc.profile));
-    s.position.z = t.required_number("z", "a number (m)");
-    s.velocity.x = t.number("vx", 0.0);
-    s.velocity.z = t.number("vz", 0.0);
-    s.omega = t.number("omega", 0.0);
-    sc.sources.push_back(std::move(s));
-  }
-}
+// ---- work areas, observed values ----
 
 void read_work_areas(const TomlTable& q, design::QuarrySpec& spec) {
   const toml::array* a = q.array_of_tables("work_areas");
@@ -588,12 +286,13 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     if (auto seed = q.integer("seed")) {
       q.check("seed", *seed >= 0, "an integer >= 0");
       sc.settings.seed = static_cast<std::uint64_t>(*seed);
+      s.seed_given = true;
     } else {
       sc.settings.seed = settings.seed + i;  // independent streams for sections pooled together
     }
-    sc.profile = read_profile(q, materials);
-    read_blocks(q, s);
-    read_sources(q, sc);
+    sc.profile = detail::read_profile(q, materials, "quarries");
+    detail::read_blocks(q, s.block_groups, sc.blocks, "quarries");
+    detail::read_sources(q, sc, "quarries");
     read_work_areas(q, spec);
     read_observed(q, s);
 

@@ -15,8 +15,8 @@
 #include "pierre/design/quarry_geometry.hpp"
 #include "pierre/design/quarry_rules.hpp"
 #include "pierre/design/quarry_zones.hpp"
+#include "pierre/io/block_group.hpp"
 #include "pierre/io/input_error.hpp"
-#include "pierre/io/scenario_reader.hpp"
 #include "pierre/model/material.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -32,6 +32,7 @@ struct QuarrySection {
   design::QuarryObserved observed;
   std::vector<BlockGroup> block_groups;  // the block rows as written
   std::filesystem::path rules_file;
+  bool seed_given = false;  // `seed` was written (else [simulation].seed + the section's index)
 };
 
 // A rule set by name ("quarry-thesis-2015" → rules_dir/quarry-thesis-2015.toml) or by path (a

@@ -1,6 +1,7 @@
 // Reads a scenario (TOML, docs/scenario-format.md) with its profile and block CSVs and the
 // material presets of rules/, validates every field, and returns the simulation's Scenario
-// plus what the report echoes. Throws InputError on bad input.
+// plus what the report echoes; or, for a quarry scenario, its [[quarries]] sections (each a
+// Scenario of its own). Throws InputError on bad input.
 #pragma once
 
 #include <filesystem>
@@ -10,19 +11,13 @@
 
 #include "pierre/design/barrier_check.hpp"
 #include "pierre/design/barrier_rules.hpp"
+#include "pierre/io/block_group.hpp"
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/quarry_reader.hpp"
 #include "pierre/sim/scenario.hpp"
 
 namespace pierre::io {
 
-struct BlockGroup {  // a row of the block table or CSV, as written
-  std::string id;
-  double mass = 0;     // kg
-  double volume = 0;   // m³
-  double density = 0;  // kg/m³
-  double shape_min = 1, shape_max = 1;
-  unsigned count = 1;
-};
 
 struct LoadedScenario {
   sim::Scenario scenario;
@@ -40,6 +35,12 @@ struct LoadedScenario {
   std::vector<std::filesystem::path> barrier_rules_files;
   std::vector<design::EnergyClassTable> barrier_classes;
   std::vector<std::optional<design::ObservedSample>> barrier_observed;
+
+  // [[quarries]] (docs/quarry.md), in file order: a quarry scenario. Each section is its own
+  // sim::Scenario (profile, blocks, sources, seed, floor_segment); `scenario` then holds only
+  // the name, the [simulation] settings and the materials (no profile, blocks or sources), and
+  // block_groups, lines and barriers are empty.
+  std::vector<QuarrySection> quarries;
 };
 
 // `rules_dir` holds materials.toml and the design rule sets; materials.toml is only read when a

@@ -1,0 +1,51 @@
+// The readers of a slope section's parts, shared by the scenario reader (top-level [profile],
+// [blocks], [[sources]]) and the quarry reader ([[quarries]] sections: quarries[i].profile, …):
+// one format, one set of messages. Internal to the io library.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "pierre/geometry/profile.hpp"
+#include "pierre/io/block_group.hpp"
+#include "pierre/model/block.hpp"
+#include "pierre/model/material.hpp"
+#include "pierre/sim/scenario.hpp"
+#include "toml_fields.hpp"
+
+namespace pierre::io::detail {
+
+// The whole text of a file; InputError (line 0) when it cannot be read. `what` names it in the
+// message ("scenario file (TOML)").
+std::string read_text(const std::filesystem::path& file, std::string_view what);
+// TOML text parsed; InputError at the syntax error's line.
+toml::table parse_toml(const std::filesystem::path& file, const std::string& text);
+// `p` relative to the folder of `base_file` (absolute paths as they are).
+std::filesystem::path relative_to(const std::filesystem::path& base_file, const std::string& p);
+
+// In the readers below `parent` is the table holding the part (the root, or one [[quarries]]
+// entry) and `table_path` its path as a TOML header names it ("" for the root, "quarries"),
+// used in messages: "a [quarries.profile] table".
+
+// parent.profile: { file = CSV } or { points = [[x, z, "material"], …] }; material names from
+// `materials`.
+geometry::Profile read_profile(const TomlTable& parent, const std::vector<model::Material>& materials,
+                               std::string_view table_path);
+
+// parent.blocks: the block rows as written (appended to `groups`) and the blocks they expand
+// to (appended to `blocks`, a row of count n giving ids "<id>.1" … "<id>.n").
+void read_blocks(const TomlTable& parent, std::vector<BlockGroup>& groups,
+                 std::vector<model::Block>& blocks, std::string_view table_path);
+
+// parent.sources (one or more): appended to scenario.sources, each inside scenario.profile's
+// horizontal extent.
+void read_sources(const TomlTable& parent, sim::Scenario& scenario, std::string_view table_path);
+
+// "inside the profile's horizontal extent [x0, x1] m"
+std::string extent(const geometry::Profile& profile);
+
+}  // namespace pierre::io::detail
