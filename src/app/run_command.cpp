@@ -17,6 +17,7 @@
 #include "barriers.hpp"
 #include "commands.hpp"
 #include "console.hpp"
+#include "quarries.hpp"
 #include "report.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/output_folder.hpp"
@@ -81,6 +82,18 @@ class RunCommand final : public Command {
   int run() override {
     // 1. Everything about the input is checked before DIR is touched.
     io::LoadedScenario loaded = io::load_scenario(scenario_, rules_dir(rules_));
+    if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
+      QuarryRunOptions q;
+      q.out = out_;
+      if (seed_opt_->count()) q.seed = static_cast<std::uint64_t>(seed_);
+      if (throws_opt_->count()) q.throws = throws_;
+      q.threads = threads_;
+      q.impacts = impacts_;
+      q.all_crossings = all_crossings_;
+      q.quiet = quiet_;
+      q.check = check_;
+      return run_quarries(loaded, q);
+    }
     sim::Scenario& sc = loaded.scenario;
     if (seed_opt_->count()) sc.settings.seed = static_cast<std::uint64_t>(seed_);
     if (throws_opt_->count()) sc.settings.throws = throws_;

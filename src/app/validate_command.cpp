@@ -24,6 +24,7 @@ class ValidateCommand final : public Command {
 
   int run() override {
     const io::LoadedScenario l = io::load_scenario(scenario_, rules_dir(rules_));
+    if (!l.quarries.empty()) return print_quarries(l);
     const sim::Scenario& s = l.scenario;
     std::string mats;
     for (const auto& m : s.materials)
@@ -52,6 +53,42 @@ class ValidateCommand final : public Command {
   }
 
  private:
+  // A quarry scenario: one paragraph per section (docs/quarry.md).
+  static int print_quarries(const io::LoadedScenario& l) {
+    const sim::Scenario& s = l.scenario;
+    std::string mats;
+    for (const auto& m : s.materials)
+      mats += fmt::format("{}{} ({})", mats.empty() ? "" : ", ", m.name, m.source);
+    std::uint64_t total = 0;
+    for (const auto& q : l.quarries) total += q.scenario.trajectory_count();
+    fmt::print("{}: valid. \"{}\": a quarry scenario of {} section{}; {} material{}: {}. {} "
+               "trajectories to run.\n",
+               l.file.string(), s.name, l.quarries.size(), l.quarries.size() == 1 ? "" : "s",
+               s.materials.size(), s.materials.size() == 1 ? "" : "s", mats, total);
+    for (const auto& q : l.quarries) {
+      const sim::Scenario& c = q.scenario;
+      const design::QuarryGeometry& g = q.geometry;
+      std::size_t groups = q.block_groups.size();
+      fmt::print(
+          "  quarry section \"{}\"{}: {} vertices from x = {} to {} m; {} block{} in {} "
+          "group{}; {} source{}; {} throw{} per block and source with seed {}{}: {} "
+          "trajectories. Crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); "
+          "floor from segment {}, {:.2f} m long. Rule set {} ({}); {} work area{}{}{}{}.\n",
+          q.spec.name, q.spec.group.empty() ? "" : fmt::format(" (group \"{}\")", q.spec.group),
+          c.profile.vertices().size(), c.profile.x_min(), c.profile.x_max(), c.blocks.size(),
+          c.blocks.size() == 1 ? "" : "s", groups, groups == 1 ? "" : "s", c.sources.size(),
+          c.sources.size() == 1 ? "" : "s", c.settings.throws, c.settings.throws == 1 ? "" : "s",
+          c.settings.seed, q.seed_given ? " (given)" : "", c.trajectory_count(), g.crest.x,
+          design::to_string(g.crest_origin), g.toe.x, design::to_string(g.toe_origin), g.height,
+          design::to_string(g.height_origin), g.floor_segment, g.floor_length, q.rules.name,
+          q.rules_file.string(), q.spec.work_areas.size(), q.spec.work_areas.size() == 1 ? "" : "s",
+          q.spec.bench_width ? fmt::format(", bench width {} m", *q.spec.bench_width) : "",
+          q.observed.id.empty() && q.observed.rd.empty() ? "" : ", observed values",
+          q.observed.source.empty() ? "" : fmt::format(" ({})", q.observed.source));
+    }
+    return kExitOk;
+  }
+
   std::string scenario_, rules_;
 };
 

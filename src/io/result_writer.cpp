@@ -85,38 +85,64 @@ class ResultFiles::Csv {
 
 ResultFiles::ResultFiles(const std::filesystem::path& folder, const sim::Scenario& scenario,
                          bool impacts)
-    : scenario_(scenario),
+    : scenario_(&scenario),
       samples_(scenario.lines.size(), scenario.profile.main_direction()) {
+  open(folder, impacts);
+}
+
+ResultFiles::ResultFiles(const std::filesystem::path& folder, bool impacts) : sectioned_(true) {
+  open(folder, impacts);
+}
+
+void ResultFiles::open(const std::filesystem::path& folder, bool impacts) {
+  const std::string lead = sectioned_ ? "section," : "";
   trajectories_ = std::make_unique<Csv>(
       folder / kTrajectoriesCsv,
-      "trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,runout_m,"
-      "stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,max_jump_height_m,"
-      "max_speed_m_s,max_energy_kJ");
+      lead +
+          "trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,runout_m,"
+          "stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,max_jump_height_m,"
+          "max_speed_m_s,max_energy_kJ");
   crossings_ = std::make_unique<Csv>(
       folder / kCrossingsCsv,
-      "trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,speed_m_s,"
-      "omega_rad_s,translational_energy_kJ,rotational_energy_kJ,passing_height_m,sliding");
+      lead +
+          "trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,speed_m_s,"
+          "omega_rad_s,translational_energy_kJ,rotational_energy_kJ,passing_height_m,sliding");
   if (impacts)
     impacts_ = std::make_unique<Csv>(
         folder / kImpactsCsv,
-        "trajectory,impact,time_s,x_m,z_m,segment,material,result,slope_deg,roughness_deg,"
-        "r_eff_m,vt_in_m_s,vn_in_m_s,vt_out_m_s,vn_out_m_s,vt_in_rot_m_s,vn_in_rot_m_s,"
-        "vt_out_rot_m_s,vn_out_rot_m_s,kn,kt,kn_apparent,kt_apparent,incidence_deg,contained,"
-        "energy_in_kJ,energy_out_kJ");
+        lead +
+            "trajectory,impact,time_s,x_m,z_m,segment,material,result,slope_deg,roughness_deg,"
+            "r_eff_m,vt_in_m_s,vn_in_m_s,vt_out_m_s,vn_out_m_s,vt_in_rot_m_s,vn_in_rot_m_s,"
+            "vt_out_rot_m_s,vn_out_rot_m_s,kn,kt,kn_apparent,kt_apparent,incidence_deg,contained,"
+            "energy_in_kJ,energy_out_kJ");
+}
+
+void ResultFiles::begin_section(const sim::Scenario& scenario, std::string name) {
+  scenario_ = &scenario;
+  section_ = std::move(name);
+  samples_ = design::RunSamples(scenario.lines.size(), scenario.profile.main_direction());
 }
 
 ResultFiles::~ResultFiles() = default;
 
 void ResultFiles::consume(sim::ChunkResult&& chunk) {
+  if (!scenario_) throw std::logic_error("ResultFiles: begin_section before the first chunk");
+  const sim::Scenario& sc = *scenario_;
   auto out = [](fmt::memory_buffer& b) { return std::back_inserter(b); };
+  auto lead = [&](fmt::memory_buffer& b) {
+    if (!sectioned_) return;
+    text_cell(b, section_);
+    b.push_back(',');
+  };
   {
     fmt::memory_buffer& b = trajectories_->buf;
     for (const sim::TrajectorySummary& t : chunk.trajectories) {
       samples_.add(t);
+      lead(b);
       fmt::format_to(out(b), "{},", t.trajectory);
-      text_cell(b, t.source < scenario_.sources.size() ? scenario_.sources[t.source].name : "");
+      text_cell(b, t.source < sc.sources.size() ? sc.sources[t.source].name : "");
       b.push_back(',');
-      text_cell(b, t.block < scenario_.blocks.size() ? scenario_.blocks[t.block].id : "");
+      text_cell(b, t.block < sc.blocks.size() ? sc.blocks[t.block].id : "");
       fmt::format_to(out(b), ",{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},",
                      t.throw_index, t.mass, t.start.x, t.start.z, t.stop.x, t.stop.z, t.runout(),
                      sim::to_string(t.stop_reason), t.duration, t.impacts);
@@ -133,13 +159,14 @@ void ResultFiles::consume(sim::ChunkResult&& chunk) {
     fmt::memory_buffer& b = crossings_->buf;
     for (const sim::Crossing& c : chunk.crossings) {
       samples_.add(c);
+      lead(b);
       fmt::format_to(out(b), "{},", c.trajectory);
-      const bool known = c.line < scenario_.lines.size();
-      text_cell(b, known ? scenario_.lines[c.line].name : "");
+      const bool known = c.line < sc.lines.size();
+      text_cell(b, known ? sc.lines[c.line].name : "");
       b.push_back(',');
-      if (known) num(b, scenario_.lines[c.line].x);
+      if (known) num(b, sc.lines[c.line].x);
       b.push_back(',');
-      text_cell(b, c.block < scenario_.blocks.size() ? scenario_.blocks[c.block].id : "");
+      text_cell(b, c.block < sc.blocks.size() ? sc.blocks[c.block].id : "");
       fmt::format_to(out(b), ",{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n",
                      c.mass, c.time, c.direction, c.velocity.x, c.velocity.z, c.speed, c.omega,
                      c.translational_energy / 1000.0, c.rotational_energy / 1000.0, c.height,
@@ -151,13 +178,14 @@ void ResultFiles::consume(sim::ChunkResult&& chunk) {
     fmt::memory_buffer& b = impacts_->buf;
     for (const sim::ImpactRecord& r : chunk.impacts) {
       const model::ImpactDetail& d = r.detail;
+      lead(b);
       fmt::format_to(out(b), "{},{},{:.9g},{:.9g},{:.9g},{},", r.trajectory, r.index, r.time,
                      r.position.x, r.position.z, r.segment);
       std::string material;
-      if (r.segment < scenario_.profile.segment_count()) {
-        const int m = scenario_.profile.segment(r.segment).material;
-        if (m >= 0 && static_cast<std::size_t>(m) < scenario_.materials.size())
-          material = scenario_.materials[static_cast<std::size_t>(m)].name;
+      if (r.segment < sc.profile.segment_count()) {
+        const int m = sc.profile.segment(r.segment).material;
+        if (m >= 0 && static_cast<std::size_t>(m) < sc.materials.size())
+          material = sc.materials[static_cast<std::size_t>(m)].name;
       }
       text_cell(b, material);
       fmt::format_to(out(b), ",{},{:.9g},{:.9g},{:.9g},", to_string(r.result), d.slope_deg,
@@ -292,6 +320,169 @@ ojson barrier_json(const design::BarrierDesign& d) {
   return j;
 }
 
+// ---- quarries (docs/quarry.md) ----
+
+// A distance: the number, or null when beyond the profile (+infinity) or undefined (NaN).
+ojson distance(double v) { return std::isfinite(v) ? ojson(v) : ojson(nullptr); }
+bool beyond(double v) { return std::isinf(v) && v > 0; }
+
+ojson distance_statistics_json(const design::DistanceStatistics& d) {
+  ojson j;
+  j["count"] = d.count;
+  j["zeros"] = d.zeros;
+  j["censored"] = d.censored;
+  for (const auto& [key, v] : {std::pair{"p50", d.p50}, {"p95", d.p95}, {"p99", d.p99}, {"max", d.max}})
+    j[std::string(key) + "_m"] = distance(v);
+  for (const auto& [key, v] :
+       {std::pair{"p50", d.p50_h}, {"p95", d.p95_h}, {"p99", d.p99_h}, {"max", d.max_h}})
+    j[std::string(key) + "_h"] = distance(v);
+  ojson b = ojson::array();
+  for (const auto& [key, v] : {std::pair{"p50", d.p50}, {"p95", d.p95}, {"p99", d.p99}, {"max", d.max}})
+    if (beyond(v)) b.push_back(key);
+  j["beyond_profile"] = b;
+  if (d.fit)
+    j["lognormal_h"] = {{"mu", d.fit->positive.mu},
+                        {"sigma", d.fit->positive.sigma},
+                        {"zero_share", d.fit->zero_share},
+                        {"zeros", d.fit->zeros},
+                        {"observed", d.fit->observed},
+                        {"censored", d.fit->censored},
+                        {"excluded", d.fit->excluded}};
+  else
+    j["lognormal_h"] = nullptr;
+  if (d.ks)
+    j["lognormal_ks"] = {{"D", d.ks->statistic}, {"p_value_stephens", d.ks->p_value},
+                         {"n", d.ks->n}, {"below_h", distance(d.ks->below)}};
+  else
+    j["lognormal_ks"] = nullptr;
+  if (!d.fit_error.empty()) j["fit_error"] = d.fit_error;
+  return j;
+}
+
+ojson governing_json(const design::GoverningDistance& g, double height) {
+  return {{"value_h", distance(g.value_h)},
+          {"value_m", distance(g.value_h * height)},
+          {"beyond_profile", beyond(g.value_h)},
+          {"percentile_h", distance(g.percentile_h)},
+          {"maximum_h", distance(g.maximum_h)},
+          {"lognormal_h", distance(g.lognormal_h)},
+          {"how", g.how}};
+}
+
+ojson observed_json(const std::optional<design::ObservedComparison>& o) {
+  if (!o) return nullptr;
+  ojson j;
+  j["raw"] = o->raw;
+  j["count"] = o->count;
+  j["p50_m"] = distance(o->p50);
+  j["p95_m"] = distance(o->p95);
+  j["max_m"] = distance(o->max);
+  j["p50_h"] = distance(o->p50_h);
+  j["p95_h"] = distance(o->p95_h);
+  j["max_h"] = distance(o->max_h);
+  j["cdf_rmse"] = o->cdf_rmse ? ojson(*o->cdf_rmse) : ojson(nullptr);
+  j["ks"] = ks_json(o->ks);
+  return j;
+}
+
+ojson origin_point(const geometry::Vec2& p, design::GeometryOrigin o) {
+  return {{"x_m", p.x}, {"z_m", p.z}, {"origin", std::string(design::to_string(o))}};
+}
+
+ojson quarry_section_json(const design::QuarrySectionResult& s, std::uint64_t seed) {
+  const design::QuarryGeometry& g = s.geometry;
+  const design::QuarryDistances& d = s.distances;
+  ojson j;
+  j["name"] = s.spec.name;
+  j["group"] = s.spec.group;
+  j["seed"] = seed;
+  j["geometry"] = {{"crest", origin_point(g.crest, g.crest_origin)},
+                   {"toe", origin_point(g.toe, g.toe_origin)},
+                   {"height_m", g.height},
+                   {"height_origin", std::string(design::to_string(g.height_origin))},
+                   {"height_derived_m", g.height_derived},
+                   {"floor_segment", g.floor_segment},
+                   {"floor_length_m", g.floor_length},
+                   {"floor_angle_deg", g.floor_angle_deg}};
+  j["thrown"] = d.thrown;
+  j["reached_floor"] = d.reached_floor;
+  j["not_reached_floor"] = d.not_reached_floor;
+  j["above_toe"] = d.above_toe;
+  j["left_profile"] = d.left_profile;
+  j["left_upslope"] = d.left_upslope;
+  j["abnormal"] = d.abnormal;
+  j["danger_zone_m"] = distance(s.danger_zone);
+  j["danger_zone_beyond_profile"] = beyond(s.danger_zone);
+  j["first_impact_zone_m"] = distance(s.first_impact_zone);
+  j["first_impact_zone_beyond_profile"] = beyond(s.first_impact_zone);
+  ojson areas = ojson::array();
+  for (const auto& w : s.spec.work_areas)
+    areas.push_back({{"name", w.name}, {"distance_m", w.distance},
+                     {"inside_zone", !(w.distance >= s.danger_zone)}});
+  j["work_areas"] = areas;
+  j["bench_width_m"] = s.spec.bench_width ? ojson(*s.spec.bench_width) : ojson(nullptr);
+  j["bench_retention"] = s.bench_retention ? ojson(*s.bench_retention) : ojson(nullptr);
+  j["ritchie_width_m"] = s.ritchie_width ? ojson(*s.ritchie_width) : ojson(nullptr);
+  if (!s.spec.observed_source.empty()) j["observed_source"] = s.spec.observed_source;
+  return j;
+}
+
+ojson quarry_row_json(const design::QuarryDesign& q, const design::QuarryRow& r,
+                      const std::vector<std::uint64_t>& seeds) {
+  ojson j;
+  j["name"] = r.name;
+  j["pooled"] = r.pooled;
+  const design::QuarrySectionResult* first = r.sections.empty() ? nullptr : &q.sections[r.sections[0]];
+  j["rules"] = {{"name", r.rules},
+                {"title", first ? first->rules_title : ""},
+                {"source", first ? first->rules_source : ""}};
+  j["height_m"] = r.height;
+  j["thrown"] = r.thrown;
+  j["reached_floor"] = r.reached_floor;
+  j["not_reached_floor"] = r.not_reached_floor;
+  j["above_toe"] = r.above_toe;
+  j["left_profile"] = r.left_profile;
+  j["left_upslope"] = r.left_upslope;
+  j["abnormal"] = r.abnormal;
+  j["runout"] = distance_statistics_json(r.rd);
+  j["first_impact"] = distance_statistics_json(r.id);
+  j["duration_s"] = {{"count", r.duration.count}, {"p50", distance(r.duration.p50)},
+                     {"p95", distance(r.duration.p95)}, {"max", distance(r.duration.max)}};
+  ojson ex = ojson::array();
+  for (const auto& e : r.exceedance)
+    ex.push_back({{"probability", e.probability},
+                  {"runout_fit_m", distance(e.rd_fit)},
+                  {"runout_empirical_m", distance(e.rd_empirical)},
+                  {"first_impact_fit_m", distance(e.id_fit)},
+                  {"first_impact_empirical_m", distance(e.id_empirical)},
+                  {"runout_fit_h", distance(e.rd_fit_h)},
+                  {"runout_empirical_h", distance(e.rd_empirical_h)},
+                  {"first_impact_fit_h", distance(e.id_fit_h)},
+                  {"first_impact_empirical_h", distance(e.id_empirical_h)}});
+  j["exceedance"] = ex;
+  j["RD_gov"] = governing_json(r.rd_gov, r.height);
+  j["ID_gov"] = governing_json(r.id_gov, r.height);
+  j["RD_interval_h"] = interval_json(r.rd_interval);
+  j["observed"] = {{"runout", observed_json(r.observed_rd)},
+                   {"first_impact", observed_json(r.observed_id)}};
+  ojson secs = ojson::array();
+  for (std::size_t i : r.sections)
+    secs.push_back(quarry_section_json(q.sections[i], i < seeds.size() ? seeds[i] : 0));
+  j["sections"] = secs;
+  return j;
+}
+
+ojson quarry_average_json(const design::QuarryAverage& a) {
+  return {{"rows", a.rows},
+          {"RD50_h", distance(a.rd50_h)}, {"RD95_h", distance(a.rd95_h)},
+          {"RDmax_h", distance(a.rdmax_h)}, {"ID50_h", distance(a.id50_h)},
+          {"ID95_h", distance(a.id95_h)}, {"IDmax_h", distance(a.idmax_h)},
+          {"observed_rows", a.observed_rows},
+          {"observed_RD50_h", distance(a.obs_rd50_h)}, {"observed_RD95_h", distance(a.obs_rd95_h)},
+          {"observed_RDmax_h", distance(a.obs_rdmax_h)}, {"observed_ID50_h", distance(a.obs_id50_h)},
+          {"observed_ID95_h", distance(a.obs_id95_h)}, {"observed_IDmax_h", distance(a.obs_idmax_h)}};
+}
+
 }  // namespace
 
 std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
@@ -329,10 +520,21 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["lines"] = lines;
   j["runout_m"] = {{"p50", s.runout.p50}, {"p95", s.runout.p95}, {"p99", s.runout.p99},
                    {"max", s.runout.max}};
+  if (results.quarry) {
+    json rows = json::array();
+    for (const auto& r : results.quarry->rows)
+      rows.push_back(quarry_row_json(*results.quarry, r, results.quarry_seeds));
+    j["quarries"] = rows;
+    j["quarry_average"] = quarry_average_json(results.quarry->average);
+    j["quarry_all"] = {{"runout", distance_statistics_json(results.quarry->all_rd_statistics)},
+                       {"first_impact", distance_statistics_json(results.quarry->all_id_statistics)}};
+  }
   if (!results.barriers.empty() || !results.checks.empty()) {
-    json barriers = json::array();
-    for (const auto& d : results.barriers) barriers.push_back(barrier_json(d));
-    j["barriers"] = barriers;
+    if (!results.quarry || !results.barriers.empty()) {
+      json barriers = json::array();
+      for (const auto& d : results.barriers) barriers.push_back(barrier_json(d));
+      j["barriers"] = barriers;
+    }
     json checks = json::array();
     for (const auto& c : results.checks)
       checks.push_back({{"subject", c.subject},

@@ -16,6 +16,10 @@
 //   vn_out_rot_m_s,kn,kt,kn_apparent,kt_apparent,incidence_deg,contained,energy_in_kJ,
 //   energy_out_kJ
 //
+// A quarry scenario (docs/quarry.md) writes the same files once for all its sections, one section
+// after the other in file order, each row led by a `section` column (the section's name);
+// `trajectory` then counts within the section (it keys the section's own random streams).
+//
 // Numbers are written with 9 significant digits ({:.9g}): the same seed gives the same bytes.
 // Only what the statistics need stays in memory (design::RunSamples).
 #pragma once
@@ -23,11 +27,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "pierre/design/barrier_check.hpp"
 #include "pierre/design/check_line.hpp"
+#include "pierre/design/quarry_zones.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/sim/runner.hpp"
 #include "pierre/sim/scenario.hpp"
@@ -44,7 +50,14 @@ class ResultFiles final : public sim::ResultSink {
   // Opens the CSV files in `folder` and writes their headers; `impacts` adds impacts.csv.
   // Throws std::runtime_error when a file cannot be opened.
   ResultFiles(const std::filesystem::path& folder, const sim::Scenario& scenario, bool impacts);
+  // The files of a quarry scenario: every row led by a `section` column. Call begin_section
+  // before each section's chunks.
+  ResultFiles(const std::filesystem::path& folder, bool impacts);
   ~ResultFiles() override;
+
+  // The chunks that follow belong to `scenario`, named `name` in the section column (which it
+  // must outlive); samples() starts afresh.
+  void begin_section(const sim::Scenario& scenario, std::string name);
 
   void consume(sim::ChunkResult&& chunk) override;  // throws std::runtime_error on write errors
   // Flushes and closes every file; throws std::runtime_error when a write failed.
@@ -55,7 +68,11 @@ class ResultFiles final : public sim::ResultSink {
   class Csv;  // a buffered file
 
  private:
-  const sim::Scenario& scenario_;
+  void open(const std::filesystem::path& folder, bool impacts);
+
+  const sim::Scenario* scenario_ = nullptr;
+  bool sectioned_ = false;
+  std::string section_;
   std::unique_ptr<Csv> trajectories_, crossings_, impacts_;
   design::RunSamples samples_;
 };
@@ -73,16 +90,23 @@ struct RunInfo {
   bool all_crossings = false;
 };
 
-// The design results of a run: every barrier computed and every check line (all subjects).
+// The design results of a run: every barrier computed, the quarry danger zones (a quarry
+// scenario), and every check line (all subjects).
 struct DesignResults {
   std::vector<design::BarrierDesign> barriers;
+  std::optional<design::QuarryDesign> quarry;
+  std::vector<std::uint64_t> quarry_seeds;  // the seed of each quarry section's run
   std::vector<design::CheckLine> checks;
 };
 
 // summary.json's text (pretty-printed, NaN as null): pierre version, scenario, seed, throws,
 // trajectories, threads, stop-reason counts, per-line statistics (energies in kJ), runout;
-// with design results also "barriers" (the design values of each) and "checks" (every check
-// line: subject, id, what, value, limit, unit, rule, status, reason).
+// with design results also "barriers" (the design values of each), for a quarry scenario
+// "quarries" (one entry per row of Tables 6.2/6.3 — a lone section or a pooled group — with
+// its statistics, governing distances and its sections' geometry and zones; distances in m and
+// /H, null where beyond the profile or undefined, with "beyond_profile" flags) and
+// "quarry_average", and "checks" (every check line: subject, id, what, value, limit, unit,
+// rule, status, reason).
 std::string summary_json(const RunInfo& info, const design::RunStatistics& stats,
                          const DesignResults& design = {});
 void write_summary_json(const std::filesystem::path& file, const RunInfo& info,

@@ -1,0 +1,260 @@
+#include "quarries.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "console.hpp"
+#include "report.hpp"
+#include "pierre/design/quarry_distances.hpp"
+#include "pierre/design/run_statistics.hpp"
+#include "pierre/io/output_folder.hpp"
+#include "pierre/io/result_writer.hpp"
+#include "pierre/io/xlsx_report.hpp"
+#include "pierre/sim/runner.hpp"
+
+namespace pierre::app {
+namespace {
+
+// Feeds a section's distances (and the run's overall runout and stop reasons) from each chunk,
+// then hands the chunk on to the CSV files. Chunks arrive in trajectory order, one at a time.
+class QuarrySink final : public sim::ResultSink {
+ public:
+  QuarrySink(sim::ResultSink& next, const design::QuarryGeometry& geometry, design::RunSamples& all)
+      : next_(next), geometry_(geometry), all_(all) {
+    distances.censor_distance = geometry.floor_length;
+  }
+  void consume(sim::ChunkResult&& chunk) override {
+    for (const sim::TrajectorySummary& t : chunk.trajectories) {
+      distances.add(t, geometry_);
+      all_.add(t);
+    }
+    next_.consume(std::move(chunk));
+  }
+  design::QuarryDistances distances;
+
+ private:
+  sim::ResultSink& next_;
+  const design::QuarryGeometry& geometry_;
+  design::RunSamples& all_;
+};
+
+std::string metres(double v, int width, int precision = 1) {
+  if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
+  if (std::isinf(v)) return fmt::format("{:>{}}", v > 0 ? "beyond" : "-inf", width);
+  return fmt::format("{:>{}.{}f}", v, width, precision);
+}
+
+// "calc / obs" (or "calc" alone when nothing was observed).
+std::string pair(double calc, const std::optional<double>& obs, int precision) {
+  std::string s = metres(calc, 0, precision);
+  if (obs) s += " / " + metres(*obs, 0, precision);
+  return s;
+}
+
+std::optional<double> observed_value(const std::optional<design::ObservedComparison>& o,
+                                     double design::ObservedComparison::*field) {
+  if (!o) return std::nullopt;
+  const double v = (*o).*field;
+  if (std::isnan(v)) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
+                            std::optional<std::uint32_t> throws) {
+  if (seed) loaded.scenario.settings.seed = *seed;
+  if (throws) loaded.scenario.settings.throws = *throws;
+  for (std::size_t i = 0; i < loaded.quarries.size(); ++i) {
+    sim::SimulationSettings& s = loaded.quarries[i].scenario.settings;
+    if (seed && !loaded.quarries[i].seed_given) s.seed = *seed + i;
+    if (throws) s.throws = *throws;
+  }
+}
+
+void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
+  fmt::print(out,
+             "\nQuarry danger zones (design-checks.md §2; thesis Tables 6.2, 6.3): horizontal "
+             "distances from the toe,\ncalculated / observed where observed values are given\n");
+  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", "row", "n", "H m",
+             "", "P50", "P95", "P99", "max", "governing");
+  for (const design::QuarryRow& r : d.rows) {
+    const double H = r.height;
+    struct Line {
+      const char* label;
+      const design::DistanceStatistics* s;
+      const std::optional<design::ObservedComparison>* obs;
+      bool per_h;
+      const design::GoverningDistance* gov;
+    };
+    const Line lines[] = {{"RD m", &r.rd, &r.observed_rd, false, &r.rd_gov},
+                          {"RD/H", &r.rd, &r.observed_rd, true, nullptr},
+                          {"ID m", &r.id, &r.observed_id, false, &r.id_gov},
+                          {"ID/H", &r.id, &r.observed_id, true, nullptr}};
+    bool first = true;
+    for (const Line& l : lines) {
+      using OC = design::ObservedComparison;
+      const int p = l.per_h ? 2 : 1;
+      const double p50 = l.per_h ? l.s->p50_h : l.s->p50, p95 = l.per_h ? l.s->p95_h : l.s->p95,
+                   p99 = l.per_h ? l.s->p99_h : l.s->p99, mx = l.per_h ? l.s->max_h : l.s->max;
+      const auto o50 = observed_value(*l.obs, l.per_h ? &OC::p50_h : &OC::p50);
+      const auto o95 = observed_value(*l.obs, l.per_h ? &OC::p95_h : &OC::p95);
+      const auto omx = observed_value(*l.obs, l.per_h ? &OC::max_h : &OC::max);
+      std::string gov;
+      if (l.gov)
+        gov = fmt::format("{}_gov {} m ({})", l.s == &r.rd ? "RD" : "ID",
+                          metres(l.gov->value_h * H, 0), l.gov->how);
+      if (first)
+        fmt::print(out, "{:<18} {:>6} {:>6.1f}  ", r.name, l.s->count, H);
+      else if (l.s == &r.id && !l.per_h)
+        fmt::print(out, "{:<18} {:>6} {:>6}  ", "", l.s->count, "");
+      else
+        fmt::print(out, "{:<18} {:>6} {:>6}  ", "", "", "");
+      first = false;
+      fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", l.label, pair(p50, o50, p),
+                 pair(p95, o95, p), metres(p99, 0, p), pair(mx, omx, p), gov);
+    }
+  }
+  const design::QuarryAverage& a = d.average;
+  auto avg = [&](double calc, double obs) {
+    return a.observed_rows ? pair(calc, obs, 2) : metres(calc, 0, 2);
+  };
+  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", a.rows,
+             "", "RD/H", avg(a.rd50_h, a.obs_rd50_h), avg(a.rd95_h, a.obs_rd95_h), "",
+             avg(a.rdmax_h, a.obs_rdmax_h));
+  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "", "", "", "ID/H",
+             avg(a.id50_h, a.obs_id50_h), avg(a.id95_h, a.obs_id95_h), "",
+             avg(a.idmax_h, a.obs_idmax_h));
+  fmt::print(out, "n: RD over every block thrown, ID over the blocks that reached the floor.\n");
+
+  fmt::print(out, "\nSections\n");
+  for (const design::QuarrySectionResult& s : d.sections) {
+    const design::QuarryGeometry& g = s.geometry;
+    const design::QuarryDistances& q = s.distances;
+    fmt::print(out,
+               "{}: crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); danger zone "
+               "[0, {}] m, first-impact zone [0, {}] m from the toe; {} thrown, {} reached the "
+               "floor, {} stopped above the toe, {} left the section{}\n",
+               s.spec.name, g.crest.x, design::to_string(g.crest_origin), g.toe.x,
+               design::to_string(g.toe_origin), g.height, design::to_string(g.height_origin),
+               metres(s.danger_zone, 0), metres(s.first_impact_zone, 0), q.thrown,
+               q.reached_floor, q.above_toe, q.left_profile,
+               q.abnormal ? fmt::format(", {} stopped by a time/impact limit or numerically",
+                                        q.abnormal)
+                          : std::string());
+  }
+}
+
+void add_quarry_report_data(io::ReportData& data, const io::LoadedScenario& loaded,
+                            const design::QuarryDesign& design, std::size_t paths_per_section) {
+  data.quarry = design;
+  data.quarry_sections.clear();
+  for (const io::QuarrySection& s : loaded.quarries) {
+    io::ReportData::QuarrySectionView v;
+    v.name = s.spec.name;
+    v.profile = &s.scenario.profile;
+    v.paths = sample_paths(s.scenario, paths_per_section);
+    data.quarry_sections.push_back(std::move(v));
+  }
+  for (const io::QuarrySection& s : loaded.quarries) {
+    const std::string entry = s.rules.title.empty() ? s.rules.name : s.rules.name + " — " + s.rules.title;
+    if (std::find(data.rule_sets.begin(), data.rule_sets.end(), entry) == data.rule_sets.end())
+      data.rule_sets.push_back(entry);
+  }
+}
+
+int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& o) {
+  apply_quarry_overrides(loaded, o.seed, o.throws);
+  sim::RunOptions opt;
+  opt.threads = o.threads;
+  opt.record_impacts = o.impacts;
+  opt.all_crossings = o.all_crossings;
+  std::uint64_t total = 0, blocks = 0, sources = 0, chunks = 0;
+  for (const io::QuarrySection& s : loaded.quarries) {
+    const std::uint64_t n = s.scenario.trajectory_count();
+    total += n;
+    blocks += s.scenario.blocks.size();
+    sources += s.scenario.sources.size();
+    chunks = std::max<std::uint64_t>(chunks, (n + opt.chunk_size - 1) / opt.chunk_size);
+  }
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const auto used = static_cast<unsigned>(std::clamp<std::uint64_t>(
+      o.threads ? o.threads : hw, 1, std::max<std::uint64_t>(1, chunks)));
+
+  // The output folder; a failure from here on leaves nothing behind.
+  std::unique_ptr<io::OutputFolder> folder;
+  try {
+    folder = std::make_unique<io::OutputFolder>(o.out);
+  } catch (const std::filesystem::filesystem_error& e) {
+    fmt::print(stderr, "error: cannot create the output folder {}: {}\n", o.out,
+               e.code().message());
+    return kExitInput;
+  }
+  io::ResultFiles files(folder->staging(), o.impacts);
+  design::RunSamples all(0, 1);
+  std::vector<design::QuarrySectionInput> inputs;
+  std::vector<std::uint64_t> seeds;
+  ProgressBar bar(!o.quiet && ::isatty(2));
+  const auto t0 = std::chrono::steady_clock::now();
+  std::uint64_t before = 0;
+  for (io::QuarrySection& s : loaded.quarries) {
+    files.begin_section(s.scenario, s.spec.name);
+    QuarrySink sink(files, s.geometry, all);
+    const sim::RunReport rep = sim::run_simulation(
+        s.scenario, opt, sink,
+        [&](std::uint64_t done, std::uint64_t) { bar.update(before + done, total); });
+    if (rep.error)
+      throw std::runtime_error(fmt::format("writing the results of section \"{}\" failed: {}",
+                                           s.spec.name, *rep.error));
+    before += s.scenario.trajectory_count();
+    inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed});
+    seeds.push_back(s.scenario.settings.seed);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  bar.finish();
+  files.close();
+
+  // The bootstrap streams of row k: [simulation].seed + k.
+  design::QuarryOutcome outcome = design::design_quarry(inputs, loaded.scenario.settings.seed);
+  if (!outcome.design) throw std::runtime_error("quarry danger zones: " + outcome.error);
+  io::DesignResults results;
+  results.checks = outcome.design->checks;
+  results.quarry_seeds = seeds;
+  results.quarry = std::move(*outcome.design);
+
+  const design::RunStatistics stats = design::run_statistics({}, all);
+  io::RunInfo info;
+  info.scenario_name = loaded.scenario.name;
+  info.scenario_file = loaded.file;
+  info.materials_file = loaded.materials_file;
+  info.seed = loaded.scenario.settings.seed;
+  info.throws = loaded.scenario.settings.throws;
+  info.trajectories = total;
+  info.blocks = blocks;
+  info.sources = sources;
+  info.threads = used;
+  info.all_crossings = o.all_crossings;
+  io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, results);
+  // report.xlsx has no quarry sheets yet (add_quarry_report_data gathers their data): a
+  // report left by an earlier run in this folder is removed rather than left to mislead.
+  const auto written = folder->commit({io::kImpactsCsv, io::kReportXlsx});
+  if (!o.quiet) print_results(stdout, stats, seconds, written);
+  if (!o.quiet || o.check) {
+    print_quarries(stdout, *results.quarry);
+    print_design(stdout, results);
+  }
+  if (o.check && design::any_failure(results.checks)) return kExitCheckFailed;
+  return kExitOk;
+}
+
+}  // namespace pierre::app
