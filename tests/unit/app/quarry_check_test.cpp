@@ -1,0 +1,207 @@
+// `pierre validate`, `run` and `check` on quarry scenarios ([[quarries]], docs/quarry.md) with
+// the real binary: exit codes (0 every work area outside its danger zone, 1 one inside, 2 bad
+// quarry input with nothing written), the quarry table and check lines on stdout, "quarries"
+// and "checks" in summary.json, the section column of trajectories.csv, per-section seeds,
+// thread-count reproducibility, and the shipped example (examples/quarry-austria).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kData = PIERRE_TEST_DATA "/quarry-cli/";
+const std::string kExample = PIERRE_SOURCE_DIR "/examples/quarry-austria/scenario.toml";
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class QuarryCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static std::atomic<int> n{0};
+    dir_ = fs::temp_directory_path() /
+           ("pierre-quarry-test-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Result pierre(const std::string& args) {
+    const fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
+    const std::string cmd = std::string("'") + PIERRE_BINARY + "' " + args + " >'" + o.string() +
+                            "' 2>'" + e.string() + "'";
+    const int st = std::system(cmd.c_str());
+    Result r;
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    r.out = slurp(o);
+    r.err = slurp(e);
+    return r;
+  }
+  nlohmann::json summary(const fs::path& out) {
+    return nlohmann::json::parse(slurp(out / "summary.json"));
+  }
+
+  fs::path dir_;
+};
+
+const nlohmann::json& check(const nlohmann::json& j, const std::string& subject,
+                            const std::string& id) {
+  for (const auto& c : j["checks"])
+    if (c["subject"] == subject && c["id"] == id) return c;
+  throw std::runtime_error("no check " + subject + " " + id);
+}
+
+TEST_F(QuarryCli, WorkAreasOutsideTheZonesExitZero) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " + kData + "pass.toml --out '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  // The console: the table of Tables 6.2/6.3 and the check lines.
+  for (const char* s : {"Quarry danger zones", "RD m", "RD/H", "ID m", "ID/H", "P50", "P95", "P99",
+                        "max", "RD_gov", "ID_gov", "Checks", "zone.crusher", "zone.office"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
+  const auto j = summary(out);
+  EXPECT_EQ(j["checks_failed"], false);
+  EXPECT_EQ(check(j, "North", "zone.crusher")["status"], "PASS");
+  EXPECT_EQ(check(j, "South", "zone.office")["status"], "PASS");
+  EXPECT_EQ(check(j, "North", "bench.retention")["status"], "PASS");
+  EXPECT_FALSE(j.contains("barriers"));
+  // "quarries": one row per lone section, with its statistics and its section's zones.
+  ASSERT_EQ(j["quarries"].size(), 2u);
+  const auto& north = j["quarries"][0];
+  EXPECT_EQ(north["name"], "North");
+  EXPECT_EQ(north["pooled"], false);
+  EXPECT_EQ(north["rules"]["name"], "quarry-thesis-2015");
+  EXPECT_EQ(north["thrown"], 600);  // 2 blocks x 300 throws
+  EXPECT_EQ(north["runout"]["count"], 600);
+  EXPECT_DOUBLE_EQ(north["height_m"].get<double>(), 20.0);
+  const double rd95 = north["runout"]["p95_m"].get<double>();
+  EXPECT_GT(rd95, 0.0);
+  EXPECT_DOUBLE_EQ(north["RD_gov"]["value_m"].get<double>(), rd95);  // thesis rule: RD95
+  EXPECT_NEAR(north["runout"]["p95_h"].get<double>(), rd95 / 20.0, 1e-12);
+  const auto& sec = north["sections"][0];
+  EXPECT_EQ(sec["name"], "North");
+  EXPECT_EQ(sec["seed"], 11);  // [simulation].seed + 0
+  EXPECT_EQ(sec["geometry"]["toe"]["origin"], "found");
+  EXPECT_DOUBLE_EQ(sec["geometry"]["toe"]["x_m"].get<double>(), 20.0);
+  EXPECT_DOUBLE_EQ(sec["danger_zone_m"].get<double>(), rd95);
+  EXPECT_DOUBLE_EQ(check(j, "North", "zone.crusher")["limit"].get<double>(), rd95);
+  const auto& south = j["quarries"][1]["sections"][0];
+  EXPECT_EQ(south["seed"], 12);  // [simulation].seed + 1
+  EXPECT_EQ(south["geometry"]["toe"]["origin"], "given");
+  EXPECT_EQ(j["trajectories"], 900);
+  EXPECT_TRUE(j.contains("quarry_average"));
+  // One trajectories.csv for both sections, each row led by its section.
+  const std::string csv = slurp(out / "trajectories.csv");
+  EXPECT_EQ(csv.rfind("section,trajectory,source,block_id,", 0), 0u);
+  EXPECT_NE(csv.find("\nNorth,0,"), std::string::npos);
+  EXPECT_NE(csv.find("\nSouth,0,"), std::string::npos);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 901);
+}
+
+TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " + kData + "fail.toml --out '" + out.string() + "' --quiet");
+  ASSERT_EQ(r.code, 1) << r.err << r.out;
+  EXPECT_NE(r.out.find("FAIL North zone.crusher"), std::string::npos) << r.out;
+  const auto j = summary(out);
+  EXPECT_EQ(check(j, "North", "zone.crusher")["status"], "FAIL");
+  EXPECT_DOUBLE_EQ(check(j, "North", "zone.crusher")["value"].get<double>(), 2.0);
+  EXPECT_EQ(check(j, "South", "zone.office")["status"], "PASS");
+  EXPECT_EQ(j["checks_failed"], true);
+  EXPECT_EQ(j["quarries"][0]["sections"][0]["work_areas"][0]["inside_zone"], true);
+  EXPECT_TRUE(fs::exists(out / "trajectories.csv"));
+  // `pierre run` exits 0 whatever the checks say.
+  const fs::path out2 = dir_ / "out2";
+  const Result run = pierre("run " + kData + "fail.toml --out '" + out2.string() + "'");
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(check(summary(out2), "North", "zone.crusher")["status"], "FAIL");
+}
+
+TEST_F(QuarryCli, BadQuarryInputExitsTwoAndWritesNothing) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " + kData + "bad.toml --out '" + out.string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("bad.toml:36: quarries[1].work_areas[0].distance: found -5.0"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(pierre("run " + kData + "bad.toml --out '" + out.string() + "'").code, 2);
+  EXPECT_EQ(pierre("validate " + kData + "bad.toml").code, 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(QuarryCli, ValidateListsTheSections) {
+  const Result r = pierre("validate " + kData + "pass.toml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("a quarry scenario of 2 sections"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("quarry section \"North\": 4 vertices"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("toe x = 20.00 m (found)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("toe x = 22.00 m (given)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("H = 20.00 m (found)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("600 trajectories"), std::string::npos) << r.out;
+}
+
+TEST_F(QuarryCli, SameSeedSameResultsWhateverTheThreads) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  ASSERT_EQ(pierre("check " + kData + "pass.toml --out '" + a.string() + "' -q --threads 1").code, 0);
+  ASSERT_EQ(pierre("check " + kData + "pass.toml --out '" + b.string() + "' -q --threads 2").code, 0);
+  auto ja = summary(a), jb = summary(b);
+  EXPECT_EQ(ja["threads"], 1);
+  EXPECT_EQ(jb["threads"], 2);
+  ja.erase("threads");
+  jb.erase("threads");
+  EXPECT_EQ(ja, jb);
+  EXPECT_EQ(slurp(a / "trajectories.csv"), slurp(b / "trajectories.csv"));
+}
+
+TEST_F(QuarryCli, SeedOptionMovesEverySectionWithoutItsOwnSeed) {
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(pierre("run " + kData + "pass.toml --out '" + out.string() + "' -q --seed 500 --throws 20").code, 0);
+  const auto j = summary(out);
+  EXPECT_EQ(j["seed"], 500);
+  EXPECT_EQ(j["quarries"][0]["sections"][0]["seed"], 500);
+  EXPECT_EQ(j["quarries"][1]["sections"][0]["seed"], 501);
+  EXPECT_EQ(j["quarries"][0]["thrown"], 40);
+}
+
+TEST_F(QuarryCli, TheAustrianExampleValidatesAndRuns) {
+  const Result v = pierre("validate '" + kExample + "'");
+  ASSERT_EQ(v.code, 0) << v.err;
+  EXPECT_NE(v.out.find("a quarry scenario of 7 sections"), std::string::npos) << v.out;
+  EXPECT_NE(v.out.find("quarry section \"Pauliberg B\" (group \"Pauliberg\")"), std::string::npos);
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("run '" + kExample + "' --out '" + out.string() + "' --throws 2 -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = summary(out);
+  ASSERT_EQ(j["quarries"].size(), 6u);  // Pauliberg A and B pooled into one row
+  EXPECT_EQ(j["quarries"][1]["name"], "Pauliberg");
+  EXPECT_EQ(j["quarries"][1]["pooled"], true);
+  EXPECT_EQ(j["quarries"][1]["sections"].size(), 2u);
+  EXPECT_EQ(j["quarries"][0]["thrown"], 97 * 2);
+  EXPECT_EQ(j["quarry_average"]["rows"], 6);
+  EXPECT_TRUE(j["quarries"][0]["observed"]["runout"]["p95_m"].is_number());
+}
+
+}  // namespace
