@@ -60,13 +60,15 @@ class RunCommand final : public Command {
                 "Write every crossing of the observation lines to crossings.csv, not only the "
                 "first in the main direction (the statistics still use the first)");
     c->add_option("--rules", rules_,
-                  "Rules folder holding materials.toml and the barrier rule sets");
+                  "Rules folder holding materials.toml and the barrier and quarry rule sets");
     if (check_)
       c->footer(
           "Example:\n"
           "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
           "runs like `pierre run`, computes every [[barriers]] entry (design-checks.md §1), writes\n"
           "summary.json with \"barriers\" and \"checks\" and report.xlsx, prints the check lines.\n"
+          "A quarry scenario ([[quarries]], docs/quarry.md): every section's danger zone and its\n"
+          "checks (zone.<work area>, bench.*), summary.json \"quarries\" and \"checks\".\n"
           "Exit code 0 when every check passes (WARN does not count), 1 when one FAILs, 2 on bad input, 3 on an\n"
           "internal error.");
     else
@@ -74,7 +76,8 @@ class RunCommand final : public Command {
           "Example:\n"
           "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42 --threads 8\n"
           "writes results/vaujany/{trajectories.csv, crossings.csv, summary.json, report.xlsx}; with\n"
-          "--impacts also impacts.csv. Barriers are computed and printed too. Exit code 0 when it ran\n"
+          "--impacts also impacts.csv. Barriers are computed and printed too; so are the danger\n"
+          "zones of a quarry scenario (docs/quarry.md). Exit code 0 when it ran\n"
           "(whatever the checks say: see `pierre check`), 2 on bad input, 3 on an internal error.");
     return c;
   }
