@@ -23,10 +23,14 @@ using Keys = std::vector<std::string>;
 const Keys kChartKeys = {"title", "x_axis", "y_axis"};
 const Keys kCharts = {"speed_histogram", "height_histogram", "energy_histogram",
                       "speed_cdf",       "height_cdf",       "energy_cdf",
-                      "profile"};
-const Keys kSheetKeys = {"summary",      "inputs",   "barrier", "profile",
+                      "profile",         "rd_histogram",     "id_histogram",
+                      "rd_cdf",          "id_cdf",           "quarry_section"};
+const Keys kSheetKeys = {"summary",      "inputs",   "barrier", "quarry", "profile",
                          "trajectories", "crossings"};
-const Keys kOrderKeys = {"summary", "barriers", "profile", "inputs", "trajectories", "crossings"};
+const Keys kOrderKeys = {"summary", "barriers", "quarries", "profile",
+                         "inputs",  "trajectories", "crossings"};
+// Sheet names holding "{name}" (one sheet per barrier / per quarry row).
+bool per_item_sheet(std::string_view key) { return key == "barrier" || key == "quarry"; }
 
 std::map<std::string, Keys, std::less<>> make_sections() {
   std::map<std::string, Keys, std::less<>> s;
@@ -40,11 +44,15 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "scenario_text", "barrier",     "statistics",     "bootstrap",
                  "design",       "factors",      "exceedance",     "barrier_checks",
                  "notes",        "chart_data",   "profile",        "trajectories",
-                 "crossings",    "capped",       "complete"};
+                 "crossings",    "capped",       "complete",     "quarry",
+                 "quarry_summary", "quarry_average", "quarry_geometry", "quarry_counts",
+                 "quarry_zones", "quarry_statistics", "quarry_fits", "quarry_exceedance",
+                 "quarry_governing"};
   s["labels"] = {"project",       "description", "scenario_file", "date",        "version",
                  "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
-                 "bootstrap_seed", "none"};
+                 "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
+                 "id",            "beyond_profile", "pooled",    "observed_source", "total"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};
@@ -101,6 +109,33 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                              "time",       "direction", "vx",   "vz",     "speed",
                              "omega",      "translational_energy", "rotational_energy",
                              "passing_height", "sliding"};
+  // Quarry danger zones (design-checks.md §2).
+  s["headings.quarry_summary"] = {"row",    "source", "height", "thrown", "rd_gov", "id_gov",
+                                  "rd50_h", "rd95_h", "rdmax_h", "id50_h", "id95_h", "idmax_h"};
+  s["headings.quarry_geometry"] = {"section", "crest_x",  "crest_z", "crest_origin",
+                                   "toe_x",   "toe_z",    "toe_origin", "height",
+                                   "height_derived", "height_origin", "floor_angle",
+                                   "floor_length"};
+  s["headings.quarry_counts"] = {"section",   "thrown",       "reached_floor", "not_reached_floor",
+                                 "above_toe", "left_profile", "left_upslope",  "abnormal"};
+  s["headings.quarry_zones"] = {"section",   "danger_zone", "first_impact_zone", "bench_width",
+                                "retention", "ritchie_width", "work_areas"};
+  s["headings.quarry_statistics"] = {"distance", "source", "count", "zeros", "censored", "p50",
+                                     "p95",      "p99",    "max",   "p50_h", "p95_h",    "p99_h",
+                                     "max_h"};
+  s["headings.quarry_fits"] = {"distance", "zero_share", "mu",     "sigma",    "observed",
+                               "censored", "ks_d",       "ks_p",   "ks_below", "cdf_rmse",
+                               "observed_ks_d", "observed_ks_p", "fit_error"};
+  s["headings.quarry_exceedance"] = {"probability", "rd_fit_h", "rd_empirical_h", "rd_fit",
+                                     "rd_empirical", "id_fit_h", "id_empirical_h", "id_fit",
+                                     "id_empirical"};
+  s["headings.quarry_governing"] = {"quantity", "value_h", "value", "how", "rd_gov", "id_gov",
+                                    "rd_lower", "rd_upper"};
+  s["headings.quarry_chart"] = {"outline_x",  "outline_y",  "curve_x",     "fitted_pdf",
+                                "empirical_cdf", "fitted_cdf", "observed_x", "observed_cdf",
+                                "histogram", "source",     "x",           "z",
+                                "profile",   "paths",      "toe",         "danger_zone",
+                                "first_impact_zone", "work_areas"};
   for (const auto& c : kCharts) s["chart." + c] = kChartKeys;
   return s;
 }
@@ -108,7 +143,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
 const Keys kColours = {"heading_font", "heading_fill", "title_font", "note_font", "pass_font",
                        "pass_fill",    "fail_font",    "fail_fill",  "warn_font", "warn_fill",
                        "profile",      "paths",        "lines",      "barriers",  "histogram",
-                       "weibull",      "lognormal",    "empirical"};
+                       "weibull",      "lognormal",    "empirical",  "observed",  "toe",
+                       "danger_zone",  "first_impact_zone", "work_areas"};
 
 std::string read_text(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -186,7 +222,7 @@ void check_sheet_name(const TomlTable& t, std::string_view key, const std::strin
   bool ok = !name.empty() && name.size() <= 31 &&
             name.find_first_of("[]:*?/\\") == std::string::npos && name.front() != '\'' &&
             name.back() != '\'';
-  if (key == "barrier") ok = ok || (!name.empty() && name.find("{name}") != std::string::npos);
+  if (per_item_sheet(key)) ok = ok || (!name.empty() && name.find("{name}") != std::string::npos);
   t.check(key, ok, expected);
 }
 
@@ -259,7 +295,7 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
     // Distinct fixed names (the barrier sheets are made distinct when written).
     for (std::size_t i = 0; i < kSheetKeys.size(); ++i)
       for (std::size_t j = i + 1; j < kSheetKeys.size(); ++j)
-        if (kSheetKeys[i] != "barrier" && kSheetKeys[j] != "barrier" &&
+        if (!per_item_sheet(kSheetKeys[i]) && !per_item_sheet(kSheetKeys[j]) &&
             names[kSheetKeys[i]] == names[kSheetKeys[j]])
           t.fail(kSheetKeys[j], fmt::format("a name other than sheets.{}'s", kSheetKeys[i]));
   }

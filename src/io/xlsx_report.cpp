@@ -193,13 +193,26 @@ class Report {
                     double y_scale = 1);
 
   // -- sheets
-  std::string barrier_sheet_name(const std::string& barrier, std::vector<std::string>& used);
+  // The sheet of a barrier or a quarry row: the template's sheets.<key> with {name} replaced.
+  std::string item_sheet_name(std::string_view key, const std::string& item,
+                              std::vector<std::string>& used);
   void summary(lxw_worksheet* ws);
   Row check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
                   bool subject);
   void inputs(lxw_worksheet* ws);
   void barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b);
   void profile(lxw_worksheet* ws, const std::string& sheet);
+  // Quarry danger zones (xlsx_report.cpp, "a quarry row").
+  Row quarry_summary(lxw_worksheet* ws, Row r);
+  void quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t row);
+  // A distance (m or /H): a number, or "beyond the profile" for +infinity.
+  void distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
+  // The histogram, CDF and fitted curves of one distance of a row (data block at `data_row`,
+  // charts at `at` and beside it); returns the next free data row.
+  Row quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
+                             Col cdf_col, std::string_view which, const design::QuarryRow& row);
+  Row quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
+                           const design::QuarrySectionResult& s);
   void trajectories(lxw_worksheet* ws);
   void crossings(lxw_worksheet* ws);
   Row cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
@@ -487,15 +500,16 @@ std::optional<std::uint32_t> Report::line_index(const std::string& name) const {
 
 // Excel's rules: at most 31 characters, none of []:*?/\, not starting or ending with ', unique
 // regardless of case. Apostrophes are replaced too, so that chart ranges never need escaping.
-std::string Report::barrier_sheet_name(const std::string& barrier,
-                                       std::vector<std::string>& used) {
-  std::string base = replace_all(t_.get("sheets", "barrier"), "{name}", barrier);
+std::string Report::item_sheet_name(std::string_view key, const std::string& item,
+                                    std::vector<std::string>& used) {
+  const std::string fallback = key == "quarry" ? "Quarry" : "Barrier";
+  std::string base = replace_all(t_.get("sheets", key), "{name}", item);
   for (char& c : base)
     if (std::string_view("[]:*?/\\'").find(c) != std::string_view::npos) c = '_';
-  if (base.empty()) base = "Barrier";
-  auto trimmed = [](std::string t) {
+  if (base.empty()) base = fallback;
+  auto trimmed = [&fallback](std::string t) {
     while (!t.empty() && t.back() == ' ') t.pop_back();
-    return t.empty() ? std::string("Barrier") : t;
+    return t.empty() ? fallback : t;
   };
   base = trimmed(utf8_prefix(base, 31));
   std::string name = base;
@@ -567,7 +581,7 @@ void Report::summary(lxw_worksheet* ws) {
   width(ws, 6, 6, 26);
   width(ws, 7, 7, 10);
   width(ws, 8, 8, 44);
-  width(ws, 9, 9, 12);
+  width(ws, 9, 11, 12);
 
   const LoadedScenario* sc = d_.scenario;
   text(ws, 0, 0, t_.get("titles", "summary"), title());
@@ -672,12 +686,24 @@ void Report::summary(lxw_worksheet* ws) {
     }
   }
 
-  // Every check line.
+  // Quarry danger zones: Tables 6.2/6.3's rows and their average.
+  if (d_.quarry) r = quarry_summary(ws, r);
+
+  // Every check line, whatever its subject: the caller's, then the quarry design's that the
+  // caller did not pass (same subject and id).
+  std::vector<design::CheckLine> lines = d_.checks;
+  if (d_.quarry)
+    for (const auto& l : d_.quarry->checks)
+      if (std::none_of(d_.checks.begin(), d_.checks.end(), [&](const design::CheckLine& c) {
+            return c.subject == l.subject && c.id == l.id;
+          }))
+        lines.push_back(l);
   ++r;
   text(ws, r++, 0, t_.get("titles", "checks"), section());
   const Row head = r;
-  r = check_table(ws, r, d_.checks, true);
-  check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, 9), "worksheet_print_area");
+  r = check_table(ws, r, lines, true);
+  check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : 9),
+        "worksheet_print_area");
   check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
 }
 
@@ -1343,6 +1369,587 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   }
 }
 
+// ---- a quarry row (design-checks.md §2) ------------------------------------------------
+
+void Report::distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f) {
+  if (std::isinf(v) && v > 0)
+    text(ws, r, c, t_.get("labels", "beyond_profile"), centred());
+  else
+    num(ws, r, c, v, f);
+}
+
+Row Report::quarry_summary(lxw_worksheet* ws, Row r) {
+  const design::QuarryDesign& q = *d_.quarry;
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "quarry_summary"), section());
+  headings(ws, r++, 0, "quarry_summary",
+           {"row", "source", "height", "thrown", "rd_gov", "id_gov", "rd50_h", "rd95_h",
+            "rdmax_h", "id50_h", "id95_h", "idmax_h"},
+           45);
+  lxw_format *lf = number("length", 1), *hf = number("factor", 1);
+  for (const auto& row : q.rows) {
+    text(ws, r, 0, row.name, wrap());
+    text(ws, r, 1, t_.get("labels", "calculated"), centred());
+    num(ws, r, 2, row.height, lf);
+    num(ws, r, 3, static_cast<double>(row.thrown), number("count", 1));
+    distance(ws, r, 4, row.rd_gov.value_h * row.height, lf);
+    distance(ws, r, 5, row.id_gov.value_h * row.height, lf);
+    distance(ws, r, 6, row.rd.p50_h, hf);
+    distance(ws, r, 7, row.rd.p95_h, hf);
+    distance(ws, r, 8, row.rd.max_h, hf);
+    distance(ws, r, 9, row.id.p50_h, hf);
+    distance(ws, r, 10, row.id.p95_h, hf);
+    distance(ws, r, 11, row.id.max_h, hf);
+    ++r;
+    if (row.observed_rd || row.observed_id) {
+      text(ws, r, 0, row.name, wrap());
+      text(ws, r, 1, t_.get("labels", "observed"), centred());
+      if (row.observed_rd) {
+        num(ws, r, 6, row.observed_rd->p50_h, hf);
+        num(ws, r, 7, row.observed_rd->p95_h, hf);
+        num(ws, r, 8, row.observed_rd->max_h, hf);
+      }
+      if (row.observed_id) {
+        num(ws, r, 9, row.observed_id->p50_h, hf);
+        num(ws, r, 10, row.observed_id->p95_h, hf);
+        num(ws, r, 11, row.observed_id->max_h, hf);
+      }
+      ++r;
+    }
+  }
+  // The thesis's last rows: means over the rows of the per-row ratios.
+  const auto& a = q.average;
+  auto avg = [&](const std::string& source, double rd50, double rd95, double rdmax, double id50,
+                 double id95, double idmax) {
+    text(ws, r, 0, t_.get("titles", "quarry_average"), bold());
+    text(ws, r, 1, source, centred_bold());
+    distance(ws, r, 6, rd50, hf);
+    distance(ws, r, 7, rd95, hf);
+    distance(ws, r, 8, rdmax, hf);
+    distance(ws, r, 9, id50, hf);
+    distance(ws, r, 10, id95, hf);
+    distance(ws, r, 11, idmax, hf);
+    ++r;
+  };
+  if (a.rows > 0)
+    avg(t_.get("labels", "calculated"), a.rd50_h, a.rd95_h, a.rdmax_h, a.id50_h, a.id95_h,
+        a.idmax_h);
+  if (a.observed_rows > 0)
+    avg(t_.get("labels", "observed"), a.obs_rd50_h, a.obs_rd95_h, a.obs_rdmax_h, a.obs_id50_h,
+        a.obs_id95_h, a.obs_idmax_h);
+  return r;
+}
+
+void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri) {
+  const design::QuarryDesign& q = *d_.quarry;
+  const design::QuarryRow& row = q.rows[ri];
+  std::vector<const design::QuarrySectionResult*> secs;
+  for (std::size_t i : row.sections)
+    if (i < q.sections.size()) secs.push_back(&q.sections[i]);
+  page_setup(ws);
+  width(ws, 0, 0, 30);
+  width(ws, 1, 13, 13);
+  text(ws, 0, 0, replace_all(t_.get("titles", "quarry"), "{name}", row.name), title());
+  check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
+  Row r = 2;
+  auto label = [&](const std::string& l) { text(ws, r, 0, l, bold()); };
+  label(t_.get("labels", "rules"));
+  text(ws, r++, 1,
+       secs.empty() || secs[0]->rules_title.empty()
+           ? row.rules
+           : fmt::format("{} — {}", row.rules, secs[0]->rules_title));
+  if (!secs.empty() && !secs[0]->rules_source.empty()) text(ws, r++, 1, secs[0]->rules_source, note());
+  if (row.pooled) {
+    std::string names;
+    for (const auto* s : secs) names += (names.empty() ? "" : ", ") + s->spec.name;
+    label(t_.get("labels", "pooled"));
+    text(ws, r++, 1, names);
+  }
+  for (const auto* s : secs)
+    if (!s->spec.observed_source.empty()) {
+      label(t_.get("labels", "observed_source"));
+      text(ws, r++, 1, row.pooled ? fmt::format("{}: {}", s->spec.name, s->spec.observed_source)
+                                  : s->spec.observed_source);
+    }
+  lxw_format *xf = number("coordinate"), *lf = number("length"), *hf = number("factor"),
+             *pf = number("parameter"), *af = number("angle");
+
+  // Geometry: crest, toe, H (given or found).
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "quarry_geometry"), section());
+  headings(ws, r++, 0, "quarry_geometry",
+           {"section", "crest_x", "crest_z", "crest_origin", "toe_x", "toe_z", "toe_origin",
+            "height", "height_derived", "height_origin", "floor_angle", "floor_length"},
+           45);
+  for (const auto* s : secs) {
+    const auto& g = s->geometry;
+    text(ws, r, 0, s->spec.name, wrap());
+    num(ws, r, 1, g.crest.x, xf);
+    num(ws, r, 2, g.crest.z, xf);
+    text(ws, r, 3, std::string(design::to_string(g.crest_origin)), centred());
+    num(ws, r, 4, g.toe.x, xf);
+    num(ws, r, 5, g.toe.z, xf);
+    text(ws, r, 6, std::string(design::to_string(g.toe_origin)), centred());
+    num(ws, r, 7, g.height, lf);
+    num(ws, r, 8, g.height_derived, lf);
+    text(ws, r, 9, std::string(design::to_string(g.height_origin)), centred());
+    num(ws, r, 10, g.floor_angle_deg, af);
+    num(ws, r++, 11, g.floor_length, lf);
+  }
+
+  // Counts.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "quarry_counts"), section());
+  headings(ws, r++, 0, "quarry_counts",
+           {"section", "thrown", "reached_floor", "not_reached_floor", "above_toe",
+            "left_profile", "left_upslope", "abnormal"},
+           45);
+  auto counts = [&](const std::string& name, std::uint64_t thrown, std::uint64_t reached,
+                    std::uint64_t not_reached, std::uint64_t above, std::uint64_t left,
+                    std::uint64_t upslope, std::uint64_t abnormal, bool total) {
+    text(ws, r, 0, name, total ? bold() : wrap());
+    Col c = 1;
+    for (std::uint64_t v : {thrown, reached, not_reached, above, left, upslope, abnormal})
+      count(ws, r, c++, v);
+    ++r;
+  };
+  for (const auto* s : secs) {
+    const auto& d = s->distances;
+    counts(s->spec.name, d.thrown, d.reached_floor, d.not_reached_floor, d.above_toe,
+           d.left_profile, d.left_upslope, d.abnormal, false);
+  }
+  if (secs.size() > 1)
+    counts(t_.get("labels", "total"), row.thrown, row.reached_floor, row.not_reached_floor,
+           row.above_toe, row.left_profile, row.left_upslope, row.abnormal, true);
+
+  // Tables 6.2 / 6.3: calculated beside observed.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "quarry_statistics"), section());
+  headings(ws, r++, 0, "quarry_statistics",
+           {"distance", "source", "count", "zeros", "censored", "p50", "p95", "p99", "max",
+            "p50_h", "p95_h", "p99_h", "max_h"},
+           30);
+  struct Dist {
+    std::string_view key;
+    const design::DistanceStatistics* st;
+    const std::optional<design::ObservedComparison>* obs;
+  };
+  const Dist dists[] = {{"rd", &row.rd, &row.observed_rd}, {"id", &row.id, &row.observed_id}};
+  for (const auto& dd : dists) {
+    const auto& st = *dd.st;
+    text(ws, r, 0, t_.get("labels", dd.key), bold());
+    text(ws, r, 1, t_.get("labels", "calculated"), centred());
+    count(ws, r, 2, st.count);
+    count(ws, r, 3, st.zeros);
+    count(ws, r, 4, st.censored);
+    Col c = 5;
+    for (double v : {st.p50, st.p95, st.p99, st.max}) distance(ws, r, c++, v, lf);
+    for (double v : {st.p50_h, st.p95_h, st.p99_h, st.max_h}) distance(ws, r, c++, v, hf);
+    ++r;
+    if (*dd.obs) {
+      const auto& o = **dd.obs;
+      text(ws, r, 0, t_.get("labels", dd.key), bold());
+      text(ws, r, 1, t_.get("labels", "observed"), centred());
+      if (o.count > 0) count(ws, r, 2, o.count);
+      num(ws, r, 5, o.p50, lf);
+      num(ws, r, 6, o.p95, lf);
+      num(ws, r, 8, o.max, lf);
+      num(ws, r, 9, o.p50_h, hf);
+      num(ws, r, 10, o.p95_h, hf);
+      num(ws, r, 12, o.max_h, hf);
+      ++r;
+    }
+  }
+
+  // The log-normal mixture fits and the comparison with the observed values.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "quarry_fits"), section());
+  headings(ws, r++, 0, "quarry_fits",
+           {"distance", "zero_share", "mu", "sigma", "observed", "censored", "ks_d", "ks_p",
+            "ks_below", "cdf_rmse", "observed_ks_d", "observed_ks_p", "fit_error"},
+           45);
+  for (const auto& dd : dists) {
+    const auto& st = *dd.st;
+    text(ws, r, 0, t_.get("labels", dd.key), bold());
+    if (st.fit) {
+      num(ws, r, 1, st.fit->zero_share, number("percent"));
+      num(ws, r, 2, st.fit->positive.mu, pf);
+      num(ws, r, 3, st.fit->positive.sigma, pf);
+      count(ws, r, 4, st.fit->observed);
+      count(ws, r, 5, st.fit->censored);
+    }
+    if (st.ks) {
+      num(ws, r, 6, st.ks->statistic, pf);
+      num(ws, r, 7, st.ks->p_value, pf);
+      num(ws, r, 8, st.ks->below, hf);
+    }
+    if (*dd.obs) {
+      const auto& o = **dd.obs;
+      if (o.cdf_rmse) num(ws, r, 9, *o.cdf_rmse, pf);
+      if (o.ks) {
+        num(ws, r, 10, o.ks->statistic, pf);
+        num(ws, r, 11, o.ks->p_value, pf);
+      }
+    }
+    text(ws, r, 12, st.fit_error, wrap());
+    ++r;
+  }
+
+  // Distances at the asked probabilities of exceedance.
+  if (!row.exceedance.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "quarry_exceedance"), section());
+    headings(ws, r++, 0, "quarry_exceedance",
+             {"probability", "rd_fit_h", "rd_empirical_h", "rd_fit", "rd_empirical", "id_fit_h",
+              "id_empirical_h", "id_fit", "id_empirical"},
+             30);
+    for (const auto& e : row.exceedance) {
+      num(ws, r, 0, e.probability, number("probability", 1));
+      distance(ws, r, 1, e.rd_fit_h, hf);
+      distance(ws, r, 2, e.rd_empirical_h, hf);
+      distance(ws, r, 3, e.rd_fit, lf);
+      distance(ws, r, 4, e.rd_empirical, lf);
+      distance(ws, r, 5, e.id_fit_h, hf);
+      distance(ws, r, 6, e.id_empirical_h, hf);
+      distance(ws, r, 7, e.id_fit, lf);
+      distance(ws, r, 8, e.id_empirical, lf);
+      ++r;
+    }
+  }
+
+  // Governing distances.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "quarry_governing"), section());
+  headings(ws, r, 0, "quarry_governing", {"quantity", "value_h", "value"});
+  check(worksheet_merge_range(ws, r, 3, r, 9, h("quarry_governing", "how").c_str(), heading()),
+        "worksheet_merge_range");
+  ++r;
+  auto gov = [&](std::string_view key, double vh, const std::string& how) {
+    text(ws, r, 0, h("quarry_governing", key), bold());
+    distance(ws, r, 1, vh, hf);
+    distance(ws, r, 2, vh * row.height, lf);
+    text(ws, r++, 3, how);
+  };
+  gov("rd_gov", row.rd_gov.value_h, row.rd_gov.how);
+  gov("id_gov", row.id_gov.value_h, row.id_gov.how);
+  if (row.rd_interval) {
+    const auto& iv = *row.rd_interval;
+    const std::string how = fmt::format("{:.0f} % bootstrap interval, {} resamples (estimate {:.3f} H)",
+                                        100 * iv.confidence, iv.resamples, iv.estimate);
+    gov("rd_lower", iv.lower, how);
+    gov("rd_upper", iv.upper, how);
+  }
+
+  // Zones per section.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "quarry_zones"), section());
+  headings(ws, r, 0, "quarry_zones",
+           {"section", "danger_zone", "first_impact_zone", "bench_width", "retention",
+            "ritchie_width"},
+           45);
+  check(worksheet_merge_range(ws, r, 6, r, 9, h("quarry_zones", "work_areas").c_str(), heading()),
+        "worksheet_merge_range");
+  ++r;
+  for (const auto* s : secs) {
+    text(ws, r, 0, s->spec.name, wrap());
+    distance(ws, r, 1, s->danger_zone, lf);
+    distance(ws, r, 2, s->first_impact_zone, lf);
+    opt(ws, r, 3, s->spec.bench_width, lf);
+    opt(ws, r, 4, s->bench_retention, number("percent"));
+    opt(ws, r, 5, s->ritchie_width, lf);
+    std::string areas;
+    for (const auto& w : s->spec.work_areas)
+      areas += fmt::format("{}{} {} m", areas.empty() ? "" : "; ", w.name, format_number(w.distance));
+    text(ws, r, 6, keep(areas), wrap());
+    check(worksheet_merge_range(ws, r, 6, r, 9, areas.c_str(), wrap()), "worksheet_merge_range");
+    fit_row(ws, r, {{&strings_.back(), 52}, {&s->spec.name, 30}});
+    ++r;
+  }
+
+  // This row's check lines.
+  std::vector<design::CheckLine> lines;
+  for (const auto& l : q.checks) {
+    bool mine = l.subject == row.name;
+    for (const auto* s : secs) mine = mine || l.subject == s->spec.name;
+    if (mine) lines.push_back(l);
+  }
+  if (!lines.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "barrier_checks"), section());
+    r = check_table(ws, r, lines, false);
+  }
+
+  // ---- charts and their data: the sections first, then RD and ID ----
+  ++r;
+  const Row chart_row = r;
+  const Row rows_per_chart = static_cast<Row>(std::ceil(t_.chart_height / 20.0)) + 1;
+  const Row rows_per_section = static_cast<Row>(std::ceil(1.4 * t_.chart_height / 20.0)) + 1;
+  const Row n_sections = static_cast<Row>(secs.size());
+  Row data_row = chart_row + n_sections * rows_per_section + 2 * rows_per_chart + 1;
+  text(ws, data_row++, 0, t_.get("titles", "chart_data"), section());
+  check(worksheet_print_area(ws, 0, 0, data_row - 3, 13), "worksheet_print_area");
+  auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row, 0});
+  check(worksheet_set_h_pagebreaks(ws, breaks.data()), "worksheet_set_h_pagebreaks");
+
+  Row at = chart_row;
+  for (const auto* s : secs) {
+    data_row = quarry_section_chart(ws, sheet, data_row, {at, 0}, *s);
+    at += rows_per_section;
+  }
+  data_row = quarry_distance_charts(ws, sheet, data_row, {at, 0}, 6, "rd", row);
+  at += rows_per_chart;
+  quarry_distance_charts(ws, sheet, data_row, {at, 0}, 6, "id", row);
+}
+
+Row Report::quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, Row data_row,
+                                   Cell at, Col cdf_col, std::string_view which,
+                                   const design::QuarryRow& row) {
+  const bool rd = which == "rd";
+  const design::DistanceSample& sample = rd ? row.rd_sample : row.id_sample;
+  const design::DistanceStatistics& st = rd ? row.rd : row.id;
+  const auto& obs = rd ? row.observed_rd : row.observed_id;
+  const std::vector<double>& x = sample.normalized;
+  const std::string key(which);
+
+  ++data_row;
+  text(ws, data_row++, 0, t_.get("labels", which), section());
+  text(ws, data_row++, 0,
+       replace_all(replace_all(replace_all(h("quarry_chart", "source"), "{n}",
+                                           std::to_string(x.size())),
+                               "{zeros}", std::to_string(st.zeros)),
+                   "{censored}", std::to_string(st.censored)),
+       note());
+  headings(ws, data_row++, 0, "quarry_chart",
+           {"outline_x", "outline_y", "curve_x", "fitted_pdf", "empirical_cdf", "fitted_cdf",
+            "observed_x", "observed_cdf"});
+  const Row r0 = data_row;
+  lxw_format *hf = number("factor"), *pf = number("parameter");
+
+  // The columns: the positive finite values, density over every value (zeros and censored
+  // count in n), so that they compare with (1 − p0) f_logn.
+  double hi = 0;
+  std::size_t positive = 0;
+  for (double v : x)
+    if (std::isfinite(v) && v > 0) {
+      hi = std::max(hi, v);
+      ++positive;
+    }
+  if (obs)
+    for (double b : obs->breaks_h)
+      if (std::isfinite(b)) hi = std::max(hi, b);
+  if (!(hi > 0)) hi = 1;
+  const int bins = t_.histogram_bins;
+  const double w = hi / bins;
+  std::vector<double> density(static_cast<std::size_t>(bins), 0.0);
+  for (double v : x)
+    if (std::isfinite(v) && v > 0) {
+      const auto b = std::clamp(static_cast<long>(std::floor(v / w)), 0L, static_cast<long>(bins) - 1);
+      density[static_cast<std::size_t>(b)] += 1;
+    }
+  double dmax = 0;
+  for (double& d : density) {
+    d /= static_cast<double>(x.size()) * w;
+    dmax = std::max(dmax, d);
+  }
+  Row o = r0;
+  if (positive > 0)
+    for (int i = 0; i < bins; ++i) {
+      const double a = w * i, e = a + w, d = density[static_cast<std::size_t>(i)];
+      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, d}, std::pair{e, d}, std::pair{e, 0.0}}) {
+        num(ws, o, 0, px, hf);
+        num(ws, o++, 1, py, pf);
+      }
+    }
+  // Curves on an even grid from 0.
+  const int n = t_.curve_points;
+  std::vector<double> grid(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = hi * i / (n - 1);
+  const std::vector<double> ecdf =
+      x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
+  double cmax = 0;
+  for (int i = 0; i < n; ++i) {
+    const Row rr = r0 + static_cast<Row>(i);
+    const double g = grid[static_cast<std::size_t>(i)];
+    num(ws, rr, 2, g, hf);
+    if (st.fit) {
+      const double f = (1 - st.fit->zero_share) * stats::pdf(st.fit->positive, g);
+      num(ws, rr, 3, f, pf);
+      if (std::isfinite(f)) cmax = std::max(cmax, f);
+      num(ws, rr, 5, 1 - stats::exceedance_probability(*st.fit, g), pf);
+    }
+    num(ws, rr, 4, ecdf[static_cast<std::size_t>(i)], pf);
+  }
+  const Row rn = r0 + static_cast<Row>(n) - 1;
+  // Observed points: the break points of Eq 4.1 and the observed CDF there.
+  Row ob = r0;
+  if (obs)
+    for (std::size_t i = 0; i < obs->breaks_h.size() && i < obs->observed_cdf.size(); ++i) {
+      if (!std::isfinite(obs->breaks_h[i])) continue;
+      num(ws, ob, 6, obs->breaks_h[i], hf);
+      num(ws, ob++, 7, obs->observed_cdf[i], pf);
+    }
+  data_row = std::max({o, rn + 1, ob}) + 1;
+
+  auto axes = [&](lxw_chart* c) {
+    chart_axis_set_min(c->x_axis, 0);
+    chart_axis_set_max(c->x_axis, hi);
+    chart_axis_set_min(c->y_axis, 0);
+    chart_axis_set_num_format(c->x_axis, keep(t_.get("formats", "general")));
+  };
+  // Histogram with the fitted density.
+  if (positive > 0 || st.fit) {
+    lxw_chart* hc = scatter_chart(key + "_histogram", row.name);
+    if (positive > 0)
+      xy_series(hc, sheet, r0, o - 1, 0, 1, h("quarry_chart", "histogram"), t_.colour("histogram"),
+                1.25f);
+    if (st.fit)
+      xy_series(hc, sheet, r0, rn, 2, 3, h("quarry_chart", "fitted_pdf"), t_.colour("lognormal"),
+                2.0f);
+    axes(hc);
+    // A density spike at 0 must not flatten the columns.
+    if (dmax > 0 && cmax > 2.5 * dmax) chart_axis_set_max(hc->y_axis, 1.5 * dmax);
+    insert_chart(ws, at, hc);
+  }
+  // Empirical against fitted CDF, with the observed points.
+  if (!x.empty() || st.fit) {
+    lxw_chart* cc = scatter_chart(key + "_cdf", row.name);
+    if (!x.empty())
+      xy_series(cc, sheet, r0, rn, 2, 4, h("quarry_chart", "empirical_cdf"),
+                t_.colour("empirical"), 2.0f);
+    if (st.fit)
+      xy_series(cc, sheet, r0, rn, 2, 5, h("quarry_chart", "fitted_cdf"), t_.colour("lognormal"),
+                1.5f, LXW_CHART_LINE_DASH_DASH);
+    if (ob > r0) {
+      lxw_chart_series* s = xy_series(cc, sheet, r0, ob - 1, 6, 7, h("quarry_chart", "observed_cdf"),
+                                      t_.colour("observed"), 1.0f);
+      lxw_chart_line none{};
+      none.none = LXW_TRUE;
+      chart_series_set_line(s, &none);
+      chart_series_set_marker_type(s, LXW_CHART_MARKER_CIRCLE);
+      chart_series_set_marker_size(s, 5);
+      lxw_chart_fill fill{};
+      fill.color = t_.colour("observed");
+      chart_series_set_marker_fill(s, &fill);
+      lxw_chart_line edge{};
+      edge.color = t_.colour("observed");
+      chart_series_set_marker_line(s, &edge);
+    }
+    axes(cc);
+    chart_axis_set_max(cc->y_axis, 1);
+    insert_chart(ws, {at.row, cdf_col}, cc);
+  }
+  return data_row;
+}
+
+Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row,
+                                 Cell at, const design::QuarrySectionResult& s) {
+  const ReportData::QuarrySectionView* view = nullptr;
+  for (const auto& v : d_.quarry_sections)
+    if (v.name == s.spec.name) view = &v;
+  if (!view || !view->profile || view->profile->vertices().empty()) return data_row;
+  const geometry::Profile& prof = *view->profile;
+  const auto& g = s.geometry;
+
+  ++data_row;
+  text(ws, data_row++, 0, s.spec.name, section());
+  const Row head = data_row;
+  std::size_t k = 0;
+  for (const char* key : {"profile", "paths", "toe", "danger_zone", "first_impact_zone", "work_areas"}) {
+    text(ws, head, static_cast<Col>(2 * k), h("quarry_chart", key), heading());
+    text(ws, head + 1, static_cast<Col>(2 * k), h("quarry_chart", "x"), heading());
+    text(ws, head + 1, static_cast<Col>(2 * k + 1), h("quarry_chart", "z"), heading());
+    ++k;
+  }
+  const Row r0 = head + 2;
+  lxw_format* xf = number("coordinate");
+
+  lxw_chart* chart = scatter_chart("quarry_section", s.spec.name);
+  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin, xmin = zmin, xmax = -zmin;
+  for (const auto& p : prof.vertices()) {
+    zmin = std::min(zmin, p.z);
+    zmax = std::max(zmax, p.z);
+    xmin = std::min(xmin, p.x);
+    xmax = std::max(xmax, p.x);
+  }
+  Row last = r0;
+  // Paths first, under the profile.
+  Row pr = r0;
+  for (const auto& path : view->paths) {
+    if (path.empty()) continue;
+    for (const auto& p : path) {
+      num(ws, pr, 2, p.x, xf);
+      num(ws, pr++, 3, p.z, xf);
+    }
+    ++pr;
+  }
+  if (pr > r0)
+    xy_series(chart, sheet, r0, pr - 2, 2, 3, h("quarry_chart", "paths"), t_.colour("paths"), 0.75f);
+  Row vr = r0;
+  for (const auto& p : prof.vertices()) {
+    num(ws, vr, 0, p.x, xf);
+    num(ws, vr++, 1, p.z, xf);
+  }
+  xy_series(chart, sheet, r0, vr - 1, 0, 1, h("quarry_chart", "profile"), t_.colour("profile"), 2.25f);
+  last = std::max({last, pr, vr});
+
+  // Vertical marks on the ground: the toe, ID_gov and RD_gov.
+  const double lh = std::max(t_.profile_line_height, 0.25 * g.height);
+  auto ground = [&](double x) {
+    const auto gp = prof.top_ground(x);
+    return gp ? gp->z : g.toe.z;
+  };
+  auto mark = [&](Col c, double x, std::string_view key, std::uint32_t colour, float width,
+                  std::uint8_t dash) {
+    if (!std::isfinite(x)) return;
+    const double z = ground(x);
+    num(ws, r0, c, x, xf);
+    num(ws, r0, c + 1, z, xf);
+    num(ws, r0 + 1, c, x, xf);
+    num(ws, r0 + 1, c + 1, z + lh, xf);
+    xy_series(chart, sheet, r0, r0 + 1, c, c + 1, h("quarry_chart", key), colour, width, dash);
+    last = std::max(last, r0 + 2);
+  };
+  mark(4, g.toe.x, "toe", t_.colour("toe"), 1.25f, LXW_CHART_LINE_DASH_DASH);
+  mark(6, g.toe.x + g.direction * s.danger_zone, "danger_zone", t_.colour("danger_zone"), 2.5f,
+       LXW_CHART_LINE_DASH_SOLID);
+  mark(8, g.toe.x + g.direction * s.first_impact_zone, "first_impact_zone",
+       t_.colour("first_impact_zone"), 2.0f, LXW_CHART_LINE_DASH_SOLID);
+  // Work areas: points on the floor.
+  Row wr = r0;
+  for (const auto& w : s.spec.work_areas) {
+    const double x = g.toe.x + g.direction * w.distance;
+    num(ws, wr, 10, x, xf);
+    num(ws, wr++, 11, ground(x), xf);
+  }
+  if (wr > r0) {
+    lxw_chart_series* sr = xy_series(chart, sheet, r0, wr - 1, 10, 11, h("quarry_chart", "work_areas"),
+                                     t_.colour("work_areas"), 1.0f);
+    lxw_chart_line none{};
+    none.none = LXW_TRUE;
+    chart_series_set_line(sr, &none);
+    chart_series_set_marker_type(sr, LXW_CHART_MARKER_TRIANGLE);
+    chart_series_set_marker_size(sr, 9);
+    lxw_chart_fill fill{};
+    fill.color = t_.colour("work_areas");
+    chart_series_set_marker_fill(sr, &fill);
+    lxw_chart_line edge{};
+    edge.color = t_.colour("work_areas");
+    chart_series_set_marker_line(sr, &edge);
+    last = std::max(last, wr);
+  }
+  if (xmax > xmin) {
+    chart_axis_set_min(chart->x_axis, xmin);
+    chart_axis_set_max(chart->x_axis, xmax);
+  }
+  if (zmax > zmin) {
+    const double step = std::pow(10.0, std::floor(std::log10(zmax - zmin))) / 2;
+    chart_axis_set_min(chart->y_axis, std::floor((zmin - 0.05 * (zmax - zmin)) / step) * step);
+  }
+  chart_axis_set_num_format(chart->x_axis, keep(t_.get("formats", "general")));
+  insert_chart(ws, at, chart, 2.0, 1.4);
+  return last + 1;
+}
+
 // ---- data sheets -----------------------------------------------------------------------
 
 Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
@@ -1477,14 +2084,20 @@ void Report::write() {
   };
   for (const char* k : {"summary", "inputs", "profile", "trajectories", "crossings"})
     used.push_back(lower(t_.get("sheets", k)));
-  std::vector<std::string> barrier_names;
-  for (const auto& b : d_.barriers) barrier_names.push_back(barrier_sheet_name(b.spec.name, used));
+  std::vector<std::string> barrier_names, quarry_names;
+  for (const auto& b : d_.barriers)
+    barrier_names.push_back(item_sheet_name("barrier", b.spec.name, used));
+  if (d_.quarry)
+    for (const auto& row : d_.quarry->rows)
+      quarry_names.push_back(item_sheet_name("quarry", row.name, used));
   used.clear();
   std::map<std::string, lxw_worksheet*> sheets;
-  std::vector<lxw_worksheet*> barrier_sheets;
+  std::vector<lxw_worksheet*> barrier_sheets, quarry_sheets;
   for (const auto& key : t_.order) {
     if (key == "barriers") {
       for (const auto& n : barrier_names) barrier_sheets.push_back(add(n));
+    } else if (key == "quarries") {
+      for (const auto& n : quarry_names) quarry_sheets.push_back(add(n));
     } else {
       sheets[key] = add(t_.get("sheets", key));
     }
@@ -1492,6 +2105,8 @@ void Report::write() {
   summary(sheets.at("summary"));
   for (std::size_t i = 0; i < d_.barriers.size(); ++i)
     barrier(barrier_sheets[i], barrier_names[i], d_.barriers[i]);
+  for (std::size_t i = 0; i < quarry_sheets.size(); ++i)
+    quarry(quarry_sheets[i], quarry_names[i], i);
   profile(sheets.at("profile"), t_.get("sheets", "profile"));
   inputs(sheets.at("inputs"));
   trajectories(sheets.at("trajectories"));

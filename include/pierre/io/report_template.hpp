@@ -29,7 +29,8 @@ struct ReportTemplate {
   // Colours (0xRRGGBB) by key of the [colours] table.
   std::map<std::string, std::uint32_t, std::less<>> colours;
 
-  // Sheet order by key: summary, barriers, profile, inputs, trajectories, crossings (each once).
+  // Sheet order by key: summary, barriers, quarries, profile, inputs, trajectories, crossings
+  // (each once).
   std::vector<std::string> order;
 
   std::size_t trajectory_rows = 10000;  // cap of the Trajectories sheet

@@ -44,7 +44,7 @@ TEST(ReportTemplate, ShippedTemplateHasEveryKey) {
   EXPECT_EQ(t.get("headings.design", "mel_req"), "MEL_req (kJ)");
   EXPECT_EQ(t.colour("fail_fill"), 0xFFC7CEu);
   EXPECT_EQ(t.trajectory_rows, 10000u);
-  EXPECT_EQ(t.order.size(), 6u);
+  EXPECT_EQ(t.order.size(), 7u);
   EXPECT_EQ(t.order.front(), "summary");
   EXPECT_THROW((void)t.get("sheets", "nope"), std::out_of_range);
 }
