@@ -1,0 +1,481 @@
+// report.xlsx with a quarry design (design-checks.md §2), opened for real: a QuarryDesign from
+// design::design_quarry on hand-made sections (a lone face with observed values, work areas and
+// a bench; two faces pooled by a group), written with their profiles and a few paths, then
+// LibreOffice (headless) exports every sheet to CSV and the workbook to PDF. The tests check
+// the quarry sheets (one per row, named by the template, in the template's order), key cells
+// against the design's numbers (RD and ID P95 in m and / H, the governing distances), the
+// Summary's quarry table, average rows and every quarry check line, that numbers are numbers,
+// and the charts in the zip (scatter series with x and y values).
+//
+// Without `soffice` the tests that need it are skipped with a message.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <boost/math/special_functions/erf.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "pierre/design/quarry_zones.hpp"
+#include "pierre/io/report_template.hpp"
+#include "pierre/io/xlsx_report.hpp"
+#include "support/builders.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace pierre;
+using pierre::test::read_file;
+using pierre::test::TempDir;
+
+const fs::path kTemplate = PIERRE_SOURCE_DIR "/templates/report.toml";
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// ---- running programs ------------------------------------------------------------------
+
+struct Exec {
+  int status = -1;
+  std::string output;
+};
+
+Exec run(const std::string& command, const fs::path& log) {
+  Exec r;
+  const int s = std::system((command + " > '" + log.string() + "' 2>&1").c_str());
+  r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+  r.output = read_file(log);
+  return r;
+}
+
+bool have(const char* program) {
+  return std::system(("command -v " + std::string(program) + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+// soffice with a private profile (parallel tests must not share one) and a time limit.
+Exec soffice(const std::string& args, const fs::path& work) {
+  const fs::path profile = work / "lo-profile";
+  return run("timeout 180 soffice -env:UserInstallation=file://" + profile.string() +
+                 " --headless --norestore " + args,
+             work / "soffice.log");
+}
+
+// ---- CSV as LibreOffice writes it (text cells quoted, numbers not) ---------------------
+
+struct Field {
+  std::string text;
+  bool quoted = false;
+};
+using Sheet = std::vector<std::vector<Field>>;
+
+Sheet parse_csv(const std::string& s) {
+  Sheet rows(1);
+  rows.back().emplace_back();
+  bool in_quotes = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    Field& f = rows.back().back();
+    if (in_quotes) {
+      if (c == '"' && i + 1 < s.size() && s[i + 1] == '"') {
+        f.text += '"';
+        ++i;
+      } else if (c == '"') {
+        in_quotes = false;
+      } else {
+        f.text += c;
+      }
+    } else if (c == '"') {
+      in_quotes = true;
+      f.quoted = true;
+    } else if (c == ',') {
+      rows.back().emplace_back();
+    } else if (c == '\n') {
+      rows.emplace_back();
+      rows.back().emplace_back();
+    } else if (c != '\r') {
+      f.text += c;
+    }
+  }
+  if (rows.back().size() == 1 && rows.back()[0].text.empty()) rows.pop_back();
+  return rows;
+}
+
+const Field* cell(const Sheet& s, std::size_t r, std::size_t c) {
+  if (r >= s.size() || c >= s[r].size()) return nullptr;
+  return &s[r][c];
+}
+
+std::optional<std::size_t> find_row(const Sheet& s, std::size_t c, const std::string& text,
+                                    std::size_t from = 0) {
+  for (std::size_t r = from; r < s.size(); ++r)
+    if (c < s[r].size() && s[r][c].text == text) return r;
+  return std::nullopt;
+}
+
+// The first row with `a` in column 0 and `b` in column 1.
+std::optional<std::size_t> find_row2(const Sheet& s, const std::string& a, const std::string& b,
+                                     std::size_t from = 0) {
+  for (std::size_t r = from; r < s.size(); ++r)
+    if (s[r].size() > 1 && s[r][0].text == a && s[r][1].text == b) return r;
+  return std::nullopt;
+}
+
+// A number cell: unquoted and parsing as a double in full (a percentage keeps its %).
+std::optional<double> number(const Sheet& s, std::size_t r, std::size_t c) {
+  const Field* f = cell(s, r, c);
+  if (!f || f->quoted || f->text.empty()) return std::nullopt;
+  std::string t = f->text;
+  const bool percent = t.back() == '%';
+  if (percent) t.pop_back();
+  char* end = nullptr;
+  const double v = std::strtod(t.c_str(), &end);
+  if (t.empty() || end != t.c_str() + t.size()) return std::nullopt;
+  return percent ? v / 100 : v;
+}
+
+std::string dump(const Sheet& s, std::size_t r) {
+  std::string out;
+  if (r >= s.size()) return "(no row)";
+  for (const auto& f : s[r]) out += (f.quoted ? "\"" + f.text + "\"" : f.text) + " | ";
+  return out;
+}
+
+void expect_number(const Sheet& s, std::size_t r, std::size_t c, double want) {
+  const auto v = number(s, r, c);
+  ASSERT_TRUE(v) << "row " << r << " col " << c << ": " << dump(s, r);
+  EXPECT_NEAR(*v, want, 1e-9 * std::max(1.0, std::abs(want))) << dump(s, r);
+}
+
+std::size_t occurrences(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+
+std::vector<std::string> zip_list(const fs::path& xlsx, const fs::path& work) {
+  const Exec r = run("unzip -Z1 '" + xlsx.string() + "'", work / "unzip.log");
+  std::vector<std::string> names;
+  std::size_t p = 0;
+  while (p < r.output.size()) {
+    auto e = r.output.find('\n', p);
+    if (e == std::string::npos) e = r.output.size();
+    names.push_back(r.output.substr(p, e - p));
+    p = e + 1;
+  }
+  return names;
+}
+
+std::string zip_entry(const fs::path& xlsx, const std::string& entry, const fs::path& work) {
+  return run("unzip -p '" + xlsx.string() + "' '" + entry + "'", work / "entry.log").output;
+}
+
+// ---- the quarry ------------------------------------------------------------------------
+
+// A quarry face of height H at x = 10 (a 4 m bench halfway up) over a 150 m floor.
+geometry::Profile face(double H) {
+  return test::make_profile({{0, H}, {10, H}, {12, H / 2}, {16, H / 2}, {18, 0}, {168, 0}});
+}
+
+// Log-normal runouts / H (median e^-0.9 ≈ 0.41, σ 0.5) by inversion of a seeded sequence, with
+// a few zeros (stopped on the bench) and blocks beyond the profile.
+std::vector<double> runouts(std::size_t n, double H, std::uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::vector<double> v;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
+    v.push_back(H * std::exp(-0.9 - 0.5 * std::sqrt(2.0) * boost::math::erfc_inv(2 * u)));
+  }
+  for (std::size_t i = 0; i < n / 40; ++i) v[i * 37 % n] = 0;
+  v[5] = kInf;
+  v[17] = kInf;
+  return v;
+}
+
+// Distances from runouts (m; +inf: left the profile), the first impact at a fifth of each.
+design::QuarryDistances distances(const std::vector<double>& rd, const design::QuarryGeometry& g) {
+  design::QuarryDistances d;
+  std::uint64_t k = 0;
+  for (double r : rd) {
+    sim::TrajectorySummary t;
+    t.trajectory = k++;
+    t.start = {10.5, g.crest.z + 0.5};
+    t.duration = 4;
+    if (std::isinf(r)) {
+      t.stop = {g.toe.x + g.floor_length, 0};
+      t.stop_reason = sim::StopReason::boundary;
+    } else if (r == 0) {
+      t.stop = {14, g.crest.z / 2};
+      t.stop_reason = sim::StopReason::energy;
+    } else {
+      t.stop = {g.toe.x + r, 0};
+      t.stop_reason = sim::StopReason::energy;
+    }
+    if (r > 0) {
+      t.has_floor_contact = true;
+      t.floor_contact = {g.toe.x + std::min(r, g.floor_length) / 5, 0};
+    }
+    d.add(t, g);
+  }
+  return d;
+}
+
+struct Fixture {
+  std::vector<std::string> names;
+  std::vector<geometry::Profile> profiles;
+  io::ReportData data;
+};
+
+std::unique_ptr<Fixture> make_fixture() {
+  auto f = std::make_unique<Fixture>();
+  f->names = {"Face A", "East 1", "East 2"};
+  const double heights[] = {20, 15, 15};
+  design::QuarryRuleSet rules;
+  rules.name = "quarry-thesis-2015";
+  rules.title = "Mitchell (2015) chapter 6";
+  rules.source = "Mitchell, PhD thesis, 2015, §6.3";
+  std::vector<design::QuarrySectionInput> in;
+  for (std::size_t i = 0; i < 3; ++i) {
+    f->profiles.push_back(face(heights[i]));
+    design::QuarrySectionInput s;
+    s.spec.name = f->names[i];
+    s.spec.rules = rules.name;
+    s.rules = rules;
+    s.geometry = *design::quarry_geometry(f->profiles.back(), {});
+    s.distances = distances(runouts(400, heights[i], 11 + i), s.geometry);
+    if (i > 0) s.spec.group = "East";
+    in.push_back(std::move(s));
+  }
+  auto& a = in[0];
+  a.spec.work_areas = {{"crusher", 60}, {"office", 8}};
+  a.spec.bench_width = 12;
+  a.spec.observed_source = "field survey 2014 (hand-made for the test)";
+  for (int i = 0; i < 25; ++i) {
+    a.observed.rd.metres.push_back(20 * std::exp(-1.0 + 0.06 * i));
+    a.observed.rd.heights.push_back(20);
+    a.observed.id.metres.push_back(4 * std::exp(-1.0 + 0.05 * i));
+    a.observed.id.heights.push_back(20);
+  }
+  auto out = design::design_quarry(in, 7);
+  if (!out.design) throw std::runtime_error(out.error);
+
+  auto& d = f->data;
+  d.pierre_version = "0.1.0-test";
+  d.date = "2024-05-17";
+  d.seed = 99;
+  d.throws = 400;
+  d.rule_sets = {"quarry-thesis-2015 — Mitchell (2015) chapter 6"};
+  d.quarry = std::move(*out.design);
+  // The caller passes only some of the quarry's check lines: Summary must show them all.
+  d.checks.assign(d.quarry->checks.begin(), d.quarry->checks.begin() + 2);
+  for (std::size_t i = 0; i < 3; ++i) {
+    io::ReportData::QuarrySectionView v;
+    v.name = f->names[i];
+    v.profile = &f->profiles[i];
+    for (int p = 0; p < 4; ++p) {
+      std::vector<geometry::Vec2> path;
+      const double H = heights[i], reach = 10.0 + 12 * p;
+      for (int k = 0; k <= 30; ++k) {
+        const double x = 10.5 + (reach + 8) * k / 30.0;
+        const double t = (x - 10.5) / (reach + 8);
+        path.push_back({x, std::max(0.0, H + 0.5 - (H + 0.5) * t * t) + 1.5 * std::sin(6 * t) * (1 - t)});
+      }
+      v.paths.push_back(path);
+    }
+    d.quarry_sections.push_back(v);
+  }
+  return f;
+}
+
+const std::vector<std::string> kOrder = {"Summary",      "Quarry Face A", "Quarry East",
+                                         "Profile",      "Inputs",        "Trajectories",
+                                         "Crossings"};
+
+TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
+  if (!have("unzip")) GTEST_SKIP() << "unzip not installed (bash tools/bootstrap test installs it)";
+  TempDir dir;
+  const auto f = make_fixture();
+  const auto tpl = io::load_report_template(kTemplate);
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, tpl);
+
+  std::vector<std::string> charts;
+  for (const auto& n : zip_list(xlsx, dir.path()))
+    if (n.rfind("xl/charts/chart", 0) == 0) charts.push_back(n);
+  // Face A: its section + RD and ID histograms and CDFs (5); East: 2 sections + 4. No
+  // scenario profile here.
+  EXPECT_EQ(charts.size(), 11u);
+  std::size_t with_markers = 0;
+  for (const auto& c : charts) {
+    SCOPED_TRACE(c);
+    const std::string xml = zip_entry(xlsx, c, dir.path());
+    EXPECT_NE(xml.find("<c:scatterChart>"), std::string::npos);
+    const auto series = occurrences(xml, "<c:ser>");
+    EXPECT_GE(series, 2u);
+    EXPECT_EQ(occurrences(xml, "<c:xVal>"), series);
+    EXPECT_EQ(occurrences(xml, "<c:yVal>"), series);
+    if (xml.find("<c:symbol val=\"triangle\"/>") != std::string::npos) ++with_markers;
+  }
+  EXPECT_EQ(with_markers, 1u);  // the work areas of Face A, as points
+
+  const std::string wb = zip_entry(xlsx, "xl/workbook.xml", dir.path());
+  std::vector<std::string> order;
+  for (auto p = wb.find("<sheet name=\""); p != std::string::npos;
+       p = wb.find("<sheet name=\"", p + 1)) {
+    const auto b = p + 13;
+    order.push_back(wb.substr(b, wb.find('"', b) - b));
+  }
+  EXPECT_EQ(order, kOrder);
+}
+
+TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
+  if (!have("soffice"))
+    GTEST_SKIP() << "soffice (LibreOffice) not installed: bash tools/bootstrap test installs "
+                    "libreoffice-calc; the workbook was not opened for real";
+  TempDir dir;
+  const auto f = make_fixture();
+  const auto& q = *f->data.quarry;
+  const auto tpl = io::load_report_template(kTemplate);
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, tpl);
+
+  const fs::path out = dir.path() / "csv";
+  fs::create_directories(out);
+  const Exec r = soffice(
+      "--convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,true,true,false,false,false,-1' "
+      "--outdir '" + out.string() + "' '" + xlsx.string() + "'",
+      dir.path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::map<std::string, Sheet> sheets;
+  for (const auto& e : fs::directory_iterator(out)) {
+    const std::string stem = e.path().stem().string();  // report-<Sheet>
+    ASSERT_EQ(stem.rfind("report-", 0), 0u) << stem;
+    sheets[stem.substr(7)] = parse_csv(read_file(e.path()));
+  }
+  for (const auto& s : kOrder) EXPECT_TRUE(sheets.count(s)) << "no sheet " << s << "\n" << r.output;
+  ASSERT_TRUE(sheets.count("Quarry Face A") && sheets.count("Quarry East") && sheets.count("Summary"));
+
+  ASSERT_EQ(q.rows.size(), 2u);
+  ASSERT_EQ(q.rows[0].name, "Face A");
+  ASSERT_EQ(q.rows[1].name, "East");
+  for (std::size_t ri = 0; ri < 2; ++ri) {
+    const auto& row = q.rows[ri];
+    SCOPED_TRACE(row.name);
+    const Sheet& s = sheets[ri == 0 ? "Quarry Face A" : "Quarry East"];
+    ASSERT_FALSE(s.empty());
+    EXPECT_EQ(cell(s, 0, 0)->text, "Quarry danger zones: " + row.name);
+    // Tables 6.2 / 6.3: RD and ID, calculated, in m (P50 col 5 … max col 8) and / H (9 … 12).
+    const auto rd = find_row2(s, "RD, runout distance", "Calculated");
+    ASSERT_TRUE(rd);
+    expect_number(s, *rd, 2, static_cast<double>(row.rd.count));
+    expect_number(s, *rd, 3, static_cast<double>(row.rd.zeros));
+    expect_number(s, *rd, 4, static_cast<double>(row.rd.censored));
+    expect_number(s, *rd, 5, row.rd.p50);
+    expect_number(s, *rd, 6, row.rd.p95);
+    expect_number(s, *rd, 7, row.rd.p99);
+    expect_number(s, *rd, 9, row.rd.p50_h);
+    expect_number(s, *rd, 10, row.rd.p95_h);
+    // The maximum is beyond the profile (two blocks left it): said in words.
+    EXPECT_EQ(cell(s, *rd, 8)->text, "beyond the profile");
+    const auto id = find_row2(s, "ID, first-impact distance", "Calculated");
+    ASSERT_TRUE(id);
+    expect_number(s, *id, 6, row.id.p95);
+    expect_number(s, *id, 10, row.id.p95_h);
+    expect_number(s, *id, 8, row.id.max);
+    // The governing distances, / H and in m.
+    const auto gov = find_row(s, 0, "RD_gov (danger zone)");
+    ASSERT_TRUE(gov);
+    expect_number(s, *gov, 1, row.rd_gov.value_h);
+    expect_number(s, *gov, 2, row.rd_gov.value_h * row.height);
+    EXPECT_EQ(cell(s, *gov, 3)->text, row.rd_gov.how);
+    // The fits: p0 and the log-normal's parameters.
+    const auto fits = find_row(s, 0, "Distance", *find_row(s, 0, "Log-normal fits of the distances / H (zeros as a point mass) and the observed"));
+    ASSERT_TRUE(fits);
+    ASSERT_TRUE(row.rd.fit);
+    expect_number(s, *fits + 1, 2, row.rd.fit->positive.mu);
+    expect_number(s, *fits + 1, 3, row.rd.fit->positive.sigma);
+    // Geometry of each section: toe and H.
+    for (std::size_t k : row.sections) {
+      const auto& sec = q.sections[k];
+      const auto g = find_row(s, 0, sec.spec.name, *find_row(s, 0, "Section"));
+      ASSERT_TRUE(g) << sec.spec.name;
+      expect_number(s, *g, 4, sec.geometry.toe.x);
+      expect_number(s, *g, 7, sec.geometry.height);
+      EXPECT_EQ(cell(s, *g, 6)->text, "found");
+    }
+  }
+  // Face A: observed beside calculated, the zones and the work-area checks.
+  {
+    const Sheet& s = sheets["Quarry Face A"];
+    const auto& row = q.rows[0];
+    ASSERT_TRUE(row.observed_rd);
+    const auto obs = find_row2(s, "RD, runout distance", "Observed");
+    ASSERT_TRUE(obs);
+    expect_number(s, *obs, 2, 25);
+    expect_number(s, *obs, 6, row.observed_rd->p95);
+    expect_number(s, *obs, 10, row.observed_rd->p95_h);
+    const auto zones = find_row(s, 0, "Face A", *find_row(s, 0, "Zones from the toe, catch bench and work areas"));
+    ASSERT_TRUE(zones);
+    expect_number(s, *zones, 1, q.sections[0].danger_zone);
+    expect_number(s, *zones, 2, q.sections[0].first_impact_zone);
+    expect_number(s, *zones, 3, 12);
+    expect_number(s, *zones, 4, *q.sections[0].bench_retention);
+    expect_number(s, *zones, 5, *q.sections[0].ritchie_width);
+    const auto office = find_row(s, 0, "zone.office");
+    ASSERT_TRUE(office);
+    EXPECT_EQ(cell(s, *office, 4)->text, "FAIL");
+    expect_number(s, *office, 1, 8);
+  }
+  // Summary: Tables 6.2/6.3's rows, the average rows and every quarry check line.
+  {
+    const Sheet& s = sheets["Summary"];
+    for (std::size_t ri = 0; ri < 2; ++ri) {
+      const auto& row = q.rows[ri];
+      const auto line = find_row2(s, row.name, "Calculated");
+      ASSERT_TRUE(line) << row.name;
+      expect_number(s, *line, 2, row.height);
+      expect_number(s, *line, 4, row.rd_gov.value_h * row.height);
+      expect_number(s, *line, 7, row.rd.p95_h);
+      expect_number(s, *line, 10, row.id.p95_h);
+    }
+    const auto obs = find_row2(s, "Face A", "Observed");
+    ASSERT_TRUE(obs);
+    expect_number(s, *obs, 7, q.rows[0].observed_rd->p95_h);
+    const auto avg = find_row2(s, "Average (normalized by H)", "Calculated");
+    ASSERT_TRUE(avg);
+    expect_number(s, *avg, 6, q.average.rd50_h);
+    expect_number(s, *avg, 7, q.average.rd95_h);
+    expect_number(s, *avg, 11, q.average.idmax_h);
+    const auto avg_obs = find_row2(s, "Average (normalized by H)", "Observed");
+    ASSERT_TRUE(avg_obs);
+    expect_number(s, *avg_obs, 7, q.average.obs_rd95_h);
+    const auto head = find_row(s, 0, "Subject");
+    ASSERT_TRUE(head);
+    for (const auto& l : q.checks) {
+      bool found = false;
+      for (std::size_t k = *head + 1; k < s.size() && !found; ++k)
+        found = s[k].size() > 7 && s[k][0].text == l.subject && s[k][1].text == l.id &&
+                s[k][7].text == design::to_string(l.status);
+      EXPECT_TRUE(found) << l.subject << " " << l.id;
+    }
+  }
+
+  // The PDF: every sheet printed (look at it: pdftoppm -png -r 50 report.pdf page).
+  const Exec p = soffice("--convert-to pdf --outdir '" + dir.path().string() + "' '" +
+                             xlsx.string() + "'",
+                         dir.path());
+  ASSERT_EQ(p.status, 0) << p.output;
+  const fs::path pdf = dir.path() / "report.pdf";
+  ASSERT_TRUE(fs::is_regular_file(pdf));
+  EXPECT_GT(fs::file_size(pdf), 20000u);
+  if (const char* keep = std::getenv("PIERRE_KEEP_REPORT"); keep && *keep) {
+    fs::copy_file(pdf, fs::path(keep) / "quarry-report.pdf", fs::copy_options::overwrite_existing);
+    fs::copy_file(xlsx, fs::path(keep) / "quarry-report.xlsx", fs::copy_options::overwrite_existing);
+  }
+}
+
+}  // namespace
