@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 
+#include "pierre/stats/bootstrap_weibull.hpp"
 #include "pierre/stats/percentile.hpp"
 
 namespace pierre::design {
@@ -28,19 +29,50 @@ std::vector<double> scaled(const std::vector<double>& v, double f) {
   return out;
 }
 
-// The replicates of the governing characteristic value at p.
-stats::Outcome<std::vector<double>> characteristic_replicates(std::span<const double> sample,
-                                                              double p, Governing g,
-                                                              std::uint64_t seed) {
-  if (g == Governing::empirical)
-    return stats::bootstrap_percentile_replicates(sample, p, seed, kBarrierBootstrapResamples);
-  const stats::Statistic stat = [p, g](std::span<double> x) {
-    const auto w = stats::fit_weibull(x);
-    if (!w) return kNaN;
-    const double q = stats::quantile(*w, p / 100.0);
-    return g == Governing::weibull ? q : std::max(q, stats::percentile(x, p));
-  };
-  return stats::bootstrap_replicates(sample, stat, seed, kBarrierBootstrapResamples);
+// The replicates of the governing characteristic value at p, and how they were drawn (for
+// the notes). `empirical`: the order-statistic bootstrap of the percentile (bootstrap.hpp).
+// `weibull` and `larger`: the bootstrap of the Weibull-ML quantile (bootstrap_weibull.hpp):
+// exact resampling and refitting up to stats::WeibullBootstrapOptions::exact_up_to values
+// (20 000), the Poisson bootstrap over quantile bins above (its error is far below the
+// interval's Monte Carlo error: bootstrap_weibull.hpp says why, the stats tests check it).
+struct Replicates {
+  std::vector<double> values;
+  std::optional<stats::WeibullQuantileReplicates> weibull;  // the Weibull bootstrap's details
+};
+stats::Outcome<Replicates> characteristic_replicates(std::span<const double> sample, double p,
+                                                     Governing g, std::uint64_t seed) {
+  using Out = stats::Outcome<Replicates>;
+  if (g == Governing::empirical) {
+    auto r = stats::bootstrap_percentile_replicates(sample, p, seed, kBarrierBootstrapResamples);
+    if (!r) return Out::failure(r.error);
+    return Out::success(Replicates{std::move(*r.value), std::nullopt});
+  }
+  stats::WeibullBootstrapOptions o;
+  o.resamples = kBarrierBootstrapResamples;
+  o.empirical = g == Governing::larger;
+  auto r = stats::bootstrap_weibull_quantile_replicates(sample, p, seed, o);
+  if (!r) return Out::failure(r.error);
+  Replicates out;
+  out.values = r.value->weibull;
+  if (g == Governing::larger) {
+    for (std::size_t i = 0; i < out.values.size(); ++i) {
+      const double q = out.values[i];
+      out.values[i] = std::isnan(q) ? kNaN : std::max(q, r.value->empirical[i]);
+    }
+  }
+  out.weibull = std::move(*r.value);
+  out.weibull->weibull.clear();
+  out.weibull->empirical.clear();
+  return Out::success(std::move(out));
+}
+
+// What an engineer should know about a binned bootstrap.
+std::string binned_note(const char* what, const stats::WeibullQuantileReplicates& r) {
+  return std::string("bootstrap of ") + what + ": " + std::to_string(r.values) +
+         " crossings, more than " + std::to_string(stats::WeibullBootstrapOptions{}.exact_up_to) +
+         ": the Weibull refits use the Poisson bootstrap over " + std::to_string(r.bins) +
+         " quantile bins (Hanley & MacGibbon 2006) instead of resampling every value; its "
+         "error is far below the interval's Monte Carlo error";
 }
 
 // The 90 % percentile interval of f(replicate), with f(estimate) as its estimate.
@@ -208,13 +240,17 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
                                             splitmix64(seed ^ 2));
   const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
   if (rv) {
-    d.v_k.interval = interval(*rv.value, d.v_k.value, [](double v) { return v; });
-    d.E_d_interval = interval(*rv.value, d.v_k.value,
+    d.v_k.interval = interval(rv->values, d.v_k.value, [](double v) { return v; });
+    d.E_d_interval = interval(rv->values, d.v_k.value,
                               [gF, md](double v) { return 0.5 * md * (v * gF) * (v * gF) / 1000.0; });
+    if (rv->weibull && rv->weibull->method == stats::WeibullBootstrapMethod::binned)
+      d.notes.push_back(binned_note("v_k", *rv->weibull));
   }
   if (rh) {
-    d.h_k.interval = interval(*rh.value, d.h_k.value, [](double h) { return h; });
-    d.h_i_interval = interval(*rh.value, d.h_k.value, [gh, f](double h) { return h * gh + f; });
+    d.h_k.interval = interval(rh->values, d.h_k.value, [](double h) { return h; });
+    d.h_i_interval = interval(rh->values, d.h_k.value, [gh, f](double h) { return h * gh + f; });
+    if (rh->weibull && rh->weibull->method == stats::WeibullBootstrapMethod::binned)
+      d.notes.push_back(binned_note("h_k", *rh->weibull));
   }
   if (!rv || !rh || !d.v_k.interval || !d.h_k.interval)
     d.notes.push_back("bootstrap: " + (!rv ? rv.error : !rh ? rh.error : std::string("a resample gave no fit")));

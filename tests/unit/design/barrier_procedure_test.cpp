@@ -246,4 +246,44 @@ TEST(BarrierProcedure, SmallSampleWarnsOnSampleSizeAndReach) {
   }
 }
 
+TEST(BarrierProcedure, LargeSampleBootstrapsOnBinsDeterministicallyAndSaysSo) {
+  // Above 20 000 crossings the Weibull refits of the bootstrap use the Poisson bootstrap over
+  // quantile bins (stats/bootstrap_weibull.hpp): same seed, same interval; the interval
+  // holds the estimate; a note names the method. Both governing rules that refit.
+  const auto s = sample(30000, 3);
+  auto pr = spec();
+  pr.data_quality = {{"trajectory", "back-analysed"}, {"topography", "high"}, {"block_volume", "surveyed"}};
+  for (const auto& rules : {test::thesis_2015(), test::peila_ronco_2009()}) {
+    const auto a = design::design_barrier(pr, rules, test::etag027(), s, std::nullopt, 0, 42);
+    const auto b = design::design_barrier(pr, rules, test::etag027(), s, std::nullopt, 0, 42);
+    const auto c = design::design_barrier(pr, rules, test::etag027(), s, std::nullopt, 0, 43);
+    ASSERT_TRUE(a.design && b.design && c.design) << a.error;
+    const auto& d = *a.design;
+    ASSERT_TRUE(d.v_k.interval && d.h_k.interval && d.E_d_interval && d.h_i_interval) << rules.name;
+    EXPECT_EQ(d.v_k.interval->resamples, design::kBarrierBootstrapResamples);
+    EXPECT_EQ(d.v_k.interval->lower, b.design->v_k.interval->lower);
+    EXPECT_EQ(d.v_k.interval->upper, b.design->v_k.interval->upper);
+    EXPECT_EQ(d.h_i_interval->lower, b.design->h_i_interval->lower);
+    EXPECT_EQ(d.h_i_interval->upper, b.design->h_i_interval->upper);
+    EXPECT_TRUE(d.v_k.interval->lower != c.design->v_k.interval->lower ||
+                d.v_k.interval->upper != c.design->v_k.interval->upper);
+    for (const auto* ci : {&*d.v_k.interval, &*d.h_k.interval}) {
+      EXPECT_LT(ci->lower, ci->estimate) << rules.name;
+      EXPECT_GT(ci->upper, ci->estimate) << rules.name;
+    }
+    // At 30 000 crossings the P95 is known to about 1 %: a half-width of a few ‰ of v_k.
+    EXPECT_LT(d.v_k.interval->half_width(), 0.02 * d.v_k.value);
+    EXPECT_GT(d.v_k.interval->half_width(), 0.001 * d.v_k.value);
+    const auto binned = std::count_if(d.notes.begin(), d.notes.end(), [](const std::string& n) {
+      return n.find("Poisson bootstrap") != std::string::npos;
+    });
+    EXPECT_EQ(binned, 2) << rules.name;  // v_k and h_k
+  }
+  // At 2 000 crossings (the other tests) the bootstrap is the exact one: no such note.
+  const auto small = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(),
+                                            std::nullopt, 0, 42);
+  ASSERT_TRUE(small.design);
+  for (const auto& n : small.design->notes) EXPECT_EQ(n.find("Poisson bootstrap"), std::string::npos);
+}
+
 }  // namespace
