@@ -156,6 +156,7 @@ class Report {
   lxw_format* wrap();
   lxw_format* centred();
   lxw_format* top();
+  lxw_format* indented();
   lxw_format* centred_bold();
   lxw_format* status_format(std::string_view status);  // for the conditional formats
 
@@ -247,6 +248,7 @@ lxw_format* Report::check_number(const std::string& unit, double v, int align) {
   if (unit == "kJ") return number("energy", align);
   if (unit == "m") return number("length", align);
   if (unit == "m/s") return number("speed", align);
+  if (unit == "%") return number("length", align);  // two decimals
   if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15) return number("count", align);
   if (std::isfinite(v) && v != 0 && std::abs(v) < 1e-3) return number("scientific", align);
   return number("parameter", align);
@@ -296,6 +298,7 @@ lxw_format* Report::bold() {
   if (auto it = formats_.find("bold"); it != formats_.end()) return it->second;
   lxw_format* f = add_format();
   format_set_bold(f);
+  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);  // with the values of a row made taller
   return formats_["bold"] = f;
 }
 
@@ -305,6 +308,14 @@ lxw_format* Report::wrap() {
   format_set_text_wrap(f);
   format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
   return formats_["wrap"] = f;
+}
+
+lxw_format* Report::indented() {
+  if (auto it = formats_.find("indented"); it != formats_.end()) return it->second;
+  lxw_format* f = add_format();
+  format_set_indent(f, 1);
+  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  return formats_["indented"] = f;
 }
 
 lxw_format* Report::top() {
@@ -1372,9 +1383,16 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
 // ---- a quarry row (design-checks.md §2) ------------------------------------------------
 
 void Report::distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f) {
-  if (std::isinf(v) && v > 0)
-    text(ws, r, c, t_.get("labels", "beyond_profile"), centred());
-  else
+  if (std::isinf(v) && v > 0) {
+    lxw_format* f2 = formats_.count("centred_wrap") ? formats_["centred_wrap"] : nullptr;
+    if (!f2) {
+      f2 = formats_["centred_wrap"] = add_format();
+      format_set_align(f2, LXW_ALIGN_CENTER);
+      format_set_align(f2, LXW_ALIGN_VERTICAL_TOP);
+      format_set_shrink(f2);  // words in a number column: fit the column, never spill over
+    }
+    text(ws, r, c, t_.get("labels", "beyond_profile"), f2);
+  } else
     num(ws, r, c, v, f);
 }
 
@@ -1421,7 +1439,16 @@ Row Report::quarry_summary(lxw_worksheet* ws, Row r) {
   const auto& a = q.average;
   auto avg = [&](const std::string& source, double rd50, double rd95, double rdmax, double id50,
                  double id95, double idmax) {
-    text(ws, r, 0, t_.get("titles", "quarry_average"), bold());
+    const std::string& label = t_.get("titles", "quarry_average");
+    lxw_format* f = formats_.count("bold_wrap") ? formats_["bold_wrap"] : nullptr;
+    if (!f) {
+      f = formats_["bold_wrap"] = add_format();
+      format_set_bold(f);
+      format_set_text_wrap(f);
+      format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+    }
+    text(ws, r, 0, label, f);
+    fit_row(ws, r, {{&label, 16}});
     text(ws, r, 1, source, centred_bold());
     distance(ws, r, 6, rd50, hf);
     distance(ws, r, 7, rd95, hf);
@@ -1448,7 +1475,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     if (i < q.sections.size()) secs.push_back(&q.sections[i]);
   page_setup(ws);
   width(ws, 0, 0, 30);
-  width(ws, 1, 13, 13);
+  width(ws, 1, 13, 14);  // as a barrier sheet: the check table's merged columns fit its text
   text(ws, 0, 0, replace_all(t_.get("titles", "quarry"), "{name}", row.name), title());
   check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
   Row r = 2;
@@ -1628,7 +1655,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     text(ws, r, 0, h("quarry_governing", key), bold());
     distance(ws, r, 1, vh, hf);
     distance(ws, r, 2, vh * row.height, lf);
-    text(ws, r++, 3, how);
+    text(ws, r++, 3, how, indented());
   };
   gov("rd_gov", row.rd_gov.value_h, row.rd_gov.how);
   gov("id_gov", row.id_gov.value_h, row.id_gov.how);
@@ -1646,7 +1673,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
   headings(ws, r, 0, "quarry_zones",
            {"section", "danger_zone", "first_impact_zone", "bench_width", "retention",
             "ritchie_width"},
-           45);
+           60);
   check(worksheet_merge_range(ws, r, 6, r, 9, h("quarry_zones", "work_areas").c_str(), heading()),
         "worksheet_merge_range");
   ++r;
