@@ -245,9 +245,12 @@ int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& o) {
   info.threads = used;
   info.all_crossings = o.all_crossings;
   io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, results);
-  // report.xlsx has no quarry sheets yet (add_quarry_report_data gathers their data): a
-  // report left by an earlier run in this folder is removed rather than left to mislead.
-  const auto written = folder->commit({io::kImpactsCsv, io::kReportXlsx});
+  io::ReportData report = report_data(loaded, stats);
+  report.samples = &all;
+  report.checks = results.checks;
+  add_quarry_report_data(report, loaded, *results.quarry);
+  write_report(folder->staged(io::kReportXlsx), report);
+  const auto written = folder->commit({io::kImpactsCsv});
   if (!o.quiet) print_results(stdout, stats, seconds, written);
   if (!o.quiet || o.check) {
     print_quarries(stdout, *results.quarry);

@@ -56,10 +56,8 @@ std::string today() {
 }
 }  // namespace
 
-void write_run_report(const std::filesystem::path& file, const io::LoadedScenario& loaded,
-                      const design::RunStatistics& statistics, const design::RunSamples& samples,
-                      const io::DesignResults& design, FirstRows&& first) {
-  const io::ReportTemplate tpl = io::load_report_template(io::default_report_template());
+io::ReportData report_data(const io::LoadedScenario& loaded,
+                           const design::RunStatistics& statistics) {
   io::ReportData d;
   d.scenario = &loaded;
   d.pierre_version = PIERRE_VERSION;
@@ -77,12 +75,24 @@ void write_run_report(const std::filesystem::path& file, const io::LoadedScenari
   }
   d.seed = loaded.scenario.settings.seed;
   d.throws = loaded.scenario.settings.throws;
+  d.statistics = statistics;
+  return d;
+}
+
+void write_report(const std::filesystem::path& file, const io::ReportData& data) {
+  const io::ReportTemplate tpl = io::load_report_template(io::default_report_template());
+  io::write_report(file, data, tpl);
+}
+
+void write_run_report(const std::filesystem::path& file, const io::LoadedScenario& loaded,
+                      const design::RunStatistics& statistics, const design::RunSamples& samples,
+                      const io::DesignResults& design, FirstRows&& first) {
+  io::ReportData d = report_data(loaded, statistics);
   for (const auto& r : loaded.barrier_rules) {
     const std::string entry = r.title.empty() ? r.name : r.name + " — " + r.title;
     if (std::find(d.rule_sets.begin(), d.rule_sets.end(), entry) == d.rule_sets.end())
       d.rule_sets.push_back(entry);
   }
-  d.statistics = statistics;
   d.samples = &samples;
   d.barriers = design.barriers;
   d.checks = design.checks;
@@ -91,7 +101,7 @@ void write_run_report(const std::filesystem::path& file, const io::LoadedScenari
   d.crossings = std::move(first.crossings);
   d.total_trajectories = first.total_trajectories;
   d.total_crossings = first.total_crossings;
-  io::write_report(file, d, tpl);
+  write_report(file, d);
 }
 
 }  // namespace pierre::app

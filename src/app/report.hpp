@@ -36,7 +36,14 @@ class FirstRows final : public sim::ResultSink {
 std::vector<std::vector<geometry::Vec2>> sample_paths(const sim::Scenario& scenario,
                                                       std::size_t count);
 
-// Writes report.xlsx into `file` (atomically) with the template from the templates/ folder.
+// The report's common part: scenario, version, date (SOURCE_DATE_EPOCH or today), seed, throws,
+// run statistics.
+io::ReportData report_data(const io::LoadedScenario& loaded, const design::RunStatistics& statistics);
+
+// Writes `data` into `file` (atomically) with the template from the templates/ folder.
+void write_report(const std::filesystem::path& file, const io::ReportData& data);
+
+// Writes report.xlsx of a run with barriers into `file`.
 void write_run_report(const std::filesystem::path& file, const io::LoadedScenario& loaded,
                       const design::RunStatistics& statistics, const design::RunSamples& samples,
                       const io::DesignResults& design, FirstRows&& first);

@@ -4,6 +4,8 @@
 // and "checks" in summary.json, the section column of trajectories.csv, per-section seeds,
 // thread-count reproducibility, and the shipped example (examples/quarry-austria).
 #include <gtest/gtest.h>
+
+#include <cstdio>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -131,6 +133,21 @@ TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
   EXPECT_EQ(j["checks_failed"], true);
   EXPECT_EQ(j["quarries"][0]["sections"][0]["work_areas"][0]["inside_zone"], true);
   EXPECT_TRUE(fs::exists(out / "trajectories.csv"));
+  // The design report has a sheet per quarry row and their charts (the xlsx is a zip).
+  ASSERT_TRUE(fs::is_regular_file(out / "report.xlsx"));
+  std::string parts;
+  if (FILE* p = ::popen(("unzip -Z1 '" + (out / "report.xlsx").string() + "' 2>/dev/null").c_str(), "r")) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, p)) parts += buf;
+    ::pclose(p);
+  }
+  if (!parts.empty()) {
+    std::size_t charts = 0;
+    for (auto at = parts.find("xl/charts/chart"); at != std::string::npos;
+         at = parts.find("xl/charts/chart", at + 1))
+      ++charts;
+    EXPECT_GE(charts, 2u * 5u) << parts;  // per row: a section chart, 2 histograms, 2 CDFs
+  }
   // `pierre run` exits 0 whatever the checks say.
   const fs::path out2 = dir_ / "out2";
   const Result run = pierre("run " + kData + "fail.toml --out '" + out2.string() + "'");
