@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "section_readers.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io {
@@ -26,28 +27,8 @@ const char* const kCheckIds[] = {"energy.mel",        "energy.sel", "height.inte
                                  "exceedance.height", "fit.v",      "fit.h",
                                  "fit.E",             "sample.size", "reach"};
 
-std::string read_text(const fs::path& file, std::string_view what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    std::error_code ec;
-    const bool exists = fs::is_regular_file(file, ec);
-    throw InputError(file, 0, "file", exists ? "a file that cannot be read" : "no such file",
-                     fmt::format("a readable {}", what));
-  }
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
-}
-
-toml::table parse_toml(const fs::path& file, const std::string& text) {
-  try {
-    return toml::parse(text, file.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
-                     fmt::format("{} (column {})", e.description(), e.source().begin.column),
-                     "valid TOML (https://toml.io)");
-  }
-}
+using detail::parse_toml;  // shared with the scenario's section readers
+using detail::read_text;
 
 // The [rule_set] table, its kind checked.
 TomlTable header(const TomlTable& top, std::string_view kind,
