@@ -16,50 +16,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/cli_fixture.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 const std::string kData = PIERRE_TEST_DATA "/barrier/";
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+using Result = pierre::test::CliResult;
+using pierre::test::count_of;
+using pierre::test::slurp;
+using pierre::test::zip_listing;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class Check : public ::testing::Test {
- protected:
-  void SetUp() override {
-    static std::atomic<int> n{0};
-    dir_ = fs::temp_directory_path() /
-           ("pierre-check-test-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  Result pierre(const std::string& args) {
-    const fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
-    const std::string cmd = std::string("'") + PIERRE_BINARY + "' " + args + " >'" + o.string() +
-                            "' 2>'" + e.string() + "'";
-    const int st = std::system(cmd.c_str());
-    Result r;
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    r.out = slurp(o);
-    r.err = slurp(e);
-    return r;
-  }
-  nlohmann::json summary(const fs::path& out) { return nlohmann::json::parse(slurp(out / "summary.json")); }
-
-  fs::path dir_;
-};
+class Check : public pierre::test::PierreCli {};
 
 std::set<std::string> statuses(const nlohmann::json& checks) {
   std::set<std::string> s;
@@ -167,25 +137,6 @@ TEST_F(Check, HelpShowsTheExitCodes) {
   EXPECT_NE(r.out.find("1 when one FAILs"), std::string::npos) << r.out;
 }
 
-}  // namespace
-
-namespace {
-// The part names of an xlsx (a zip), read with the unzip program (installed by the test set-up).
-std::string zip_listing(const fs::path& xlsx) {
-  const std::string cmd = "unzip -Z1 '" + xlsx.string() + "' 2>/dev/null";
-  std::string out;
-  if (FILE* p = ::popen(cmd.c_str(), "r")) {
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    ::pclose(p);
-  }
-  return out;
-}
-std::size_t count_of(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (auto at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
-  return n;
-}
 }  // namespace
 
 TEST_F(Check, WritesTheDesignReportWithABarrierSheetAndItsCharts) {

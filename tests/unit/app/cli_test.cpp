@@ -15,55 +15,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/cli_fixture.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 const std::string kScenario = PIERRE_TEST_DATA "/small/scenario.toml";
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+using Result = pierre::test::CliResult;
+using pierre::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    static std::atomic<int> n{0};
-    dir_ = fs::temp_directory_path() /
-           ("pierre-app-test-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  // Runs `pierre ARGS` with stdout and stderr captured in files.
-  Result pierre(const std::string& args) {
-    const fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
-    const std::string cmd =
-        std::string("'") + PIERRE_BINARY + "' " + args + " >'" + o.string() + "' 2>'" + e.string() + "'";
-    const int st = std::system(cmd.c_str());
-    Result r;
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    r.out = slurp(o);
-    r.err = slurp(e);
-    return r;
-  }
-  static std::string q(const fs::path& p) {
-    std::string s(1, '\'');
-    s += p.string();
-    s += '\'';
-    return s;
-  }
-  fs::path dir_;
-};
+class Cli : public pierre::test::PierreCli {};
 
 std::size_t count_lines(const std::string& s) {
   std::size_t n = 0;

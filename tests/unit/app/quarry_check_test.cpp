@@ -19,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/cli_fixture.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -26,46 +28,12 @@ namespace fs = std::filesystem;
 const std::string kData = PIERRE_TEST_DATA "/quarry-cli/";
 const std::string kExample = PIERRE_SOURCE_DIR "/examples/quarry-austria/scenario.toml";
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+using Result = pierre::test::CliResult;
+using pierre::test::count_of;
+using pierre::test::slurp;
+using pierre::test::zip_listing;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class QuarryCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    static std::atomic<int> n{0};
-    dir_ = fs::temp_directory_path() /
-           ("pierre-quarry-test-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  Result pierre(const std::string& args) {
-    const fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
-    const std::string cmd = std::string("'") + PIERRE_BINARY + "' " + args + " >'" + o.string() +
-                            "' 2>'" + e.string() + "'";
-    const int st = std::system(cmd.c_str());
-    Result r;
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    r.out = slurp(o);
-    r.err = slurp(e);
-    return r;
-  }
-  nlohmann::json summary(const fs::path& out) {
-    return nlohmann::json::parse(slurp(out / "summary.json"));
-  }
-
-  fs::path dir_;
-};
+class QuarryCli : public pierre::test::PierreCli {};
 
 const nlohmann::json& check(const nlohmann::json& j, const std::string& subject,
                             const std::string& id) {
@@ -135,17 +103,9 @@ TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
   EXPECT_TRUE(fs::exists(out / "trajectories.csv"));
   // The design report has a sheet per quarry row and their charts (the xlsx is a zip).
   ASSERT_TRUE(fs::is_regular_file(out / "report.xlsx"));
-  std::string parts;
-  if (FILE* p = ::popen(("unzip -Z1 '" + (out / "report.xlsx").string() + "' 2>/dev/null").c_str(), "r")) {
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, p)) parts += buf;
-    ::pclose(p);
-  }
+  const std::string parts = zip_listing(out / "report.xlsx");
   if (!parts.empty()) {
-    std::size_t charts = 0;
-    for (auto at = parts.find("xl/charts/chart"); at != std::string::npos;
-         at = parts.find("xl/charts/chart", at + 1))
-      ++charts;
+    const std::size_t charts = count_of(parts, "xl/charts/chart");
     EXPECT_GE(charts, 2u * 5u) << parts;  // per row: a section chart, 2 histograms, 2 CDFs
   }
   // `pierre run` exits 0 whatever the checks say.
