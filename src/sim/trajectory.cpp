@@ -34,7 +34,8 @@ class Integrator {
         tally_(tally),
         impacts_(impacts),
         path_(path),
-        path_step_(path_step) {
+        path_step_(path_step),
+        rng_(m.random_key(), index) {
     const TrajectoryKey key = trajectory_key(sc_, index);
     const Source& src = sc_.sources[key.source];
     blk_ = &m.block(key.block);
@@ -43,7 +44,6 @@ class Integrator {
     out_.block = key.block;
     out_.throw_index = key.throw_index;
     out_.mass = blk_->mass;
-    rng_.emplace(set_.seed, index);
     tally_.begin(index, key.block, blk_->mass, blk_->inertia);
     p_ = src.position;
     v_ = src.velocity;
@@ -197,7 +197,7 @@ class Integrator {
       out_.first_impact = p_;
     }
     note_floor(j);
-    const auto draws = rng_->impact_draws();
+    const auto draws = rng_.impact_draws();
     ImpactRecord* rec = nullptr;  // the TR record, only when asked for
     if (impacts_) {
       rec = &impacts_->emplace_back();
@@ -348,8 +348,8 @@ class Integrator {
   std::vector<ImpactRecord>* impacts_;
   std::vector<Vec2>* path_;
   double path_step_;
+  RandomStream rng_;
   const model::BlockConstants* blk_ = nullptr;
-  std::optional<RandomStream> rng_;
   TrajectorySummary out_;
 
   Mode mode_ = Mode::flight;
@@ -368,7 +368,8 @@ class Integrator {
 TrajectoryModel::TrajectoryModel(const Scenario& scenario)
     : scenario_(&scenario),
       law_(scenario.settings.roughness, scenario.settings.stop_head_factor,
-           scenario.settings.gravity) {
+           scenario.settings.gravity),
+      key_(scenario.settings.seed) {
   for (const auto& m : scenario.materials) surfaces_.push_back(law_.surface(m));
   for (const auto& b : scenario.blocks) blocks_.push_back(law_.block(b));
 }

@@ -21,10 +21,12 @@ class TrajectoryModel {
   const model::ImpactLaw& law() const { return law_; }
   const model::SurfaceConstants& surface(int material) const { return surfaces_[material]; }
   const model::BlockConstants& block(std::size_t i) const { return blocks_[i]; }
+  const PhiloxKey& random_key() const { return key_; }
 
  private:
   const Scenario* scenario_;
   model::ImpactLaw law_;
+  PhiloxKey key_;  // the seed's round keys, shared by every trajectory's stream
   std::vector<model::SurfaceConstants> surfaces_;
   std::vector<model::BlockConstants> blocks_;
 };
