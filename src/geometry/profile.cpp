@@ -124,15 +124,24 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
   p.nodes_.reserve(2 * p.segments_.size() / kLeafSize + 4);
   p.build_node(0, static_cast<int>(p.segments_.size()));
   // Maximal straight runs: consecutive segments joined by vertices that are not events.
-  p.run_begin_.assign(p.segments_.size(), 0);
-  p.run_end_.assign(p.segments_.size(), 0);
+  p.run_of_.assign(p.segments_.size(), 0);
   for (std::size_t i = 0; i < p.segments_.size();) {
     std::size_t e = i + 1;
     while (e < p.segments_.size() && p.turns_[e - 1] == VertexTurn::straight) ++e;
-    for (std::size_t k = i; k < e; ++k) {
-      p.run_begin_[k] = static_cast<int>(i);
-      p.run_end_[k] = static_cast<int>(e);
-    }
+    const Segment& s0 = p.segments_[i];
+    const Vec2 end = p.segments_[e - 1].b;
+    Run r;
+    r.a = s0.a;
+    r.d = s0.d;
+    r.n = s0.n;
+    r.length = e - i > 1 ? dot(end - s0.a, s0.d) : s0.length;
+    r.x_lo = std::min(s0.a.x, end.x);
+    r.x_hi = std::max(s0.a.x, end.x);
+    r.slope = s0.d.x != 0.0 ? s0.d.z / s0.d.x : 0.0;
+    r.begin = static_cast<int>(i);
+    r.end = static_cast<int>(e);
+    for (std::size_t k = i; k < e; ++k) p.run_of_[k] = static_cast<int>(p.runs_.size());
+    p.runs_.push_back(r);
     i = e;
   }
   p.parents_.assign(p.nodes_.size(), -1);
@@ -214,18 +223,23 @@ int Profile::build_node(int first, int last) {
   return id;
 }
 
-std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double t_max,
-                                              const Departure& dep) const {
-  Contact best;
-  double t_best = t_max;
+namespace {
+
+// One contact search: the arc, its departure and the earliest contact found so far.
+struct ArcSearch {
+  Vec2 p0, v0;
+  double g;
+  ArcX ax;
+  const Departure& dep;
+  double t_best;
+  Contact best{};
   bool found = false;
-  const ArcX ax(p0.x, v0.x);
 
   // Earliest entering root on a line (point A, unit direction d, air-side normal n) whose
   // piece of interest spans [0, length] along d; kind: 0 plain, 1 departed (c = 0 exactly:
   // drop the trivial root t = 0, model-2d.md §2), 2 left tangentially (cannot be hit).
-  auto solve = [&](Vec2 A, Vec2 n, Vec2 d, double length, double xlo, double xhi, int kind,
-                   double& t_out, double& along_out) {
+  bool solve(Vec2 A, Vec2 n, Vec2 d, double length, double xlo, double xhi, int kind,
+             double& t_out, double& along_out) const {
     if (kind == 2) return false;
     double c = dot(p0 - A, n);
     const double b = dot(v0, n);
@@ -268,46 +282,85 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       return true;
     }
     return false;
-  };
-  auto kind_of = [&](int j) {
+  }
+
+  int kind_of(int j) const {
     for (int k = 0; k < 2; ++k)
       if (dep.segment[k] == j) return dep.tangent[k] ? 2 : 1;
     return 0;
-  };
-  auto test_segment = [&](int j) {
-    const Segment& s = segments_[j];
+  }
+  // The kind of a range of segments: departed if the departure is on it.
+  int kind_of(int first, int last) const {
+    int kind = 0;
+    for (int k = 0; k < 2; ++k)
+      if (dep.segment[k] >= first && dep.segment[k] < last)
+        kind = std::max(kind, dep.tangent[k] ? 2 : 1);
+    return kind;
+  }
+  bool departs_from(int j) const { return j == dep.segment[0] || j == dep.segment[1]; }
+
+  void test_segment(const Segment& s, int j) {
     double t, along;
     if (solve(s.a, s.n, s.d, s.length, s.x_lo, s.x_hi, kind_of(j), t, along)) {
       t_best = t;
       best = {t, j, along};
       found = true;
     }
-  };
+  }
+};
+
+}  // namespace
+
+std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double t_max,
+                                              const Departure& dep) const {
+  // The commonest arc by far: a rebound from one segment that lands on that same segment (a
+  // bounce along a slope or the floor). Without overhangs nothing else can be met first (x is
+  // monotone along the flight and along the section), so the departed line's own root is the
+  // contact: the same arithmetic as ArcSearch::solve for a departed segment.
+  if (const int j = dep.segment[0];
+      x_monotone_ && v0.x != 0.0 && j >= 0 && dep.segment[1] < 0 && !dep.tangent[0] &&
+      runs_[run_of_[j]].end - runs_[run_of_[j]].begin == 1) {
+    const Segment& s = segments_[j];
+    const double b = dot(v0, s.n);
+    const double a = -0.5 * g * s.n.z;
+    if (!(b < 0 && dep.concave_vertex) && a != 0.0) {
+      const double t = -b / a;
+      if (t >= 0.0 && t < t_max && b + 2 * a * t < 0.0) {
+        const Vec2 pt{p0.x + v0.x * t, p0.z + v0.z * t - 0.5 * g * t * t};
+        const double along = dot(pt - s.a, s.d);
+        const double slack = kEps * std::max(1.0, s.length);
+        if (along >= -slack && along <= s.length + slack)
+          return Contact{t, j, std::clamp(along, 0.0, s.length)};
+      }
+    }
+  }
+  ArcSearch as{p0, v0, g, ArcX(p0.x, v0.x), dep, t_max};
+
   // A straight run of collinear segments is one line for the search; the segment hit is then
   // found by bisection along it. (A finely digitised straight face costs what one segment does.)
-  auto test_range = [&](int first, int last) {  // segments [first, last), collinear
-    const Segment& s0 = segments_[first];
-    int kind = 0;
-    for (int k = 0; k < 2; ++k)
-      if (dep.segment[k] >= first && dep.segment[k] < last)
-        kind = std::max(kind, dep.tangent[k] ? 2 : 1);
-    const Vec2 end = segments_[last - 1].b;
-    const double length = dot(end - s0.a, s0.d);
+  auto test_line = [&](Vec2 a, Vec2 d, Vec2 n, double length, double x_lo, double x_hi,
+                       int first, int last) {
     double t, along;
-    if (!solve(s0.a, s0.n, s0.d, length, std::min(s0.a.x, end.x), std::max(s0.a.x, end.x), kind,
-               t, along))
-      return;
+    if (!as.solve(a, n, d, length, x_lo, x_hi, as.kind_of(first, last), t, along)) return;
     int lo = first, hi = last - 1;  // last segment whose start is at or before `along`
     while (lo < hi) {
       const int mid = (lo + hi + 1) / 2;
-      if (dot(segments_[mid].a - s0.a, s0.d) <= along) lo = mid; else hi = mid - 1;
+      if (dot(segments_[mid].a - a, d) <= along) lo = mid; else hi = mid - 1;
     }
     const Segment& sj = segments_[lo];
-    t_best = t;
-    best = {t, lo, std::clamp(along - dot(sj.a - s0.a, s0.d), 0.0, sj.length)};
-    found = true;
+    as.t_best = t;
+    as.best = {t, lo, std::clamp(along - dot(sj.a - a, d), 0.0, sj.length)};
+    as.found = true;
   };
-  auto test_run = [&](const Node& nd) { test_range(nd.first, nd.last); };
+  auto test_run = [&](const Run& r) {
+    test_line(r.a, r.d, r.n, r.length, r.x_lo, r.x_hi, r.begin, r.end);
+  };
+  auto test_range = [&](int first, int last) {  // collinear segments [first, last)
+    const Segment& s0 = segments_[first];
+    const Vec2 end = segments_[last - 1].b;
+    test_line(s0.a, s0.d, s0.n, dot(end - s0.a, s0.d), std::min(s0.a.x, end.x),
+              std::max(s0.a.x, end.x), first, last);
+  };
 
   // Best-first walk of a subtree: the child the block reaches first is visited first, and a
   // node is skipped when the arc cannot meet its segments before the best contact so far.
@@ -318,19 +371,19 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
     while (top > 0) {
       const Node& nd = nodes_[stack[--top]];
       double ta, tb;
-      if (!ax.window(nd.x_lo - kEps, nd.x_hi + kEps, t_best, ta, tb)) continue;
+      if (!as.ax.window(nd.x_lo - kEps, nd.x_hi + kEps, as.t_best, ta, tb)) continue;
       // q(t) = z(t) − chord(x(t)) is a concave quadratic: a contact needs q in [off_lo, off_hi].
       const double q0 = p0.z - nd.icpt - nd.slope * p0.x, q1 = v0.z - nd.slope * v0.x;
       auto q = [&](double t) { return q0 + q1 * t - 0.5 * g * t * t; };
       if (std::min(q(ta), q(tb)) > nd.off_hi + kEps) continue;  // lowest at an end
       if (q(std::clamp(q1 / g, ta, tb)) < nd.off_lo - kEps) continue;
       if (nd.straight) {
-        test_run(nd);
+        test_range(nd.first, nd.last);
         continue;
       }
       if (nd.left < 0) {
         for (int j = nd.first; j < nd.last; ++j)
-          if (j != dep.segment[0] && j != dep.segment[1]) test_segment(j);  // tested first
+          if (!as.departs_from(j)) as.test_segment(segments_[j], j);  // tested first
         continue;
       }
       const Node& l = nodes_[nd.left];
@@ -347,64 +400,73 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       }
     }
   };
+  auto result = [&]() -> std::optional<Contact> {
+    if (!as.found) return std::nullopt;
+    return as.best;
+  };
 
-  int seed = -1;
-  for (int k = 0; k < 2; ++k)
-    if (dep.segment[k] >= 0) {
-      test_segment(dep.segment[k]);  // a concave neighbour may be entered at once
-      seed = std::max(seed, dep.segment[k]);
-    }
-  if (seed < 0 && x_monotone_ && v0.x != 0.0) {
+  // The segments departed from first: a concave neighbour may be entered at once.
+  int ahead_seed = -1, behind_seed = -1;  // furthest and nearest departure segment by index
+  for (int k = 0; k < 2; ++k) {
+    const int j = dep.segment[k];
+    if (j < 0) continue;
+    as.test_segment(segments_[j], j);
+    ahead_seed = std::max(ahead_seed, j);
+    behind_seed = behind_seed < 0 ? j : std::min(behind_seed, j);
+  }
+  if (!x_monotone_ || v0.x == 0.0) {
+    search(0);
+    return result();
+  }
+  if (ahead_seed < 0) {
     // No departure (a flight from a source): start the march at the segment under the block.
     int lo = 0, hi = static_cast<int>(segments_.size()) - 1;
     while (lo < hi) {  // last segment whose start is not beyond p0.x along the main direction
       const int mid = (lo + hi + 1) / 2;
       if ((segments_[mid].a.x - p0.x) * main_direction_ <= 0) lo = mid; else hi = mid - 1;
     }
-    test_segment(lo);
-    seed = lo;
+    as.test_segment(segments_[lo], lo);
+    ahead_seed = behind_seed = lo;
   }
-  if (!x_monotone_ || v0.x == 0.0 || seed < 0) {
-    search(0);
-  } else {
-    // On a section without overhangs x grows with the segment index (times main_direction),
-    // and along a flight x changes monotonically with time: the first contact is in the
-    // departure's leaf or in the nearest subtree beyond it. Climb from the leaf and search
-    // only the siblings ahead, which keeps a short hop on a 10 000-vertex section cheap.
-    const bool ahead_is_right = (v0.x > 0) == (main_direction_ > 0);
-    if (!ahead_is_right) seed = std::min(dep.segment[0], dep.segment[1] >= 0 ? dep.segment[1] : dep.segment[0]);
-    // Most hops land within a few straight runs: test them in order first (in x order the
-    // first contact found is the earliest), and only then climb the tree. A run of collinear
-    // segments is one line (the departure's own run included: its other pieces lie on the
-    // departed line too).
-    const int step = ahead_is_right ? 1 : -1;
-    const int n = static_cast<int>(segments_.size());
-    if (run_end_[seed] - run_begin_[seed] > 1) test_range(run_begin_[seed], run_end_[seed]);
-    int j = ahead_is_right ? run_end_[seed] - 1 : run_begin_[seed];
-    for (int k = 0; k < kMarch && !found; ++k) {
-      j += step;
-      if (j < 0 || j >= n) break;
-      const int b = run_begin_[j], e = run_end_[j];
-      if (e - b > 1)
-        test_range(b, e);
-      else if (j != dep.segment[0] && j != dep.segment[1])
-        test_segment(j);
-      j = ahead_is_right ? e - 1 : b;
-    }
-    if (found) return best;
-    if (j < 0 || j >= n) return std::nullopt;
-    int node = leaf_of_[j];
-    search(node);
-    while (!found && node != 0) {
-      const int parent = parents_[node];
-      const Node& pn = nodes_[parent];
-      if (ahead_is_right && pn.left == node) search(pn.right);
-      if (!ahead_is_right && pn.right == node) search(pn.left);
-      node = parent;
+  // On a section without overhangs x grows with the segment index (times main_direction),
+  // and along a flight x changes monotonically with time: the first contact is in the
+  // departure's run or in the nearest runs beyond it, so the first contact found going run by
+  // run is the earliest. Most hops land within a few runs: test them in order first, and
+  // only then climb the tree from the last one's leaf, searching only the subtrees ahead.
+  // A run of collinear segments is one line (the departure's own run included: its other
+  // pieces lie on the departed line too).
+  const bool ahead_is_right = (v0.x > 0) == (main_direction_ > 0);
+  const int step = ahead_is_right ? 1 : -1;
+  const int n_runs = static_cast<int>(runs_.size());
+  int r = run_of_[ahead_is_right ? ahead_seed : behind_seed];
+  if (runs_[r].end - runs_[r].begin > 1) test_run(runs_[r]);
+  for (int k = 0; k < kMarch && !as.found; ++k) {
+    r += step;
+    if (r < 0 || r >= n_runs) break;
+    const Run& run = runs_[r];
+    if (run.end - run.begin > 1) {
+      test_run(run);
+    } else if (!as.departs_from(run.begin)) {
+      double t, along;  // a one-segment run is its segment
+      if (as.solve(run.a, run.n, run.d, run.length, run.x_lo, run.x_hi, 0, t, along)) {
+        as.t_best = t;
+        as.best = {t, run.begin, along};
+        as.found = true;
+      }
     }
   }
-  if (!found) return std::nullopt;
-  return best;
+  if (as.found) return as.best;
+  if (r < 0 || r >= n_runs) return std::nullopt;
+  int node = leaf_of_[ahead_is_right ? runs_[r].end - 1 : runs_[r].begin];
+  search(node);
+  while (!as.found && node != 0) {
+    const int parent = parents_[node];
+    const Node& pn = nodes_[parent];
+    if (ahead_is_right && pn.left == node) search(pn.right);
+    if (!ahead_is_right && pn.right == node) search(pn.left);
+    node = parent;
+  }
+  return result();
 }
 
 std::optional<GroundPoint> Profile::ground_below(double x, double z) const {
@@ -423,7 +485,9 @@ std::optional<GroundPoint> Profile::ground_below(double x, double z) const {
     }
     for (int j = nd.first; j < nd.last; ++j) {
       const Segment& s = segments_[j];
-      if (s.d.x == 0.0) continue;  // a vertical face: its top is its neighbour's end
+      // A vertical face's top is its neighbour's end; the underside of a ledge (its air below,
+      // n.z < 0) is a ceiling, never the ground below a block.
+      if (s.d.x == 0.0 || s.n.z < 0.0) continue;
       const double lo = std::min(s.a.x, s.b.x), hi = std::max(s.a.x, s.b.x);
       if (x < lo - kEps || x > hi + kEps) continue;
       const double u = std::clamp((x - s.a.x) / (s.b.x - s.a.x), 0.0, 1.0);
@@ -439,6 +503,19 @@ std::optional<GroundPoint> Profile::top_ground(double x) const { return ground_b
 
 double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end,
                                         double at_least, int seg_a, int seg_b) const {
+  // The commonest arc: departing from and landing on one straight run. The ground under it is
+  // that line, and h(t) = z(t) − line(x(t)) is a concave quadratic: its maximum is at the
+  // stationary point clamped to the part of the arc above the run.
+  if (x_monotone_ && v0.x != 0.0 && seg_a >= 0 && seg_b >= 0 && run_of_[seg_a] == run_of_[seg_b]) {
+    const Run& run = runs_[run_of_[seg_a]];
+    const double best = std::max(0.0, at_least);
+    double sa, sb;
+    if (run.d.x == 0.0 || !ArcX(p0.x, v0.x).window(run.x_lo, run.x_hi, t_end, sa, sb)) return best;
+    const double t_star = std::clamp((v0.z - v0.x * run.slope) / g, sa, sb);
+    const double x = p0.x + v0.x * t_star;
+    const double z = p0.z + v0.z * t_star - 0.5 * g * t_star * t_star;
+    return std::max(best, z - (run.a.z + (x - run.a.x) * run.slope));
+  }
   auto z_at = [&](double t) { return p0.z + v0.z * t - 0.5 * g * t * t; };
   if (v0.x == 0.0) {  // vertical drop: one ground point under the whole arc
     const double t_apex = std::clamp(v0.z / g, 0.0, t_end);
@@ -447,15 +524,46 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
   }
   double best = std::max(0.0, at_least);
   const ArcX ax(p0.x, v0.x);
-  auto consider = [&](double t, int seg) {
-    const double x = p0.x + v0.x * t, z = z_at(t);
-    const auto ground = ground_below(x, z);
-    if (!ground) return;
-    if (seg >= 0 && std::abs(ground->z - (segments_[seg].a.z +
-                                          (x - segments_[seg].a.x) * segments_[seg].d.z /
-                                              segments_[seg].d.x)) > 1e-9)
-      return;  // another surface lies between: this segment is not the ground below here
-    best = std::max(best, z - ground->z);
+  // Under overhangs a segment is the ground below only where nothing lies between, and where
+  // that is changes only at the x of another segment's vertex (a flight crosses no segment).
+  // So the part of the arc above segment j is cut at those x; on each piece where j is the
+  // ground below (looked up at the piece's middle), h is concave and maximised exactly.
+  std::vector<double> cuts;
+  auto visible_max = [&](int j, double sa, double sb) {
+    const Segment& s = segments_[j];
+    const double slope = s.d.z / s.d.x;
+    const double xa = p0.x + v0.x * sa, xb = p0.x + v0.x * sb;
+    const double lo_x = std::min(xa, xb), hi_x = std::max(xa, xb);
+    cuts.assign({sa, sb});
+    int stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& nd = nodes_[stack[--top]];
+      if (nd.x_hi <= lo_x || nd.x_lo >= hi_x) continue;
+      if (nd.left >= 0) {
+        stack[top++] = nd.left;
+        stack[top++] = nd.right;
+        continue;
+      }
+      for (int k = nd.first; k < nd.last; ++k)
+        for (const double vx : {segments_[k].a.x, segments_[k].b.x})
+          if (vx > lo_x && vx < hi_x) cuts.push_back(ax.inv * (vx - p0.x));
+    }
+    std::sort(cuts.begin(), cuts.end());
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const double ta = cuts[i], tb = cuts[i + 1];
+      if (!(tb > ta)) continue;
+      const double tm = 0.5 * (ta + tb);
+      const double xm = p0.x + v0.x * tm;
+      const auto ground = ground_below(xm, z_at(tm));
+      if (!ground ||
+          std::abs(ground->z - (s.a.z + (xm - s.a.x) * slope)) > kEps * (1 + std::abs(ground->z)))
+        continue;  // another surface lies between here
+      const double t = std::clamp((v0.z - v0.x * slope) / g, ta, tb);
+      const double x = p0.x + v0.x * t;
+      best = std::max(best, z_at(t) - (s.a.z + (x - s.a.x) * slope));
+    }
   };
 
   // Upper bound of h over a node: the arc's highest point over the node's window minus the
@@ -469,28 +577,17 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
   }
   // h(t) = z(t) − ground(x(t)) is a concave quadratic on each segment: its maximum over the
   // part of the arc above the segment is at the stationary point or an end.
-  auto segment_max = [&](const Segment& s) {
-    double sa, sb;
-    if (s.d.x == 0.0 || !ax.window(s.x_lo, s.x_hi, t_end, sa, sb)) return -kInf;
-    const double slope = s.d.z / s.d.x;
-    const double t_star = std::clamp((v0.z - v0.x * slope) / g, sa, sb);
-    const double x = p0.x + v0.x * t_star;
-    return z_at(t_star) - (s.a.z + (x - s.a.x) * slope);
-  };
-  if (x_monotone_ && seg_a >= 0 && seg_b >= 0) {
+  if (x_monotone_ && seg_a >= 0 && seg_b >= 0 && run_of_[hi] - run_of_[lo] < 2 * kMarch) {
     // A short hop: the few straight runs under it, each one line, directly.
-    int runs = 0;
-    for (int j = lo; j <= hi && runs <= 2 * kMarch; j = run_end_[j]) ++runs;
-    if (runs <= 2 * kMarch) {
-      for (int j = lo; j <= hi; j = run_end_[j]) {
-        Segment line = segments_[run_begin_[j]];
-        const Vec2 end = segments_[run_end_[j] - 1].b;
-        line.x_lo = std::min(line.a.x, end.x);
-        line.x_hi = std::max(line.a.x, end.x);
-        best = std::max(best, segment_max(line));
-      }
-      return best;
+    for (int r = run_of_[lo]; r <= run_of_[hi]; ++r) {
+      const Run& run = runs_[r];
+      double sa, sb;
+      if (run.d.x == 0.0 || !ax.window(run.x_lo, run.x_hi, t_end, sa, sb)) continue;
+      const double t_star = std::clamp((v0.z - v0.x * run.slope) / g, sa, sb);
+      const double x = p0.x + v0.x * t_star;
+      best = std::max(best, z_at(t_star) - (run.a.z + (x - run.a.x) * run.slope));
     }
+    return best;
   }
   auto bound = [&](const Node& nd) {
     if (nd.last <= lo || nd.first > hi) return -kInf;
@@ -550,9 +647,7 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
       if (x_monotone_) {
         best = h;
       } else {
-        consider(t_star, j);
-        consider(sa, -1);
-        consider(sb, -1);
+        visible_max(j, sa, sb);
       }
     }
   }

@@ -102,6 +102,15 @@ class Profile {
     int left = -1, right = -1;
   };
   int build_node(int first, int last);
+  // A maximal straight run of collinear segments [begin, end): one line for every search.
+  struct Run {
+    Vec2 a;              // its first vertex
+    Vec2 d, n;           // unit direction and air-side normal (of its first segment)
+    double length = 0;   // along d from a to its last vertex
+    double x_lo = 0, x_hi = 0;  // horizontal extent
+    double slope = 0;    // dz/dx (0 when vertical: d.x == 0)
+    int begin = 0, end = 0;
+  };
 
   std::vector<Vec2> vertices_;
   std::vector<Segment> segments_;
@@ -109,7 +118,8 @@ class Profile {
   std::vector<Node> nodes_;
   std::vector<int> parents_;  // parent of each node (-1 for the root)
   std::vector<int> leaf_of_;  // leaf node holding each segment
-  std::vector<int> run_begin_, run_end_;  // the straight run [begin, end) holding each segment
+  std::vector<Run> runs_;      // in segment order
+  std::vector<int> run_of_;    // run holding each segment
   double x_min_ = 0, x_max_ = 0;
   int main_direction_ = 1;
   bool x_monotone_ = true;  // every vertical line meets the ground once: no overhangs
