@@ -20,26 +20,25 @@ ObservationTally::ObservationTally(const std::vector<ObservationLine>& lines,
     }
     lines_.push_back(ln);
   }
+  order_.resize(lines_.size());
+  for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<std::uint32_t>(i);
+  std::stable_sort(order_.begin(), order_.end(),
+                   [&](std::uint32_t i, std::uint32_t j) { return lines_[i].x < lines_[j].x; });
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    xs_.push_back(lines_[order_[k]].x);
+    sorted_ = sorted_ && order_[k] == k;
+  }
   seen_.assign(lines_.size(), 0);
-}
-
-void ObservationTally::begin(std::uint64_t trajectory, std::uint32_t block, double mass,
-                             double inertia) {
-  trajectory_ = trajectory;
-  block_ = block;
-  mass_ = mass;
-  inertia_ = inertia;
-  std::fill(seen_.begin(), seen_.end(), 0);
 }
 
 void ObservationTally::record(std::size_t i, double time, geometry::Vec2 pos,
                               geometry::Vec2 vel, double omega, bool sliding) {
   const int direction = vel.x >= 0 ? 1 : -1;
   if (!all_) {
-    if (direction != main_direction_ || seen_[i]) return;
-    seen_[i] = 1;
+    if (direction != main_direction_ || seen_[i] == stamp_) return;
+    seen_[i] = stamp_;
   }
-  Crossing c;
+  Crossing& c = out_->emplace_back();
   c.trajectory = trajectory_;
   c.line = static_cast<std::uint32_t>(i);
   c.block = block_;
@@ -60,21 +59,26 @@ void ObservationTally::record(std::size_t i, double time, geometry::Vec2 pos,
     const auto g = profile_->ground_below(pos.x, pos.z);
     c.height = g ? pos.z - g->z : 0.0;
   }
-  out_->push_back(c);
 }
 
-void ObservationTally::flight(geometry::Vec2 p0, geometry::Vec2 v0, double omega, double t0,
-                              double tau, double g) {
-  if (v0.x == 0.0) return;  // a vertical drop crosses no vertical line
-  const double x1 = p0.x + v0.x * tau;
-  for (std::size_t i = 0; i < lines_.size(); ++i) {
-    const double xc = lines_[i].x;
-    // Half-open (0, tau]: a crossing at an arc's end is not counted again by the next piece.
-    if (v0.x > 0 ? (xc <= p0.x || xc > x1) : (xc >= p0.x || xc < x1)) continue;
-    const double t = (xc - p0.x) / v0.x;
-    record(i, t0 + t, {xc, p0.z + v0.z * t - 0.5 * g * t * t}, {v0.x, v0.z - g * t}, omega,
-           false);
+void ObservationTally::flight_crossing(std::size_t i, geometry::Vec2 p0, geometry::Vec2 v0,
+                                       double omega, double t0, double g) {
+  const double xc = lines_[i].x;
+  const double t = (xc - p0.x) / v0.x;
+  record(i, t0 + t, {xc, p0.z + v0.z * t - 0.5 * g * t * t}, {v0.x, v0.z - g * t}, omega, false);
+}
+
+void ObservationTally::flight_crossings(std::size_t a, std::size_t b, geometry::Vec2 p0,
+                                        geometry::Vec2 v0, double omega, double t0, double g) {
+  // Crossings are written in line order, whatever the direction of travel.
+  if (sorted_) {
+    for (std::size_t k = a; k < b; ++k) flight_crossing(k, p0, v0, omega, t0, g);
+    return;
   }
+  scratch_.assign(order_.begin() + static_cast<std::ptrdiff_t>(a),
+                  order_.begin() + static_cast<std::ptrdiff_t>(b));
+  std::sort(scratch_.begin(), scratch_.end());
+  for (std::uint32_t i : scratch_) flight_crossing(i, p0, v0, omega, t0, g);
 }
 
 void ObservationTally::slide(geometry::Vec2 p0, geometry::Vec2 d, double w0, double acc,

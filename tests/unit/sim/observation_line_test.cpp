@@ -1,0 +1,62 @@
+// The observation tally on its own: which lines an arc crosses, in which order they are written
+// (line order, whatever the order of the lines' x), and the first-crossing rule.
+#include <gtest/gtest.h>
+
+#include "pierre/sim/observation_line.hpp"
+#include "support/builders.hpp"
+
+using namespace pierre;
+using namespace pierre::sim;
+using geometry::Vec2;
+
+namespace {
+
+std::vector<std::uint32_t> lines_of(const std::vector<Crossing>& cs) {
+  std::vector<std::uint32_t> out;
+  for (const auto& c : cs) out.push_back(c.line);
+  return out;
+}
+
+const std::vector<ObservationLine> kUnsorted = {{"c", 30}, {"a", 10}, {"b", 20}, {"a2", 10}};
+
+}  // namespace
+
+TEST(ObservationTally, CrossingsAreWrittenInLineOrderForUnsortedLines) {
+  const auto prof = test::make_profile({{0, 0}, {100, 0}});
+  ObservationTally tally(kUnsorted, prof, false);
+  std::vector<Crossing> out;
+  tally.output(&out);
+  tally.begin(7, 1, 100.0, 2.0);
+  tally.flight({0, 5}, {10, 0}, 0.5, 0.0, 3.0, 0.0);  // x from 0 to 30
+  EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  EXPECT_DOUBLE_EQ(out[0].time, 3.0);
+  EXPECT_DOUBLE_EQ(out[1].time, 1.0);
+  EXPECT_DOUBLE_EQ(out[2].height, 5.0);
+  EXPECT_EQ(out[0].trajectory, 7u);
+  // Only the first crossing in the main direction counts, until the next trajectory.
+  tally.flight({0, 5}, {10, 0}, 0.5, 3.0, 3.0, 0.0);
+  tally.flight({30, 5}, {-10, 0}, 0.5, 6.0, 3.0, 0.0);
+  EXPECT_EQ(out.size(), 4u);
+  tally.begin(8, 1, 100.0, 2.0);
+  tally.flight({15, 5}, {10, 0}, 0.5, 0.0, 0.5, 0.0);  // x from 15 to 20
+  EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{0, 1, 2, 3, 2}));
+}
+
+TEST(ObservationTally, ArcsAreHalfOpenAndEveryCrossingIsKeptWhenAsked) {
+  const auto prof = test::make_profile({{0, 0}, {100, 0}});
+  ObservationTally tally(kUnsorted, prof, true);
+  std::vector<Crossing> out;
+  tally.output(&out);
+  tally.begin(0, 0, 100.0, 2.0);
+  tally.flight({0, 5}, {10, 0}, 0.0, 0.0, 2.0, 0.0);  // ends on the line at 20: counted
+  tally.flight({20, 5}, {10, 0}, 0.0, 2.0, 1.0, 0.0);  // starts there: not again; reaches 30
+  EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{1, 2, 3, 0}));
+  out.clear();
+  tally.flight({30, 5}, {-10, 0}, 0.0, 3.0, 2.5, 0.0);  // back from 30 (excluded) to 5
+  EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{1, 2, 3}));
+  for (const auto& c : out) EXPECT_EQ(c.direction, -1);
+  out.clear();
+  tally.flight({15, 5}, {0, 3}, 0.0, 0.0, 1.0, 9.81);  // vertical: crosses nothing
+  tally.flight({12, 5}, {1, 0}, 0.0, 0.0, 1.0, 0.0);   // between lines
+  EXPECT_TRUE(out.empty());
+}
