@@ -21,6 +21,8 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
                          const Progress& progress) {
   const TrajectoryModel model(scenario);
   const std::uint64_t total = scenario.trajectory_count();
+  const std::uint32_t throws = scenario.settings.throws;
+  const auto n_blocks = static_cast<std::uint32_t>(scenario.blocks.size());
   const std::uint64_t chunk = std::max<std::uint32_t>(1, options.chunk_size);
   const std::uint64_t n_chunks = (total + chunk - 1) / chunk;
   unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
@@ -49,13 +51,22 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
       ChunkResult res;
       res.first = c * chunk;
       const std::uint64_t end = std::min(total, res.first + chunk);
-      res.trajectories.reserve(end - res.first);
+      res.trajectories.resize(end - res.first);
       tally.output(&res.crossings);
       std::uint64_t n_imp = 0;
+      // The key of trajectory i, stepped along rather than divided out of i every time.
+      TrajectoryKey key = trajectory_key(scenario, res.first);
       for (std::uint64_t i = res.first; i < end; ++i) {
-        res.trajectories.push_back(
-            simulate_trajectory(model, i, tally, options.record_impacts ? &res.impacts : nullptr));
-        n_imp += res.trajectories.back().impacts;
+        TrajectorySummary& t = res.trajectories[i - res.first];
+        simulate_trajectory(model, i, key, tally, options.record_impacts ? &res.impacts : nullptr, t);
+        n_imp += t.impacts;
+        if (++key.throw_index == throws) {
+          key.throw_index = 0;
+          if (++key.block == n_blocks) {
+            key.block = 0;
+            ++key.source;
+          }
+        }
       }
       std::unique_lock lock(mu);
       impacts += n_imp;

@@ -24,8 +24,9 @@ enum class Mode { flight, sliding, stopped };
 // The state of one block and the bookkeeping of its summary.
 class Integrator {
  public:
-  Integrator(const TrajectoryModel& m, std::uint64_t index, ObservationTally& tally,
-             std::vector<ImpactRecord>* impacts, std::vector<Vec2>* path, double path_step)
+  Integrator(const TrajectoryModel& m, std::uint64_t index, TrajectoryKey key,
+             ObservationTally& tally, std::vector<ImpactRecord>* impacts, std::vector<Vec2>* path,
+             double path_step, TrajectorySummary& out)
       : m_(m),
         sc_(m.scenario()),
         profile_(sc_.profile),
@@ -35,10 +36,11 @@ class Integrator {
         impacts_(impacts),
         path_(path),
         path_step_(path_step),
-        rng_(m.random_key(), index) {
-    const TrajectoryKey key = trajectory_key(sc_, index);
+        rng_(m.random_key(), index),
+        blk_(&m.block(key.block)),
+        out_(out) {
     const Source& src = sc_.sources[key.source];
-    blk_ = &m.block(key.block);
+    out_ = TrajectorySummary{};
     out_.trajectory = index;
     out_.source = key.source;
     out_.block = key.block;
@@ -51,7 +53,7 @@ class Integrator {
     out_.start = p_;
   }
 
-  TrajectorySummary run() {
+  void run() {
     start();
     if (path_) path_->push_back(p_);
     while (mode_ != Mode::stopped) {
@@ -64,7 +66,7 @@ class Integrator {
     out_.stop = p_;
     out_.duration = t_;
     out_.impacts = static_cast<std::uint32_t>(impacts_done_);
-    return out_;
+    out_.max_speed = std::sqrt(max_speed2_);
   }
 
  private:
@@ -80,29 +82,33 @@ class Integrator {
     out_.floor_contact = p_;
   }
 
+  // The largest squared speed is kept and its root taken once at the end: sqrt is monotone and
+  // correctly rounded, so sqrt(max v²) is bit for bit max sqrt(v²), the norm of the old code.
   void note_speed(Vec2 v, double omega) {
-    const double e = 0.5 * blk_->mass * dot(v, v) + 0.5 * blk_->inertia * omega * omega;
-    out_.max_speed = std::max(out_.max_speed, norm(v));
+    const double v2 = dot(v, v);
+    const double e = 0.5 * blk_->mass * v2 + 0.5 * blk_->inertia * omega * omega;
+    max_speed2_ = std::max(max_speed2_, v2);
     out_.max_energy = std::max(out_.max_energy, e);
   }
 
   void start() {
     note_speed(v_, omega_);
-    const auto below = profile_.ground_below(p_.x, p_.z);
-    if (below && p_.z > below->z) {  // above the ground: starts in flight
+    // Where the source's blocks start was found once for the run (TrajectoryModel).
+    const TrajectoryModel::SourceStart& st = m_.source_start(out_.source);
+    using Kind = TrajectoryModel::SourceStart::Kind;
+    if (st.kind == Kind::flight) {  // above the ground: starts in flight
       mode_ = Mode::flight;
       dep_ = Departure{};
       return;
     }
-    // On or below the ground: placed on the ground, starts sliding (§3.2.2).
-    const auto top = below ? below : profile_.top_ground(p_.x);
-    if (!top) {
+    if (st.kind == Kind::outside) {
       stop(StopReason::boundary);
       return;
     }
-    p_.z = top->z;
+    // On or below the ground: placed on the ground, starts sliding (§3.2.2).
+    p_.z = st.z;
     out_.start = p_;
-    enter_ground(top->segment, v_);
+    enter_ground(st.segment, v_);
   }
 
   // The block is on segment j at p_ with velocity v (tangential part kept): slide where the
@@ -349,8 +355,9 @@ class Integrator {
   std::vector<Vec2>* path_;
   double path_step_;
   RandomStream rng_;
-  const model::BlockConstants* blk_ = nullptr;
-  TrajectorySummary out_;
+  const model::BlockConstants* blk_;
+  TrajectorySummary& out_;
+  double max_speed2_ = 0;  // the largest squared speed so far (out_.max_speed at the end)
 
   Mode mode_ = Mode::flight;
   Vec2 p_, v_;
@@ -372,13 +379,37 @@ TrajectoryModel::TrajectoryModel(const Scenario& scenario)
       key_(scenario.settings.seed) {
   for (const auto& m : scenario.materials) surfaces_.push_back(law_.surface(m));
   for (const auto& b : scenario.blocks) blocks_.push_back(law_.block(b));
+  const geometry::Profile& profile = scenario.profile;
+  for (const Source& src : scenario.sources) {
+    const Vec2 p = src.position;
+    const auto below = profile.ground_below(p.x, p.z);
+    if (below && p.z > below->z) {
+      starts_.push_back({SourceStart::Kind::flight, 0.0, -1});
+      continue;
+    }
+    const auto top = below ? below : profile.top_ground(p.x);
+    if (!top)
+      starts_.push_back({SourceStart::Kind::outside, 0.0, -1});
+    else
+      starts_.push_back({SourceStart::Kind::ground, top->z, top->segment});
+  }
 }
 
 TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_t index,
                                       ObservationTally& tally,
                                       std::vector<ImpactRecord>* impacts,
                                       std::vector<geometry::Vec2>* path, double path_step) {
-  return Integrator(model, index, tally, impacts, path, path_step).run();
+  TrajectorySummary out;
+  Integrator(model, index, trajectory_key(model.scenario(), index), tally, impacts, path,
+             path_step, out)
+      .run();
+  return out;
+}
+
+void simulate_trajectory(const TrajectoryModel& model, std::uint64_t index, TrajectoryKey key,
+                         ObservationTally& tally, std::vector<ImpactRecord>* impacts,
+                         TrajectorySummary& out) {
+  Integrator(model, index, key, tally, impacts, nullptr, 0.0, out).run();
 }
 
 }  // namespace pierre::sim

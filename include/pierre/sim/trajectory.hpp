@@ -23,12 +23,22 @@ class TrajectoryModel {
   const model::BlockConstants& block(std::size_t i) const { return blocks_[i]; }
   const PhiloxKey& random_key() const { return key_; }
 
+  // Where a source's blocks start (§3.2.2), the same for every trajectory from it: in flight
+  // above the ground, on the ground at (x, z) on `segment`, or outside the profile.
+  struct SourceStart {
+    enum class Kind { flight, ground, outside } kind;
+    double z;     // ground: the elevation the block is placed at
+    int segment;  // ground: the segment it is placed on
+  };
+  const SourceStart& source_start(std::size_t source) const { return starts_[source]; }
+
  private:
   const Scenario* scenario_;
   model::ImpactLaw law_;
   PhiloxKey key_;  // the seed's round keys, shared by every trajectory's stream
   std::vector<model::SurfaceConstants> surfaces_;
   std::vector<model::BlockConstants> blocks_;
+  std::vector<SourceStart> starts_;
 };
 
 // Runs trajectory `index` of the scenario. Crossings go to the tally (which appends to its
@@ -40,5 +50,11 @@ TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_
                                       std::vector<ImpactRecord>* impacts,
                                       std::vector<geometry::Vec2>* path = nullptr,
                                       double path_step = 0.05);
+
+// The same for the runner's loop, which knows the index's key (it steps the key along instead of
+// dividing the index for every trajectory) and writes the summary in place into `out`.
+void simulate_trajectory(const TrajectoryModel& model, std::uint64_t index, TrajectoryKey key,
+                         ObservationTally& tally, std::vector<ImpactRecord>* impacts,
+                         TrajectorySummary& out);
 
 }  // namespace pierre::sim
