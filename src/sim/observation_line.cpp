@@ -28,6 +28,10 @@ ObservationTally::ObservationTally(const std::vector<ObservationLine>& lines,
     xs_.push_back(lines_[order_[k]].x);
     sorted_ = sorted_ && order_[k] == k;
   }
+  if (!xs_.empty()) {
+    x_first_ = xs_.front();
+    x_last_ = xs_.back();
+  }
   seen_.assign(lines_.size(), 0);
 }
 

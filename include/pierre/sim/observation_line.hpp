@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,12 +48,14 @@ class ObservationTally {
     // backwards. The tests are written as negations so that a NaN end counts as before.
     const std::size_t n = xs_.size();
     if (v0.x > 0) {
+      if (p0.x >= x_last_ || x1 < x_first_) return;  // the arc is beside every line
       const std::size_t a = std::upper_bound(xs_.begin(), xs_.end(), p0.x) - xs_.begin();
       if (a == n || xs_[a] > x1) return;
       std::size_t b = a + 1;
       while (b < n && !(xs_[b] > x1)) ++b;
       flight_crossings(a, b, p0, v0, omega, t0, g);
     } else {
+      if (p0.x <= x_first_ || x1 > x_last_) return;
       const std::size_t b = std::lower_bound(xs_.begin(), xs_.end(), p0.x) - xs_.begin();
       if (b == 0 || xs_[b - 1] < x1) return;
       std::size_t a = b - 1;
@@ -82,6 +85,8 @@ class ObservationTally {
   };
   std::vector<Line> lines_;         // in the scenario's order: a crossing's `line` index
   std::vector<double> xs_;          // the lines' x, sorted
+  double x_first_ = std::numeric_limits<double>::infinity();   // xs_ front, +inf when empty
+  double x_last_ = -std::numeric_limits<double>::infinity();   // xs_ back, −inf when empty
   std::vector<std::uint32_t> order_;  // order_[k]: the line whose x is xs_[k]
   bool sorted_ = true;              // the scenario's order is already by x: order_[k] == k
   std::vector<std::uint32_t> scratch_;  // crossed lines of one arc, put back in line order
