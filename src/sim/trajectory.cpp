@@ -17,7 +17,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // A contact this close to a segment end is at the vertex: its neighbour is departed from too.
 constexpr double kVertexSlack = 1e-9;
 
-bool finite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.z); }
+// True when no value is infinite or NaN: x − x is 0 for a finite x and NaN otherwise, so one
+// test of the sum does for all of them.
+template <class... T>
+bool all_finite(T... x) {
+  return std::isfinite(((x - x) + ...));
+}
 
 enum class Mode { flight, sliding, stopped };
 
@@ -38,7 +43,11 @@ class Integrator {
         path_step_(path_step),
         rng_(m.random_key(), index),
         blk_(&m.block(key.block)),
-        out_(out) {
+        out_(out),
+        // 0.5·m is exact, so (0.5·m)·v² is the same number as the 0.5·m·v² it replaces.
+        half_mass_(0.5 * blk_->mass),
+        half_inertia_(0.5 * blk_->inertia),
+        floor_from_(set_.floor_segment < 0 ? std::numeric_limits<int>::max() : set_.floor_segment) {
     const Source& src = sc_.sources[key.source];
     out_ = TrajectorySummary{};
     out_.trajectory = index;
@@ -77,7 +86,7 @@ class Integrator {
 
   // The first contact with the floor (design-checks.md §2: ID), by impact or by sliding.
   void note_floor(int segment) {
-    if (out_.has_floor_contact || set_.floor_segment < 0 || segment < set_.floor_segment) return;
+    if (segment < floor_from_ || out_.has_floor_contact) return;
     out_.has_floor_contact = true;
     out_.floor_contact = p_;
   }
@@ -86,7 +95,7 @@ class Integrator {
   // correctly rounded, so sqrt(max v²) is bit for bit max sqrt(v²), the norm of the old code.
   void note_speed(Vec2 v, double omega) {
     const double v2 = dot(v, v);
-    const double e = 0.5 * blk_->mass * v2 + 0.5 * blk_->inertia * omega * omega;
+    const double e = half_mass_ * v2 + half_inertia_ * omega * omega;
     max_speed2_ = std::max(max_speed2_, v2);
     out_.max_energy = std::max(out_.max_energy, e);
   }
@@ -132,7 +141,7 @@ class Integrator {
   }
 
   void fly() {
-    if (!finite(p_) || !finite(v_) || !std::isfinite(omega_)) return stop(StopReason::numerical);
+    if (!all_finite(p_.x, p_.z, v_.x, v_.z, omega_)) return stop(StopReason::numerical);
     // When the block would leave the profile's horizontal extent, or run out of time.
     double t_leave = kInf;
     if (v_.x > 0) t_leave = (profile_.x_max() - p_.x) / v_.x;
@@ -219,7 +228,7 @@ class Integrator {
     ++impacts_done_;
     v_ = res.v;
     omega_ = res.omega;
-    if (!finite(v_) || !std::isfinite(omega_)) return stop(StopReason::numerical);
+    if (!all_finite(v_.x, v_.z, omega_)) return stop(StopReason::numerical);
     switch (res.result) {
       case model::ImpactResult::stopped:
         return stop(StopReason::energy);
@@ -305,7 +314,7 @@ class Integrator {
     v_ = w_ * s.d;
     t_ += tau;
     note_speed(v_, omega_);
-    if (!finite(p_) || !std::isfinite(w_)) return stop(StopReason::numerical);
+    if (!all_finite(p_.x, p_.z, w_)) return stop(StopReason::numerical);
 
     switch (ev) {
       case Event::time:
@@ -357,6 +366,8 @@ class Integrator {
   RandomStream rng_;
   const model::BlockConstants* blk_;
   TrajectorySummary& out_;
+  const double half_mass_, half_inertia_;
+  const int floor_from_;   // the first floor segment; none: beyond every segment
   double max_speed2_ = 0;  // the largest squared speed so far (out_.max_speed at the end)
 
   Mode mode_ = Mode::flight;
