@@ -334,6 +334,11 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       }
     }
   }
+  return first_contact_search(p0, v0, g, t_max, dep);
+}
+
+[[gnu::noinline]] std::optional<Contact> Profile::first_contact_search(
+    Vec2 p0, Vec2 v0, double g, double t_max, const Departure& dep) const {
   ArcSearch as{p0, v0, g, ArcX(p0.x, v0.x), dep, t_max};
 
   // A straight run of collinear segments is one line for the search; the segment hit is then
@@ -516,6 +521,12 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     const double z = p0.z + v0.z * t_star - 0.5 * g * t_star * t_star;
     return std::max(best, z - (run.a.z + (x - run.a.x) * run.slope));
   }
+  return max_height_search(p0, v0, g, t_end, at_least, seg_a, seg_b);
+}
+
+[[gnu::noinline]] double Profile::max_height_search(Vec2 p0, Vec2 v0, double g, double t_end,
+                                                    double at_least, int seg_a,
+                                                    int seg_b) const {
   auto z_at = [&](double t) { return p0.z + v0.z * t - 0.5 * g * t * t; };
   if (v0.x == 0.0) {  // vertical drop: one ground point under the whole arc
     const double t_apex = std::clamp(v0.z / g, 0.0, t_end);
@@ -528,13 +539,13 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
   // that is changes only at the x of another segment's vertex (a flight crosses no segment).
   // So the part of the arc above segment j is cut at those x; on each piece where j is the
   // ground below (looked up at the piece's middle), h is concave and maximised exactly.
-  std::vector<double> cuts;
   auto visible_max = [&](int j, double sa, double sb) {
+    std::vector<double> cuts;
     const Segment& s = segments_[j];
     const double slope = s.d.z / s.d.x;
     const double xa = p0.x + v0.x * sa, xb = p0.x + v0.x * sb;
     const double lo_x = std::min(xa, xb), hi_x = std::max(xa, xb);
-    cuts.assign({sa, sb});
+    cuts.assign({sa, sb});  // (overhangs only: the allocation never touches the common paths)
     int stack[128];
     int top = 0;
     stack[top++] = 0;

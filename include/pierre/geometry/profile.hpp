@@ -102,6 +102,12 @@ class Profile {
     int left = -1, right = -1;
   };
   int build_node(int first, int last);
+  // The general searches behind the closed-form fast paths of the two queries above (kept
+  // out of line so that the fast paths stay small).
+  std::optional<Contact> first_contact_search(Vec2 p0, Vec2 v0, double g, double t_max,
+                                              const Departure& dep) const;
+  double max_height_search(Vec2 p0, Vec2 v0, double g, double t_end, double at_least, int seg_a,
+                           int seg_b) const;
   // A maximal straight run of collinear segments [begin, end): one line for every search.
   struct Run {
     Vec2 a;              // its first vertex
