@@ -533,6 +533,15 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     const auto ground = ground_below(p0.x, p0.z);
     return std::max(at_least, ground ? z_at(t_apex) - ground->z : 0.0);
   }
+  if (x_monotone_ && seg_a < 0 && seg_b >= 0) {
+    // A flight from a source: the segment under its start (as the contact search finds it).
+    int lo = 0, hi = static_cast<int>(segments_.size()) - 1;
+    while (lo < hi) {
+      const int mid = (lo + hi + 1) / 2;
+      if ((segments_[mid].a.x - p0.x) * main_direction_ <= 0) lo = mid; else hi = mid - 1;
+    }
+    seg_a = lo;
+  }
   double best = std::max(0.0, at_least);
   const ArcX ax(p0.x, v0.x);
   // Under overhangs a segment is the ground below only where nothing lies between, and where
