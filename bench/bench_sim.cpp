@@ -5,7 +5,8 @@
 // For each shipped example, on one thread and on all threads: trajectories/s and impacts/s of
 // the simulation alone (summaries and crossings kept in memory, no text output), the same for
 // a whole `pierre run` with its files written, the bare impact-law loop (random draws +
-// restitution + Goldsmith on a fixed plane: the limit the simulator approaches), the
+// restitution + Goldsmith on a fixed plane: the limit the simulator approaches), the same
+// loop with each impact fed the one before (the latency a serial trajectory cannot hide), the
 // quarry section subdivided into collinear pieces to 10 000 vertices, and peak memory.
 #include <fmt/core.h>
 #include <sys/resource.h>
@@ -82,6 +83,38 @@ double bare_impact_loop(const sim::Scenario& s, long n) {
   return n / dt;
 }
 
+// The same loop with each impact depending on the one before, as in a trajectory: the rebound
+// is turned back onto the plane as the next incoming velocity (a fresh throw when the block
+// stops or slides). The independent loop above lets the processor overlap many impacts; a
+// trajectory cannot, so this rate is the latency-bound limit of one serial trajectory.
+double chained_impact_loop(const sim::Scenario& s, long n) {
+  const model::ImpactLaw law(s.settings.roughness, s.settings.stop_head_factor,
+                             s.settings.gravity);
+  const auto surf = law.surface(s.materials.front());
+  const auto blk = law.block(s.blocks.front());
+  const auto& seg = s.profile.segment(0);
+  sim::RandomStream rng(s.settings.seed, 0);
+  const geometry::Vec2 v_throw = 12.0 * seg.d - 6.0 * seg.n;
+  geometry::Vec2 v = v_throw;
+  double omega = 1.5, sink = 0;
+  const double t0 = now();
+  for (long i = 0; i < n; ++i) {
+    const auto r = law.resolve(v, omega, seg, surf, blk, rng.impact_draws());
+    const double vn = dot(r.v, seg.n);
+    if (r.result != model::ImpactResult::rebound || vn < 0.5) {
+      v = v_throw;
+      omega = 1.5;
+    } else {
+      v = r.v - 2.0 * vn * seg.n;
+      omega = r.omega;
+    }
+    sink += v.x;
+  }
+  const double dt = now() - t0;
+  if (sink == 42.0) fmt::print("");  // keep the loop
+  return n / dt;
+}
+
 double peak_rss_mb() {
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
@@ -117,6 +150,9 @@ int main(int argc, char** argv) {
     const double bare = bare_impact_loop(s, quick ? 2'000'000 : 20'000'000);
     fmt::print("  bare impact-law loop   : {:>10.0f} impacts/s; simulator/bare = {:.2f}\n", bare,
                r1.impacts_per_s / bare);
+    const double chained = chained_impact_loop(s, quick ? 2'000'000 : 20'000'000);
+    fmt::print("  chained impact-law loop: {:>10.0f} impacts/s (each impact waits for the one before); simulator/chained = {:.2f}\n",
+               chained, r1.impacts_per_s / chained);
     if (std::string(c.name) == "quarry-preg") {
       const sim::Scenario fine = subdivided(s, 10000);
       const Rate rf = simulate(fine, 1);
