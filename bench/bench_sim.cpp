@@ -64,18 +64,33 @@ sim::Scenario subdivided(const sim::Scenario& s, std::size_t target_vertices) {
   return out;
 }
 
+// One impact setting for both loops: the first material, the first block, the first segment
+// as a fixed plane, a throw at 12 m/s along it and 6 m/s into it.
+struct PlaneImpact {
+  explicit PlaneImpact(const sim::Scenario& s)
+      : law(s.settings.roughness, s.settings.stop_head_factor, s.settings.gravity),
+        surf(law.surface(s.materials.front())),
+        blk(law.block(s.blocks.front())),
+        seg(s.profile.segment(0)),
+        rng(s.settings.seed, 0),
+        v_throw(12.0 * seg.d - 6.0 * seg.n) {}
+  model::ImpactOutcome resolve(geometry::Vec2 v, double omega) {
+    return law.resolve(v, omega, seg, surf, blk, rng.impact_draws());
+  }
+  model::ImpactLaw law;
+  model::SurfaceConstants surf;
+  model::BlockConstants blk;
+  geometry::Segment seg;
+  sim::RandomStream rng;
+  geometry::Vec2 v_throw;
+};
+
 double bare_impact_loop(const sim::Scenario& s, long n) {
-  const model::ImpactLaw law(s.settings.roughness, s.settings.stop_head_factor,
-                             s.settings.gravity);
-  const auto surf = law.surface(s.materials.front());
-  const auto blk = law.block(s.blocks.front());
-  const auto& seg = s.profile.segment(0);
-  sim::RandomStream rng(s.settings.seed, 0);
+  PlaneImpact pi(s);
   double sink = 0;
-  const geometry::Vec2 v = 12.0 * seg.d - 6.0 * seg.n;
   const double t0 = now();
   for (long i = 0; i < n; ++i) {
-    const auto r = law.resolve(v, 1.5, seg, surf, blk, rng.impact_draws());
+    const auto r = pi.resolve(pi.v_throw, 1.5);
     sink += r.v.x + r.omega;
   }
   const double dt = now() - t0;
@@ -88,24 +103,18 @@ double bare_impact_loop(const sim::Scenario& s, long n) {
 // stops or slides). The independent loop above lets the processor overlap many impacts; a
 // trajectory cannot, so this rate is the latency-bound limit of one serial trajectory.
 double chained_impact_loop(const sim::Scenario& s, long n) {
-  const model::ImpactLaw law(s.settings.roughness, s.settings.stop_head_factor,
-                             s.settings.gravity);
-  const auto surf = law.surface(s.materials.front());
-  const auto blk = law.block(s.blocks.front());
-  const auto& seg = s.profile.segment(0);
-  sim::RandomStream rng(s.settings.seed, 0);
-  const geometry::Vec2 v_throw = 12.0 * seg.d - 6.0 * seg.n;
-  geometry::Vec2 v = v_throw;
+  PlaneImpact pi(s);
+  geometry::Vec2 v = pi.v_throw;
   double omega = 1.5, sink = 0;
   const double t0 = now();
   for (long i = 0; i < n; ++i) {
-    const auto r = law.resolve(v, omega, seg, surf, blk, rng.impact_draws());
-    const double vn = dot(r.v, seg.n);
+    const auto r = pi.resolve(v, omega);
+    const double vn = dot(r.v, pi.seg.n);
     if (r.result != model::ImpactResult::rebound || vn < 0.5) {
-      v = v_throw;
+      v = pi.v_throw;
       omega = 1.5;
     } else {
-      v = r.v - 2.0 * vn * seg.n;
+      v = r.v - 2.0 * vn * pi.seg.n;
       omega = r.omega;
     }
     sink += v.x;
