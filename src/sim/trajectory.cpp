@@ -203,11 +203,8 @@ class Integrator {
     return true;
   }
 
-  // An impact on segment j at p_, `along` metres from its start vertex. Inlined into fly(),
-  // where almost every impact happens (a call there cost ~30 instructions of register saves
-  // and argument moves per impact); the rarer sliding events call the out-of-line copy.
-  [[gnu::noinline]] void impact_from_ground(int j, double along) { impact(j, along); }
-  [[gnu::always_inline]] void impact(int j, double along) {
+  // An impact on segment j at p_, `along` metres from its start vertex.
+  void impact(int j, double along) {
     if (!count_event()) return;
     const Segment& s = profile_.segment(j);
     if (!out_.has_first_impact) {
@@ -327,7 +324,7 @@ class Integrator {
         return;                      // next call decides: stop by friction or restart
       case Event::launch:
         // Forced into flight: the roughness tilts the plane so v_n' = −v sin θ < 0 (§3.2.2).
-        return impact_from_ground(seg_, along_);
+        return impact(seg_, along_);
       case Event::end:
         return vertex(dir);
     }
@@ -346,7 +343,7 @@ class Integrator {
       return;
     }
     if (!count_event()) return;
-    if (turn == VertexTurn::concave) return impact_from_ground(next, dir > 0 ? 0.0 : ns.length);
+    if (turn == VertexTurn::concave) return impact(next, dir > 0 ? 0.0 : ns.length);
     // Convex: a point mass cannot follow the bend, it flies from the vertex. At rest it simply
     // moves on to the next segment.
     if (w_ == 0.0) return enter_ground(next, v_);
