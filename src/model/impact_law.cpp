@@ -37,9 +37,19 @@ BlockConstants ImpactLaw::block(const Block& b) const {
   return c;
 }
 
+ImpactSample ImpactLaw::sample(const ImpactDraws& draws, const BlockConstants& blk) const {
+  ImpactSample smp;
+  smp.x = roughness_.sample(draws.roughness_u, cdf_lo_);  // Eq 3.5 or 3.4
+  smp.f = blk.f_min + blk.f_range * draws.shape_u;        // Eq 3.9
+  smp.r_eff = smp.f * blk.radius;
+  smp.kappa = 1.0 + 2.5 * smp.f * smp.f;
+  smp.level_sign = draws.level_sign;
+  return smp;
+}
+
 ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& seg,
                                  const SurfaceConstants& surf, const BlockConstants& blk,
-                                 const ImpactDraws& draws, ImpactDetail* detail) const {
+                                 const ImpactSample& smp, ImpactDetail* detail) const {
   ImpactOutcome out;
   const Vec2 n = seg.n;
 
@@ -51,12 +61,11 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   else if (seg.d.z != 0.0)
     sign = seg.d.z < 0 ? 1.0 : -1.0;
   else
-    sign = draws.level_sign ? 1.0 : -1.0;
+    sign = smp.level_sign ? 1.0 : -1.0;
   const Vec2 t_hat = sign * seg.d;
 
   // 2. Roughness angle (Eq 3.5 or 3.4, scaled by Eq 6.6): tan θ = θ_scale · X · f_size.
-  const double x = roughness_.sample(draws.roughness_u, cdf_lo_);
-  const double tan_theta = surf.roughness * x * blk.roughness_size_factor;
+  const double tan_theta = surf.roughness * smp.x * blk.roughness_size_factor;
   const double cos_t = 1.0 / std::sqrt(1.0 + tan_theta * tan_theta);
   const double sin_t = tan_theta * cos_t;
 
@@ -67,8 +76,7 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   // 4. Components in the rotated frame; the contact point's speed from spin along t'.
   const double vn = dot(v, n_r);  // < 0 always (model-2d.md §3 step 3)
   const double vt = dot(v, t_r);
-  const double f = blk.f_min + blk.f_range * draws.shape_u;  // Eq 3.9
-  const double r_eff = f * blk.radius;
+  const double r_eff = smp.r_eff;  // Eq 3.9
   const double arm = n_r.z * t_r.x - n_r.x * t_r.z;  // ±1: orientation of t' against ω
   const double u = omega * r_eff * arm;
   const double slip = vt + u;
@@ -79,7 +87,7 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   const double kt = hyperbolic_factor(e_d, surf.a_t);
 
   // 6. Goldsmith with an effective radius (Eq 3.10–3.12 generalised, κ = 1 + 5/2 f²).
-  const double kappa = 1.0 + 2.5 * f * f;
+  const double kappa = smp.kappa;
   const double abs_vn = -vn;
   const double tan_gamma = kt * std::abs(slip) / (kappa * (1.0 + kn) * abs_vn);
   double vt_out, u_out;

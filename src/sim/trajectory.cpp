@@ -43,6 +43,7 @@ class Integrator {
         path_step_(path_step),
         rng_(m.random_key(), index),
         blk_(&m.block(key.block)),
+        next_(m.law().sample(rng_.impact_draws(), *blk_)),
         out_(out),
         // 0.5·m is exact, so (0.5·m)·v² is the same number as the 0.5·m·v² it replaces.
         half_mass_(0.5 * blk_->mass),
@@ -212,7 +213,6 @@ class Integrator {
       out_.first_impact = p_;
     }
     note_floor(j);
-    const auto draws = rng_.impact_draws();
     ImpactRecord* rec = nullptr;  // the TR record, only when asked for
     if (impacts_) {
       rec = &impacts_->emplace_back();
@@ -222,8 +222,11 @@ class Integrator {
       rec->position = p_;
       rec->segment = static_cast<std::uint32_t>(j);
     }
-    const auto res = m_.law().resolve(v_, omega_, s, m_.surface(s.material), *blk_, draws,
+    const auto res = m_.law().resolve(v_, omega_, s, m_.surface(s.material), *blk_, next_,
                                       rec ? &rec->detail : nullptr);
+    // The next impact's sample is made now: it needs only the stream, so the processor can
+    // work it out while the coming flight's contact search waits on its own results.
+    next_ = m_.law().sample(rng_.impact_draws(), *blk_);
     if (rec) rec->result = res.result;
     ++impacts_done_;
     v_ = res.v;
@@ -365,6 +368,7 @@ class Integrator {
   double path_step_;
   RandomStream rng_;
   const model::BlockConstants* blk_;
+  model::ImpactSample next_;  // the random part of the next impact, made ahead
   TrajectorySummary& out_;
   const double half_mass_, half_inertia_;
   const int floor_from_;   // the first floor segment; none: beyond every segment

@@ -35,6 +35,18 @@ struct ImpactDraws {
   bool level_sign = false;   // travel sign when v·d = 0 on level ground
 };
 
+// The random part of one impact made ready before the impact is met: X of the roughness
+// distribution (Eq 3.4/3.5), the shape factor f and what follows from it (Eq 3.9, κ of
+// Eq 3.10–3.12). None of it depends on the block's state, so a trajectory can make the next
+// impact's sample while it is still in flight, off the impact's chain of dependent operations.
+struct ImpactSample {
+  double x = 0.5;          // X, before θ_scale and f_size
+  double f = 1;            // shape factor
+  double r_eff = 0;        // f R, m
+  double kappa = 3.5;      // 1 + 5/2 f²
+  bool level_sign = false;
+};
+
 enum class ImpactResult : unsigned char { rebound, sliding, stopped };
 
 // Everything the thesis's TR file records about one impact (§3.9; model-2d.md §3 step 9).
@@ -64,11 +76,19 @@ class ImpactLaw {
   SurfaceConstants surface(const Material& m) const;
   BlockConstants block(const Block& b) const;
 
+  // The sample one impact of block `blk` takes from its draws.
+  ImpactSample sample(const ImpactDraws& draws, const BlockConstants& blk) const;
+
   // Resolves an impact of a block with velocity v and spin omega on segment `seg`; fills
   // `detail` (the TR record) when it is not null.
   ImpactOutcome resolve(Vec2 v, double omega, const geometry::Segment& seg,
                         const SurfaceConstants& surf, const BlockConstants& blk,
-                        const ImpactDraws& draws, ImpactDetail* detail = nullptr) const;
+                        const ImpactSample& smp, ImpactDetail* detail = nullptr) const;
+  ImpactOutcome resolve(Vec2 v, double omega, const geometry::Segment& seg,
+                        const SurfaceConstants& surf, const BlockConstants& blk,
+                        const ImpactDraws& draws, ImpactDetail* detail = nullptr) const {
+    return resolve(v, omega, seg, surf, blk, sample(draws, blk), detail);
+  }
 
   const RoughnessModel& roughness() const { return roughness_; }
   double gravity() const { return g_; }

@@ -94,7 +94,7 @@ TEST(ImpactLaw, ContainedReboundIsRotatedGoldsmithMatrix) {
   const Vec2 v{8, -6};
   const double omega = 3.0;
   ImpactDetail det;
-  const auto r = law.resolve(v, omega, s, law.surface(m), law.block(b), {0.5, 0.5, false}, &det);
+  const auto r = law.resolve(v, omega, s, law.surface(m), law.block(b), ImpactDraws{0.5, 0.5, false}, &det);
   ASSERT_TRUE(det.contained);
   ASSERT_EQ(r.result, ImpactResult::rebound);
 
@@ -135,7 +135,7 @@ TEST(ImpactLaw, KineticEnergyNeverIncreases) {
     const double omega = -30 + 60 * U(gen);
     const BlockConstants bc = law.block(b);
     const double e_in = 0.5 * bc.mass * dot(v, v) + 0.5 * bc.inertia * omega * omega;
-    const auto r = law.resolve(v, omega, s, law.surface(m), bc, {U(gen), U(gen), U(gen) < 0.5});
+    const auto r = law.resolve(v, omega, s, law.surface(m), bc, ImpactDraws{U(gen), U(gen), U(gen) < 0.5});
     const double e_out = 0.5 * bc.mass * dot(r.v, r.v) + 0.5 * bc.inertia * r.omega * r.omega;
     ASSERT_LE(e_out, e_in * (1 + 1e-12)) << "state " << i;
     ++checked;
@@ -152,7 +152,7 @@ TEST(ImpactLaw, ShallowImpactShowsApparentNormalFactorAboveOne) {
   const double a = 10 * M_PI / 180, speed = 15;
   const Vec2 v{speed * std::cos(a), -speed * std::sin(a)};
   ImpactDetail det;
-  law.resolve(v, 0.0, s, law.surface(m), law.block(b), {0.5, 0.5, false}, &det);
+  law.resolve(v, 0.0, s, law.surface(m), law.block(b), ImpactDraws{0.5, 0.5, false}, &det);
   // By hand (§3): rotated frame n' = cos θ n − sin θ t, t' = cos θ t + sin θ n.
   const double th = 20 * M_PI / 180;
   const double vn = -speed * std::sin(a) * std::cos(th) - speed * std::cos(a) * std::sin(th);
@@ -182,7 +182,7 @@ TEST(ImpactLaw, StopsWhenEnergyHeadBelowQuarterRadius) {
   const Segment s = segment_at(0);
   // A vertical drop with no roughness: rebound v_n⁺ = k_n |v_n|, H = v_n⁺²/2g.
   for (double vin : {0.3, 3.0}) {
-    const auto r = law.resolve({0, -vin}, 0, s, law.surface(m), law.block(b), {0.5, 0.5, false});
+    const auto r = law.resolve({0, -vin}, 0, s, law.surface(m), law.block(b), ImpactDraws{0.5, 0.5, false});
     const double ed = b.radius() * vin * vin;
     const double vout = hyperbolic_factor(ed, hyperbola_constant(5, 0.5)) * vin;
     const bool stops = vout * vout / (2 * g) < 0.25 * b.radius();
