@@ -49,7 +49,20 @@ ImpactSample ImpactLaw::sample(const ImpactDraws& draws, const BlockConstants& b
 
 ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& seg,
                                  const SurfaceConstants& surf, const BlockConstants& blk,
+                                 const ImpactDraws& draws, ImpactDetail* detail) const {
+  return resolve_sampled(v, omega, seg, surf, blk, sample(draws, blk), detail);
+}
+
+ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& seg,
+                                 const SurfaceConstants& surf, const BlockConstants& blk,
                                  const ImpactSample& smp, ImpactDetail* detail) const {
+  return resolve_sampled(v, omega, seg, surf, blk, smp, detail);
+}
+
+// One body for both entry points, inlined into each so that neither pays a call more.
+[[gnu::always_inline]] inline ImpactOutcome ImpactLaw::resolve_sampled(
+    Vec2 v, double omega, const geometry::Segment& seg, const SurfaceConstants& surf,
+    const BlockConstants& blk, const ImpactSample& smp, ImpactDetail* detail) const {
   ImpactOutcome out;
   const Vec2 n = seg.n;
 

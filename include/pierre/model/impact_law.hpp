@@ -86,14 +86,15 @@ class ImpactLaw {
                         const ImpactSample& smp, ImpactDetail* detail = nullptr) const;
   ImpactOutcome resolve(Vec2 v, double omega, const geometry::Segment& seg,
                         const SurfaceConstants& surf, const BlockConstants& blk,
-                        const ImpactDraws& draws, ImpactDetail* detail = nullptr) const {
-    return resolve(v, omega, seg, surf, blk, sample(draws, blk), detail);
-  }
+                        const ImpactDraws& draws, ImpactDetail* detail = nullptr) const;
 
   const RoughnessModel& roughness() const { return roughness_; }
   double gravity() const { return g_; }
 
  private:
+  ImpactOutcome resolve_sampled(Vec2 v, double omega, const geometry::Segment& seg,
+                                const SurfaceConstants& surf, const BlockConstants& blk,
+                                const ImpactSample& smp, ImpactDetail* detail) const;
   RoughnessModel roughness_;
   double stop_head_factor_;
   double g_;
