@@ -34,12 +34,15 @@ struct ChunkResult {
 class ResultSink {
  public:
   virtual ~ResultSink() = default;
+  // Called once before the first chunk with the number of trajectories the run will deliver.
+  virtual void expect(std::uint64_t /*trajectories*/) {}
   virtual void consume(ChunkResult&& chunk) = 0;
 };
 
 // Keeps everything in memory (tests, benchmarks, small runs).
 class ResultCollector : public ResultSink {
  public:
+  void expect(std::uint64_t trajectories) override;
   void consume(ChunkResult&& chunk) override;
   std::vector<TrajectorySummary> trajectories;
   std::vector<Crossing> crossings;
