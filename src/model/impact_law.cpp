@@ -34,6 +34,7 @@ BlockConstants ImpactLaw::block(const Block& b) const {
   c.f_range = b.shape_max - b.shape_min;
   c.roughness_size_factor = roughness_.size_factor(b.diameter());
   c.stop_head = stop_head_factor_ * c.radius;
+  c.stop_energy = c.stop_head * (c.mass * g_);
   return c;
 }
 
@@ -102,14 +103,16 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   // 6. Goldsmith with an effective radius (Eq 3.10–3.12 generalised, κ = 1 + 5/2 f²).
   const double kappa = smp.kappa;
   const double abs_vn = -vn;
-  const double tan_gamma = kt * std::abs(slip) / (kappa * (1.0 + kn) * abs_vn);
+  // Contained when tan φ ≥ tan γ = k_t |slip| / (κ (1 + k_n) |v_n|); multiplied out (the
+  // denominator is positive) so that the branch does not wait for a division.
+  const double p = surf.tan_phi * (1.0 + kn) * abs_vn;  // friction limit of Eq 3.12
+  const bool contained = kappa * p >= kt * std::abs(slip);
   double vt_out, u_out;
-  if (surf.tan_phi >= tan_gamma) {  // contained slip (Eq 3.11)
+  if (contained) {  // contained slip (Eq 3.11)
     vt_out = kt * (vt - slip / kappa);
     u_out = kt * (u - (kappa - 1.0) * slip / kappa);
   } else {  // uncontained slip (Eq 3.12)
     const double sigma = slip > 0 ? 1.0 : -1.0;
-    const double p = surf.tan_phi * (1.0 + kn) * abs_vn;
     vt_out = kt * vt - sigma * p;
     u_out = kt * u - sigma * (kappa - 1.0) * p;
   }
@@ -125,10 +128,11 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
     out.result = ImpactResult::sliding;
   }
 
-  // 8. Stopping criterion (Eq 3.13): energy head after the impact against c_stop R.
+  // 8. Stopping criterion (Eq 3.13): energy head E/(m g) after the impact against c_stop R,
+  // compared as E against m g c_stop R so that the branch does not wait for a division.
   const double energy_out =
       0.5 * blk.mass * dot(v_out, v_out) + 0.5 * blk.inertia * omega_out * omega_out;
-  if (energy_out / (blk.mass * g_) < blk.stop_head) {
+  if (energy_out < blk.stop_energy) {
     out.result = ImpactResult::stopped;
     v_out = {0.0, 0.0};
     omega_out = 0.0;
@@ -139,7 +143,7 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   // 9. The record (§3.9), only when asked for: it costs more than the impact itself.
   if (!detail) return out;
   ImpactDetail& det = *detail;
-  det.contained = surf.tan_phi >= tan_gamma;
+  det.contained = contained;
   const double vn_in_true = dot(v, n), vt_in_true = dot(v, t_hat);
   det.slope_deg = std::atan2(-t_hat.z, std::abs(t_hat.x)) * kDeg;
   det.roughness_deg = std::atan(tan_theta) * kDeg;
