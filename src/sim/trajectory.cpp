@@ -225,8 +225,9 @@ class Integrator {
     const auto res = m_.law().resolve(v_, omega_, s, m_.surface(s.material), *blk_, next_,
                                       rec ? &rec->detail : nullptr);
     // The next impact's sample is made now: it needs only the stream, so the processor can
-    // work it out while the coming flight's contact search waits on its own results.
-    next_ = m_.law().sample(rng_.impact_draws(), *blk_);
+    // work it out while the coming flight's contact search waits on its own results. (Not
+    // after the impact that stops the block, which is most trajectories' last.)
+    if (res.result != model::ImpactResult::stopped) next_ = m_.law().sample(rng_.impact_draws(), *blk_);
     if (rec) rec->result = res.result;
     ++impacts_done_;
     v_ = res.v;
