@@ -47,12 +47,14 @@ design::BarrierSpec spec() {
 }
 
 // Weibull quantile x_p = λ (-ln(1-p))^(1/k) and the asymptotic standard deviation of ln x̂_p
-// for the ML estimate (log-Weibull = Gumbel with b = 1/k: Var = b²/n (1.1087 + 2·0.2570 w +
-// 0.6079 w²), w = ln(-ln(1-p)); Lawless 2003, Table 4.5.1 constants).
+// for the ML estimate (log-Weibull = smallest-extreme-value with b = 1/k: Var = b²/n (1.1087 −
+// 2·0.2570 w + 0.6079 w²), w = ln(-ln(1-p)); Lawless 2003's constants. The covariance of û and
+// b̂ is −0.2570 b²/n: the inverse of the Fisher information, whose off-diagonal is +(1 − γ)/b²,
+// as in tests/unit/stats/bootstrap_weibull_test.cpp.)
 double quantile(double k, double lambda, double p) { return lambda * std::pow(-std::log(1 - p), 1 / k); }
 double log_quantile_sd(double k, double p, std::size_t n) {
   const double w = std::log(-std::log(1 - p)), b = 1 / k;
-  return b * std::sqrt((1.1087 + 2 * 0.2570 * w + 0.6079 * w * w) / static_cast<double>(n));
+  return b * std::sqrt((1.1087 - 2 * 0.2570 * w + 0.6079 * w * w) / static_cast<double>(n));
 }
 
 TEST(BarrierProcedure, FitsRecoverKnownWeibullsWithinSamplingError) {
