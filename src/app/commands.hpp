@@ -11,11 +11,13 @@
 
 namespace pierre::app {
 
-// Exit codes (architecture.md): 0 ran, 1 a check failed, 2 bad input or usage, 3 internal.
+// Exit codes (architecture.md): 0 ran, 1 a check failed, 2 bad input or usage, 3 internal;
+// and the shell's 128 + SIGINT when a run was interrupted (nothing written).
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitCheckFailed = 1;
 inline constexpr int kExitInput = 2;
 inline constexpr int kExitInternal = 3;
+inline constexpr int kExitInterrupted = 130;
 
 class Command {
  public:

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "console.hpp"
 #include "report.hpp"
 #include "pierre/design/quarry_distances.hpp"
@@ -190,7 +191,10 @@ int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& o) {
   const auto used = static_cast<unsigned>(std::clamp<std::uint64_t>(
       o.threads ? o.threads : hw, 1, std::max<std::uint64_t>(1, chunks)));
 
-  // The output folder; a failure from here on leaves nothing behind.
+  // The output folder; a failure from here on leaves nothing behind. Ctrl-C is caught from
+  // before the folder exists, so that it is always taken away again.
+  const InterruptGuard interrupt;
+  opt.stop = interrupt.flag();
   std::unique_ptr<io::OutputFolder> folder;
   try {
     folder = std::make_unique<io::OutputFolder>(o.out);
@@ -215,6 +219,10 @@ int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& o) {
     if (rep.error)
       throw std::runtime_error(fmt::format("writing the results of section \"{}\" failed: {}",
                                            s.spec.name, *rep.error));
+    if (rep.interrupted || interrupt.interrupted()) {
+      bar.finish();
+      return report_interrupted(o.out.c_str());
+    }
     before += s.scenario.trajectory_count();
     inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed});
     seeds.push_back(s.scenario.settings.seed);
@@ -250,6 +258,7 @@ int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& o) {
   report.checks = results.checks;
   add_quarry_report_data(report, loaded, *results.quarry);
   write_report(folder->staged(io::kReportXlsx), report);
+  if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});
   if (!o.quiet) print_results(stdout, stats, seconds, written);
   if (!o.quiet || o.check) {

@@ -17,6 +17,7 @@
 #include "barriers.hpp"
 #include "commands.hpp"
 #include "console.hpp"
+#include "interrupt.hpp"
 #include "quarries.hpp"
 #include "report.hpp"
 #include "pierre/design/run_statistics.hpp"
@@ -111,7 +112,10 @@ class RunCommand final : public Command {
     const auto used = static_cast<unsigned>(std::clamp<std::uint64_t>(
         threads_ ? threads_ : hw, 1, std::max<std::uint64_t>(1, chunks)));
 
-    // 2. The output folder; a failure from here on leaves nothing behind.
+    // 2. The output folder; a failure from here on leaves nothing behind. Ctrl-C is caught from
+    // before the folder exists, so that it is always taken away again.
+    const InterruptGuard interrupt;
+    opt.stop = interrupt.flag();
     std::unique_ptr<io::OutputFolder> folder;
     try {
       folder = std::make_unique<io::OutputFolder>(out_);
@@ -130,6 +134,7 @@ class RunCommand final : public Command {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bar.finish();
     if (rep.error) throw std::runtime_error("writing the results failed: " + *rep.error);
+    if (rep.interrupted || interrupt.interrupted()) return report_interrupted(out_.c_str());
     files.close();
 
     const design::RunStatistics stats = design::run_statistics(sc.lines, files.samples());
@@ -148,6 +153,7 @@ class RunCommand final : public Command {
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
     write_run_report(folder->staged(io::kReportXlsx), loaded, stats, files.samples(),
                      design_results, std::move(first));
+    if (interrupt.interrupted()) return report_interrupted(out_.c_str());
     const auto written = folder->commit({io::kImpactsCsv});
     if (!quiet_) print_results(stdout, stats, seconds, written);
     if (!quiet_ || check_) print_design(stdout, design_results);

@@ -44,14 +44,17 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   bool failed = false;
   std::optional<std::string> error;
 
+  auto stopped = [&] { return options.stop && options.stop->load(std::memory_order_relaxed); };
   auto worker = [&] {
     ObservationTally tally(scenario.lines, scenario.profile, options.all_crossings);
     while (true) {
       std::uint64_t c;
       {
         std::unique_lock lock(mu);
-        cv.wait(lock, [&] { return failed || next_claim < next_deliver + window || next_claim >= n_chunks; });
-        if (failed || next_claim >= n_chunks) return;
+        cv.wait(lock, [&] {
+          return failed || stopped() || next_claim < next_deliver + window || next_claim >= n_chunks;
+        });
+        if (failed || stopped() || next_claim >= n_chunks) return;
         c = next_claim++;
       }
       ChunkResult res;
@@ -102,6 +105,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   rep.trajectories = total;
   rep.impacts = impacts;
   rep.error = error;
+  rep.interrupted = next_deliver < n_chunks && !failed;
   return rep;
 }
 

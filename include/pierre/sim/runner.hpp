@@ -20,6 +20,9 @@ struct RunOptions {
   bool record_impacts = false;   // keep the per-impact records (large)
   bool all_crossings = false;    // every crossing, not only the first in the main direction
   std::uint32_t chunk_size = 512;  // trajectories per unit of work
+  // When set (by another thread, or a signal handler at the edge), no further chunk starts and
+  // the run returns early with RunReport::interrupted.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // One chunk of consecutive trajectories and what they produced, in trajectory order.
@@ -54,6 +57,7 @@ struct RunReport {
   std::uint64_t impacts = 0;
   double seconds = 0;  // wall-clock time of the simulation (measured by the caller's clock)
   std::optional<std::string> error;  // a sink failure, reported instead of thrown across threads
+  bool interrupted = false;  // RunOptions::stop was set before every chunk was delivered
 };
 
 // Called after each delivered chunk with (done, total); from a worker thread, never concurrently.

@@ -1,0 +1,91 @@
+// Ctrl-C during a run: the real `pierre` binary, started in the background and sent SIGINT
+// (or SIGTERM) while it simulates, exits 130 and leaves the output folder as it found it.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/cli_fixture.hpp"
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+const std::string kScenario = PIERRE_TEST_DATA "/small/scenario.toml";
+
+class Interrupt : public pierre::test::PierreCli {
+ protected:
+  // Starts `pierre run` on the small scenario with enough throws to run for a long while,
+  // waits until its staging folder exists (the run is under way), sends `sig`, and returns
+  // the exit status, or -1 when it did not end within 30 s of the signal.
+  int run_and_signal(const fs::path& out, int sig) {
+    const std::string bin = PIERRE_BINARY, err = (dir_ / "stderr.txt").string();
+    std::vector<std::string> args{bin, "run", kScenario, "--out", out.string(),
+                                  "--throws", "5000000", "--threads", "2"};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    const int rc = posix_spawn(&pid, bin.c_str(), &fa, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    if (rc != 0) return -2;
+    const fs::path staging = out / (".pierre-partial-" + std::to_string(pid));
+    for (int i = 0; i < 3000 && !fs::exists(staging); ++i) std::this_thread::sleep_for(10ms);
+    staged_ = fs::exists(staging);
+    std::this_thread::sleep_for(200ms);  // into the simulation
+    ::kill(pid, sig);
+    int status = 0;
+    for (int i = 0; i < 3000; ++i) {
+      if (::waitpid(pid, &status, WNOHANG) == pid)
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      std::this_thread::sleep_for(10ms);
+    }
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+    return -1;
+  }
+  bool staged_ = false;
+};
+
+TEST_F(Interrupt, CtrlCExits130AndRemovesTheFolderItCreated) {
+  const fs::path out = dir_ / "out";
+  const int code = run_and_signal(out, SIGINT);
+  ASSERT_TRUE(staged_) << "the run never started";
+  EXPECT_EQ(code, 130);
+  EXPECT_FALSE(fs::exists(out));
+  const std::string err = pierre::test::slurp(dir_ / "stderr.txt");
+  EXPECT_NE(err.find("interrupted: the run was stopped; nothing was written to " + out.string()),
+            std::string::npos)
+      << err;
+}
+
+TEST_F(Interrupt, SigtermLeavesAnExistingFolderAsItWas) {
+  const fs::path out = dir_ / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "notes.txt") << "mine\n";
+  const int code = run_and_signal(out, SIGTERM);
+  ASSERT_TRUE(staged_) << "the run never started";
+  EXPECT_EQ(code, 130);
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(out)) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"notes.txt"});
+  EXPECT_EQ(pierre::test::slurp(out / "notes.txt"), "mine\n");
+}
+
+}  // namespace
