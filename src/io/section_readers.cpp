@@ -166,6 +166,26 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
                      fmt::format("vertex ({}, {}): {}", v.p.x, v.p.z, is.what),
                      "a profile of distinct, finite vertices that never crosses itself");
   }
+  // The air is on the left of the walking direction (model-2d.md §1), so a slope listed from
+  // its source end but descending towards −x has the air below it: every block would start
+  // "under" it and stop at once. Overhangs are allowed, but not as most of the section.
+  double up = 0, down = 0;
+  for (const auto& seg : profile->segments()) {
+    const double h = seg.x_hi - seg.x_lo;
+    if (seg.n.z > 0) up += h;
+    if (seg.n.z < 0) down += h;
+  }
+  if (down >= up) {
+    const Vertex& v = vs.front();
+    throw InputError(
+        v.file, v.line, v.field,
+        fmt::format("a profile from x = {} to {} m with the air below {:.0f} % of its horizontal "
+                    "length",
+                    vs.front().p.x, vs.back().p.x, up + down > 0 ? 100 * down / (up + down) : 100.0),
+        "the air above the ground: the air is on the left of the walking direction, so list the "
+        "vertices from the source end of a slope that descends towards +x (mirror the x "
+        "coordinates of one that descends towards -x)");
+  }
   return std::move(*profile);
 }
 

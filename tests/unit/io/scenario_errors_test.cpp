@@ -137,6 +137,9 @@ INSTANTIATE_TEST_SUITE_P(
              {}, "s.toml", 10, "profile.points[0]", "crosses itself"},
         Case{"inline_one_vertex", {{9, "points = [[0.0, 10.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points", "1 vertex"},
         Case{"csv_one_vertex", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n\n# c\n0,10,\n"}}, "p.csv", 4, "profile", "1 vertex row"},
+        // a slope listed from its source end but descending towards -x: the air is below it
+        Case{"csv_air_below", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n# mirrored\n20,10,rock\n10,2,rock\n0,0,\n"}}, "p.csv", 3, "x,z", "the air below 100 %"},
+        Case{"inline_air_below", {{9, "points = [[20.0, 10.0, \"rock\"], [0.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "from x = 20 to 0 m"},
         Case{"inline_repeated_vertex", {{9, "points = [[0.0, 10.0, \"rock\"], [0.0, 10.0, \"rock\"], [20.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[1]", "repeats"},
         Case{"profile_file_and_points", {{9, base_lines()[8] + "\n" + kCsvProfile}}, {}, "s.toml", 8, "profile.points", "both file and points"},
         // materials
