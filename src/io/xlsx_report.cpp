@@ -226,6 +226,15 @@ class Report {
   lxw_workbook* wb_;
   const ReportData& d_;
   const ReportTemplate& t_;
+  // The workbook's formats, made on first use and shared by name: libxlsxwriter keeps every
+  // format it is given, so one per cell would bloat the file. `setup` styles a new one.
+  template <class Setup>
+  lxw_format* cached(std::string_view key, Setup&& setup) {
+    if (auto it = formats_.find(key); it != formats_.end()) return it->second;
+    lxw_format* f = add_format();
+    setup(f);
+    return formats_.emplace(std::string(key), f).first->second;
+  }
   std::map<std::string, lxw_format*, std::less<>> formats_;
   std::deque<std::string> strings_;
   std::deque<std::vector<lxw_row_t>> breaks_;  // kept alive until the workbook is written
@@ -234,14 +243,12 @@ class Report {
 // ---- formats ---------------------------------------------------------------------------
 
 lxw_format* Report::number(std::string_view kind, int align) {
-  const std::string key = fmt::format("num.{}.{}", kind, align);
-  if (auto it = formats_.find(key); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_num_format(f, keep(t_.get("formats", kind)));
-  if (align == 1) format_set_align(f, LXW_ALIGN_CENTER);
-  if (align == 2) format_set_align(f, LXW_ALIGN_LEFT);
-  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
-  return formats_[key] = f;
+  return cached(fmt::format("num.{}.{}", kind, align), [&](lxw_format* f) {
+    format_set_num_format(f, keep(t_.get("formats", kind)));
+    if (align == 1) format_set_align(f, LXW_ALIGN_CENTER);
+    if (align == 2) format_set_align(f, LXW_ALIGN_LEFT);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
 }
 
 lxw_format* Report::check_number(const std::string& unit, double v, int align) {
@@ -255,102 +262,90 @@ lxw_format* Report::check_number(const std::string& unit, double v, int align) {
 }
 
 lxw_format* Report::heading() {
-  if (auto it = formats_.find("heading"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_bold(f);
-  format_set_font_color(f, t_.colour("heading_font"));
-  format_set_bg_color(f, t_.colour("heading_fill"));
-  format_set_text_wrap(f);
-  format_set_align(f, LXW_ALIGN_VERTICAL_CENTER);
-  format_set_align(f, LXW_ALIGN_CENTER);
-  format_set_border(f, LXW_BORDER_THIN);
-  format_set_border_color(f, 0xBFBFBF);
-  return formats_["heading"] = f;
+  return cached("heading", [&](lxw_format* f) {
+    format_set_bold(f);
+    format_set_font_color(f, t_.colour("heading_font"));
+    format_set_bg_color(f, t_.colour("heading_fill"));
+    format_set_text_wrap(f);
+    format_set_align(f, LXW_ALIGN_VERTICAL_CENTER);
+    format_set_align(f, LXW_ALIGN_CENTER);
+    format_set_border(f, LXW_BORDER_THIN);
+    format_set_border_color(f, 0xBFBFBF);
+  });
 }
 
 lxw_format* Report::title() {
-  if (auto it = formats_.find("title"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_bold(f);
-  format_set_font_size(f, 16);
-  format_set_font_color(f, t_.colour("title_font"));
-  return formats_["title"] = f;
+  return cached("title", [&](lxw_format* f) {
+    format_set_bold(f);
+    format_set_font_size(f, 16);
+    format_set_font_color(f, t_.colour("title_font"));
+  });
 }
 
 lxw_format* Report::section() {
-  if (auto it = formats_.find("section"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_bold(f);
-  format_set_font_size(f, 12);
-  format_set_font_color(f, t_.colour("title_font"));
-  return formats_["section"] = f;
+  return cached("section", [&](lxw_format* f) {
+    format_set_bold(f);
+    format_set_font_size(f, 12);
+    format_set_font_color(f, t_.colour("title_font"));
+  });
 }
 
 lxw_format* Report::note() {
-  if (auto it = formats_.find("note"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_italic(f);
-  format_set_font_color(f, t_.colour("note_font"));
-  return formats_["note"] = f;
+  return cached("note", [&](lxw_format* f) {
+    format_set_italic(f);
+    format_set_font_color(f, t_.colour("note_font"));
+  });
 }
 
 lxw_format* Report::bold() {
-  if (auto it = formats_.find("bold"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_bold(f);
-  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);  // with the values of a row made taller
-  return formats_["bold"] = f;
+  return cached("bold", [&](lxw_format* f) {
+    format_set_bold(f);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);  // with the values of a row made taller
+  });
 }
 
 lxw_format* Report::wrap() {
-  if (auto it = formats_.find("wrap"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_text_wrap(f);
-  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
-  return formats_["wrap"] = f;
+  return cached("wrap", [&](lxw_format* f) {
+    format_set_text_wrap(f);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
 }
 
 lxw_format* Report::indented() {
-  if (auto it = formats_.find("indented"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_indent(f, 1);
-  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
-  return formats_["indented"] = f;
+  return cached("indented", [&](lxw_format* f) {
+    format_set_indent(f, 1);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
 }
 
 lxw_format* Report::top() {
-  if (auto it = formats_.find("top"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
-  return formats_["top"] = f;
+  return cached("top", [&](lxw_format* f) {
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
 }
 
 lxw_format* Report::centred() {
-  if (auto it = formats_.find("centred"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_align(f, LXW_ALIGN_CENTER);
-  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
-  return formats_["centred"] = f;
+  return cached("centred", [&](lxw_format* f) {
+    format_set_align(f, LXW_ALIGN_CENTER);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
 }
 
 lxw_format* Report::centred_bold() {
-  if (auto it = formats_.find("centred_bold"); it != formats_.end()) return it->second;
-  lxw_format* f = add_format();
-  format_set_bold(f);
-  format_set_align(f, LXW_ALIGN_CENTER);
-  format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
-  return formats_["centred_bold"] = f;
+  return cached("centred_bold", [&](lxw_format* f) {
+    format_set_bold(f);
+    format_set_align(f, LXW_ALIGN_CENTER);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
 }
 
 lxw_format* Report::status_format(std::string_view status) {
-  const std::string key = "status." + std::string(status);
-  if (auto it = formats_.find(key); it != formats_.end()) return it->second;
-  const std::string k = lower(std::string(status));
-  lxw_format* f = add_format();
-  format_set_bold(f);
-  format_set_font_color(f, t_.colour(k + "_font"));
-  format_set_bg_color(f, t_.colour(k + "_fill"));
-  return formats_[key] = f;
+  return cached("status." + std::string(status), [&](lxw_format* f) {
+    const std::string k = lower(std::string(status));
+    format_set_bold(f);
+    format_set_font_color(f, t_.colour(k + "_font"));
+    format_set_bg_color(f, t_.colour(k + "_fill"));
+  });
 }
 
 // ---- cells -----------------------------------------------------------------------------
@@ -1384,13 +1379,11 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
 
 void Report::distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f) {
   if (std::isinf(v) && v > 0) {
-    lxw_format* f2 = formats_.count("centred_wrap") ? formats_["centred_wrap"] : nullptr;
-    if (!f2) {
-      f2 = formats_["centred_wrap"] = add_format();
-      format_set_align(f2, LXW_ALIGN_CENTER);
-      format_set_align(f2, LXW_ALIGN_VERTICAL_TOP);
-      format_set_shrink(f2);  // words in a number column: fit the column, never spill over
-    }
+    lxw_format* f2 = cached("centred_wrap", [](lxw_format* g) {
+      format_set_align(g, LXW_ALIGN_CENTER);
+      format_set_align(g, LXW_ALIGN_VERTICAL_TOP);
+      format_set_shrink(g);  // words in a number column: fit the column, never spill over
+    });
     text(ws, r, c, t_.get("labels", "beyond_profile"), f2);
   } else
     num(ws, r, c, v, f);
@@ -1440,13 +1433,11 @@ Row Report::quarry_summary(lxw_worksheet* ws, Row r) {
   auto avg = [&](const std::string& source, double rd50, double rd95, double rdmax, double id50,
                  double id95, double idmax) {
     const std::string& label = t_.get("titles", "quarry_average");
-    lxw_format* f = formats_.count("bold_wrap") ? formats_["bold_wrap"] : nullptr;
-    if (!f) {
-      f = formats_["bold_wrap"] = add_format();
-      format_set_bold(f);
-      format_set_text_wrap(f);
-      format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
-    }
+    lxw_format* f = cached("bold_wrap", [](lxw_format* g) {
+      format_set_bold(g);
+      format_set_text_wrap(g);
+      format_set_align(g, LXW_ALIGN_VERTICAL_TOP);
+    });
     text(ws, r, 0, label, f);
     fit_row(ws, r, {{&label, 16}});
     text(ws, r, 1, source, centred_bold());
