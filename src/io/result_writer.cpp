@@ -389,6 +389,19 @@ ojson origin_point(const geometry::Vec2& p, design::GeometryOrigin o) {
   return {{"x_m", p.x}, {"z_m", p.z}, {"origin", std::string(design::to_string(o))}};
 }
 
+// Where a section's (or a pooled row's) blocks went (design-checks.md §2): the same counts
+// under the same keys for both.
+template <class Counts>
+void put_counts(ojson& j, const Counts& c) {
+  j["thrown"] = c.thrown;
+  j["reached_floor"] = c.reached_floor;
+  j["not_reached_floor"] = c.not_reached_floor;
+  j["above_toe"] = c.above_toe;
+  j["left_profile"] = c.left_profile;
+  j["left_upslope"] = c.left_upslope;
+  j["abnormal"] = c.abnormal;
+}
+
 ojson quarry_section_json(const design::QuarrySectionResult& s, std::uint64_t seed) {
   const design::QuarryGeometry& g = s.geometry;
   const design::QuarryDistances& d = s.distances;
@@ -404,13 +417,7 @@ ojson quarry_section_json(const design::QuarrySectionResult& s, std::uint64_t se
                    {"floor_segment", g.floor_segment},
                    {"floor_length_m", g.floor_length},
                    {"floor_angle_deg", g.floor_angle_deg}};
-  j["thrown"] = d.thrown;
-  j["reached_floor"] = d.reached_floor;
-  j["not_reached_floor"] = d.not_reached_floor;
-  j["above_toe"] = d.above_toe;
-  j["left_profile"] = d.left_profile;
-  j["left_upslope"] = d.left_upslope;
-  j["abnormal"] = d.abnormal;
+  put_counts(j, d);
   j["danger_zone_m"] = distance(s.danger_zone);
   j["danger_zone_beyond_profile"] = beyond(s.danger_zone);
   j["first_impact_zone_m"] = distance(s.first_impact_zone);
@@ -437,13 +444,7 @@ ojson quarry_row_json(const design::QuarryDesign& q, const design::QuarryRow& r,
                 {"title", first ? first->rules_title : ""},
                 {"source", first ? first->rules_source : ""}};
   j["height_m"] = r.height;
-  j["thrown"] = r.thrown;
-  j["reached_floor"] = r.reached_floor;
-  j["not_reached_floor"] = r.not_reached_floor;
-  j["above_toe"] = r.above_toe;
-  j["left_profile"] = r.left_profile;
-  j["left_upslope"] = r.left_upslope;
-  j["abnormal"] = r.abnormal;
+  put_counts(j, r);
   j["runout"] = distance_statistics_json(r.rd);
   j["first_impact"] = distance_statistics_json(r.id);
   j["duration_s"] = {{"count", r.duration.count}, {"p50", distance(r.duration.p50)},
