@@ -190,6 +190,9 @@ class Report {
   lxw_chart_series* xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc, Col yc,
                  const std::string& name, std::uint32_t colour, float line_width,
                  std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
+  // Filled markers of one colour on a series; with `line_too` false the points stand alone.
+  void markers(lxw_chart_series* s, std::uint8_t type, std::uint8_t size, lxw_color_t colour,
+               bool line_too);
   void insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale = 1,
                     double y_scale = 1);
 
@@ -465,6 +468,23 @@ lxw_chart_series* Report::xy_series(lxw_chart* chart, const std::string& sheet, 
   chart_series_set_line(s, &line);
   chart_series_set_marker_type(s, LXW_CHART_MARKER_NONE);
   return s;
+}
+
+void Report::markers(lxw_chart_series* s, std::uint8_t type, std::uint8_t size,
+                     lxw_color_t colour, bool line_too) {
+  if (!line_too) {
+    lxw_chart_line none{};
+    none.none = LXW_TRUE;
+    chart_series_set_line(s, &none);
+  }
+  chart_series_set_marker_type(s, type);
+  chart_series_set_marker_size(s, size);
+  lxw_chart_fill fill{};
+  fill.color = colour;
+  chart_series_set_marker_fill(s, &fill);
+  lxw_chart_line edge{};
+  edge.color = colour;
+  chart_series_set_marker_line(s, &edge);
 }
 
 void Report::insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale,
@@ -1354,16 +1374,7 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
       lxw_chart_series* s = xy_series(chart, sheet, r0, br - 2, 6, 7, h("profile", "barriers"),
                                       t_.colour("barriers"), 3.5f);
       // Markers at the foot and the top, so that a barrier shows beside a tall slope.
-      {
-        chart_series_set_marker_type(s, LXW_CHART_MARKER_DIAMOND);
-        chart_series_set_marker_size(s, 7);
-        lxw_chart_fill fill{};
-        fill.color = t_.colour("barriers");
-        chart_series_set_marker_fill(s, &fill);
-        lxw_chart_line edge{};
-        edge.color = t_.colour("barriers");
-        chart_series_set_marker_line(s, &edge);
-      }
+      markers(s, LXW_CHART_MARKER_DIAMOND, 7, t_.colour("barriers"), true);
     }
   }
   if (any) {
@@ -1840,17 +1851,7 @@ Row Report::quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, 
     if (ob > r0) {
       lxw_chart_series* s = xy_series(cc, sheet, r0, ob - 1, 6, 7, h("quarry_chart", "observed_cdf"),
                                       t_.colour("observed"), 1.0f);
-      lxw_chart_line none{};
-      none.none = LXW_TRUE;
-      chart_series_set_line(s, &none);
-      chart_series_set_marker_type(s, LXW_CHART_MARKER_CIRCLE);
-      chart_series_set_marker_size(s, 5);
-      lxw_chart_fill fill{};
-      fill.color = t_.colour("observed");
-      chart_series_set_marker_fill(s, &fill);
-      lxw_chart_line edge{};
-      edge.color = t_.colour("observed");
-      chart_series_set_marker_line(s, &edge);
+      markers(s, LXW_CHART_MARKER_CIRCLE, 5, t_.colour("observed"), false);
     }
     axes(cc);
     chart_axis_set_max(cc->y_axis, 1);
@@ -1942,17 +1943,7 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
   if (wr > r0) {
     lxw_chart_series* sr = xy_series(chart, sheet, r0, wr - 1, 10, 11, h("quarry_chart", "work_areas"),
                                      t_.colour("work_areas"), 1.0f);
-    lxw_chart_line none{};
-    none.none = LXW_TRUE;
-    chart_series_set_line(sr, &none);
-    chart_series_set_marker_type(sr, LXW_CHART_MARKER_TRIANGLE);
-    chart_series_set_marker_size(sr, 9);
-    lxw_chart_fill fill{};
-    fill.color = t_.colour("work_areas");
-    chart_series_set_marker_fill(sr, &fill);
-    lxw_chart_line edge{};
-    edge.color = t_.colour("work_areas");
-    chart_series_set_marker_line(sr, &edge);
+    markers(sr, LXW_CHART_MARKER_TRIANGLE, 9, t_.colour("work_areas"), false);
     last = std::max(last, wr);
   }
   if (xmax > xmin) {
