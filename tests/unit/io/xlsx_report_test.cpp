@@ -9,10 +9,8 @@
 // LibreOffice is installed by `tools/bootstrap test`; without `soffice` the tests that need it
 // are skipped with a message (the others still run).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <optional>
@@ -23,120 +21,18 @@
 #include "pierre/io/scenario_reader.hpp"
 #include "pierre/io/xlsx_report.hpp"
 #include "pierre/stats/weibull_fit.hpp"
+#include "support/workbook_reader.hpp"
 #include "test_files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace pierre;
-using pierre::test::read_file;
-using pierre::test::TempDir;
+using namespace pierre::test;
 
 const fs::path kTemplate = PIERRE_SOURCE_DIR "/templates/report.toml";
 const fs::path kRules = PIERRE_SOURCE_DIR "/rules";
 const fs::path kSmall = PIERRE_TEST_DATA "/small/scenario.toml";
-
-// ---- running programs ------------------------------------------------------------------
-
-struct Exec {
-  int status = -1;
-  std::string output;
-};
-
-Exec run(const std::string& command, const fs::path& log) {
-  Exec r;
-  const int s = std::system((command + " > '" + log.string() + "' 2>&1").c_str());
-  r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-  r.output = read_file(log);
-  return r;
-}
-
-bool have(const char* program) {
-  return std::system(("command -v " + std::string(program) + " > /dev/null 2>&1").c_str()) == 0;
-}
-
-// soffice with a private profile (parallel tests must not share one) and a time limit.
-Exec soffice(const std::string& args, const fs::path& work) {
-  const fs::path profile = work / "lo-profile";
-  return run("timeout 120 soffice -env:UserInstallation=file://" + profile.string() +
-                 " --headless --norestore " + args,
-             work / "soffice.log");
-}
-
-// ---- CSV as LibreOffice writes it (text cells quoted, numbers not) ---------------------
-
-struct Field {
-  std::string text;
-  bool quoted = false;
-};
-using Sheet = std::vector<std::vector<Field>>;
-
-Sheet parse_csv(const std::string& s) {
-  Sheet rows(1);
-  rows.back().emplace_back();
-  bool in_quotes = false;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const char c = s[i];
-    Field& f = rows.back().back();
-    if (in_quotes) {
-      if (c == '"' && i + 1 < s.size() && s[i + 1] == '"') {
-        f.text += '"';
-        ++i;
-      } else if (c == '"') {
-        in_quotes = false;
-      } else {
-        f.text += c;
-      }
-    } else if (c == '"') {
-      in_quotes = true;
-      f.quoted = true;
-    } else if (c == ',') {
-      rows.back().emplace_back();
-    } else if (c == '\n') {
-      rows.emplace_back();
-      rows.back().emplace_back();
-    } else if (c != '\r') {
-      f.text += c;
-    }
-  }
-  if (rows.back().size() == 1 && rows.back()[0].text.empty()) rows.pop_back();
-  return rows;
-}
-
-const Field* cell(const Sheet& s, std::size_t r, std::size_t c) {
-  if (r >= s.size() || c >= s[r].size()) return nullptr;
-  return &s[r][c];
-}
-
-// The first row whose column `c` holds `text`.
-std::optional<std::size_t> find_row(const Sheet& s, std::size_t c, const std::string& text,
-                                    std::size_t from = 0) {
-  for (std::size_t r = from; r < s.size(); ++r)
-    if (c < s[r].size() && s[r][c].text == text) return r;
-  return std::nullopt;
-}
-
-// A number cell: unquoted and parsing as a double in full. LibreOffice keeps the % of a
-// percentage format even when it writes raw values ("2.5%" for 0.025).
-std::optional<double> number(const Sheet& s, std::size_t r, std::size_t c) {
-  const Field* f = cell(s, r, c);
-  if (!f || f->quoted || f->text.empty()) return std::nullopt;
-  std::string t = f->text;
-  const bool percent = t.back() == '%';
-  if (percent) t.pop_back();
-  char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
-  if (t.empty() || end != t.c_str() + t.size()) return std::nullopt;
-  return percent ? v / 100 : v;
-}
-
-// A row as text, for failure messages: quoted cells in quotes.
-std::string dump(const Sheet& s, std::size_t r) {
-  std::string out;
-  if (r >= s.size()) return "(no row)";
-  for (const auto& f : s[r]) out += (f.quoted ? "\"" + f.text + "\"" : f.text) + " | ";
-  return out;
-}
 
 // ---- the report data -------------------------------------------------------------------
 
@@ -309,29 +205,6 @@ std::unique_ptr<Fixture> make_fixture(int crossings = 400, int trajectories = 30
     d.sample_paths.push_back(path);
   }
   return f;
-}
-
-std::vector<std::string> zip_list(const fs::path& xlsx, const fs::path& work) {
-  const Exec r = run("unzip -Z1 '" + xlsx.string() + "'", work / "unzip.log");
-  std::vector<std::string> names;
-  std::size_t p = 0;
-  while (p < r.output.size()) {
-    auto e = r.output.find('\n', p);
-    if (e == std::string::npos) e = r.output.size();
-    names.push_back(r.output.substr(p, e - p));
-    p = e + 1;
-  }
-  return names;
-}
-
-std::string zip_entry(const fs::path& xlsx, const std::string& entry, const fs::path& work) {
-  return run("unzip -p '" + xlsx.string() + "' '" + entry + "'", work / "entry.log").output;
-}
-
-std::size_t occurrences(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
 }
 
 // ---- tests -----------------------------------------------------------------------------
