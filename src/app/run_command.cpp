@@ -48,7 +48,7 @@ class RunCommand final : public Command {
         ->required();
     c->add_option("--out,-o", out_, "Output folder (created when missing)")->required();
     seed_opt_ = c->add_option("--seed", seed_, "Seed, an integer >= 0 (overrides simulation.seed)")
-                    ->check(CLI::NonNegativeNumber);
+                    ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max()));
     c->add_option("--threads", threads_, "Worker threads (0: every hardware thread)")
         ->check(CLI::Range(0u, 4096u));
     throws_opt_ = c->add_option("--throws", throws_, "Throws per block and source (overrides simulation.throws)")

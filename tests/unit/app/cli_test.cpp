@@ -170,6 +170,9 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_FALSE(r.err.empty()) << args;
   }
   EXPECT_FALSE(fs::exists(dir_ / "x"));
+  // The range is said in whole numbers (not as 1.8e308 written out in full).
+  EXPECT_NE(pierre(run + " --seed -1").err.find("Value -1 not in range 0 to 9223372036854775807"),
+            std::string::npos);
 }
 
 TEST_F(Cli, SameSeedSameFiles) {
