@@ -1,7 +1,8 @@
-// Ctrl-C (SIGINT) and SIGTERM during a run. The first one asks the simulation to stop after
-// the chunks under way; the command then discards its staging folder, so nothing half-written
-// is left in the output folder, and exits with kExitInterrupted. A second one ends the program
-// at once (the handler is reset after the first).
+// Ctrl-C (SIGINT), SIGTERM and SIGHUP (the terminal closed) during a run. The first one asks
+// the simulation to stop after the chunks under way; the command then discards its staging
+// folder, so nothing half-written is left in the output folder, and exits with
+// kExitInterrupted. A second one of the same kind ends the program at once (its handler is
+// reset after the first).
 #pragma once
 
 #include <atomic>

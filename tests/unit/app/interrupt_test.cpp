@@ -1,5 +1,5 @@
 // Ctrl-C during a run: the real `pierre` binary, started in the background and sent SIGINT
-// (or SIGTERM) while it simulates, exits 130 and leaves the output folder as it found it.
+// (or SIGTERM, SIGHUP) while it simulates, exits 130 and leaves the output folder as it found it.
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -63,16 +63,18 @@ class Interrupt : public pierre::test::PierreCli {
   bool staged_ = false;
 };
 
-TEST_F(Interrupt, CtrlCExits130AndRemovesTheFolderItCreated) {
-  const fs::path out = dir_ / "out";
-  const int code = run_and_signal(out, SIGINT);
-  ASSERT_TRUE(staged_) << "the run never started";
-  EXPECT_EQ(code, 130);
-  EXPECT_FALSE(fs::exists(out));
-  const std::string err = pierre::test::slurp(dir_ / "stderr.txt");
-  EXPECT_NE(err.find("interrupted: the run was stopped; nothing was written to " + out.string()),
-            std::string::npos)
-      << err;
+TEST_F(Interrupt, CtrlCOrAHangUpExits130AndRemovesTheFolderItCreated) {
+  for (const int sig : {SIGINT, SIGHUP}) {
+    const fs::path out = dir_ / ("out-" + std::to_string(sig));
+    const int code = run_and_signal(out, sig);
+    ASSERT_TRUE(staged_) << "the run never started";
+    EXPECT_EQ(code, 130) << sig;
+    EXPECT_FALSE(fs::exists(out)) << sig;
+    const std::string err = pierre::test::slurp(dir_ / "stderr.txt");
+    EXPECT_NE(err.find("interrupted: the run was stopped; nothing was written to " + out.string()),
+              std::string::npos)
+        << err;
+  }
 }
 
 TEST_F(Interrupt, SigtermLeavesAnExistingFolderAsItWas) {
