@@ -22,17 +22,21 @@ void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
   constexpr int width = 30;
   const int filled = static_cast<int>(frac * width);
   const auto eta_s = static_cast<long>(std::lround(eta));
-  fmt::print(stderr, "\r[{}{}] {:5.1f}%  {:.0f} trajectories/s  ETA {}:{:02d}:{:02d} ",
-             std::string(static_cast<std::size_t>(filled), '#'),
-             std::string(static_cast<std::size_t>(width - filled), ' '), 100.0 * frac, rate,
-             eta_s / 3600, (eta_s / 60) % 60, eta_s % 60);
+  // fputs, not fmt::print: a write to a terminal that has gone away fails (EIO), and fmt would
+  // throw from a worker thread, which ends the program without cleaning up.
+  std::fputs(fmt::format("\r[{}{}] {:5.1f}%  {:.0f} trajectories/s  ETA {}:{:02d}:{:02d} ",
+                         std::string(static_cast<std::size_t>(filled), '#'),
+                         std::string(static_cast<std::size_t>(width - filled), ' '), 100.0 * frac,
+                         rate, eta_s / 3600, (eta_s / 60) % 60, eta_s % 60)
+                 .c_str(),
+             stderr);
   std::fflush(stderr);
   drawn_ = true;
 }
 
 void ProgressBar::finish() {
   if (!drawn_) return;
-  fmt::print(stderr, "\r{}\r", std::string(79, ' '));
+  std::fputs(("\r" + std::string(79, ' ') + "\r").c_str(), stderr);  // never throws
   std::fflush(stderr);
   drawn_ = false;
 }

@@ -26,9 +26,14 @@ InterruptGuard::InterruptGuard() {
   sa.sa_handler = on_interrupt;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESETHAND;  // a second signal takes the default action: the program ends
-  sigaction(SIGINT, &sa, &g_old_int);
-  sigaction(SIGTERM, &sa, &g_old_term);
-  sigaction(SIGHUP, &sa, &g_old_hup);  // the terminal closed under a run
+  // A signal ignored when pierre started stays ignored (nohup, a background job of a script).
+  auto take = [&](int sig, struct sigaction* old) {
+    sigaction(sig, nullptr, old);
+    if (old->sa_handler != SIG_IGN) sigaction(sig, &sa, nullptr);
+  };
+  take(SIGINT, &g_old_int);
+  take(SIGTERM, &g_old_term);
+  take(SIGHUP, &g_old_hup);  // the terminal closed under a run
 }
 
 InterruptGuard::~InterruptGuard() {
@@ -43,7 +48,9 @@ bool InterruptGuard::interrupted() const { return g_interrupted.load(std::memory
 
 int report_interrupted(const char* out) {
   std::fflush(stdout);
-  fmt::print(stderr, "interrupted: the run was stopped; nothing was written to {}\n", out);
+  // fputs: after a hang-up stderr may be gone, and this must not throw.
+  std::fputs(fmt::format("interrupted: the run was stopped; nothing was written to {}\n", out).c_str(),
+             stderr);
   return kExitInterrupted;
 }
 

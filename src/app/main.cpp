@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -53,14 +54,14 @@ int main(int argc, char** argv) {
     return kExitInput;
   } catch (const pierre::io::InputError& e) {
     std::fflush(stdout);
-    fmt::print(stderr, "{}\n", e.what());
+    std::fputs((std::string(e.what()) + "\n").c_str(), stderr);  // fputs never throws
     return kExitInput;
   } catch (const std::exception& e) {
     std::fflush(stdout);
-    fmt::print(stderr, "internal error: {}\n", e.what());
+    std::fputs(("internal error: " + std::string(e.what()) + "\n").c_str(), stderr);
     return kExitInternal;
   } catch (...) {
-    fmt::print(stderr, "internal error: unknown exception\n");
+    std::fputs("internal error: unknown exception\n", stderr);
     return kExitInternal;
   }
 }

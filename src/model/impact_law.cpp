@@ -103,10 +103,14 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   // 6. Goldsmith with an effective radius (Eq 3.10–3.12 generalised, κ = 1 + 5/2 f²).
   const double kappa = smp.kappa;
   const double abs_vn = -vn;
-  // Contained when tan φ ≥ tan γ = k_t |slip| / (κ (1 + k_n) |v_n|); multiplied out (the
-  // denominator is positive) so that the branch does not wait for a division.
+  // Contained when tan φ ≥ tan γ = k_t |slip| / (κ (1 + k_n) |v_n|); multiplied out where the
+  // denominator is positive, so that the branch does not wait for a division. (It is not when
+  // θ = 0 leaves v_n at rounding noise, e.g. a sliding launch on a roughness of 0: there the
+  // quotient decides, as it always did.)
   const double p = surf.tan_phi * (1.0 + kn) * abs_vn;  // friction limit of Eq 3.12
-  const bool contained = kappa * p >= kt * std::abs(slip);
+  const bool contained =
+      abs_vn > 0.0 ? kappa * p >= kt * std::abs(slip)
+                   : surf.tan_phi >= kt * std::abs(slip) / (kappa * (1.0 + kn) * abs_vn);
   double vt_out, u_out;
   if (contained) {  // contained slip (Eq 3.11)
     vt_out = kt * (vt - slip / kappa);
