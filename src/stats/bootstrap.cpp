@@ -17,14 +17,6 @@ namespace {
 
 constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 33;  // ResampleIndexStream's limit
 
-std::vector<double> without_nan(std::span<const double> sample) {
-  std::vector<double> v;
-  v.reserve(sample.size());
-  std::copy_if(sample.begin(), sample.end(), std::back_inserter(v),
-               [](double x) { return !std::isnan(x); });
-  return v;
-}
-
 std::string check_sample(std::size_t n, std::size_t resamples) {
   if (n == 0) return "bootstrap of an empty sample";
   if (n > kMaxValues) return "bootstrap of more than 2^33 values";

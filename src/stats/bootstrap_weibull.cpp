@@ -31,14 +31,6 @@ constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 33;  // ResampleIndexSt
 constexpr std::uint32_t kCountAttempt = 0x80000000u;
 constexpr std::uint32_t kMaxCountTries = 1000;  // PTRS accepts with probability > 0.8 per try
 
-std::vector<double> without_nan(std::span<const double> sample) {
-  std::vector<double> v;
-  v.reserve(sample.size());
-  std::copy_if(sample.begin(), sample.end(), std::back_inserter(v),
-               [](double x) { return !std::isnan(x); });
-  return v;
-}
-
 // a + f (b - a), exact when a == b or f == 0 (as percentile.cpp: an infinite neighbour must
 // not turn a finite answer into NaN).
 double interpolate(double a, double b, double f) {

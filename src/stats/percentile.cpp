@@ -11,14 +11,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::vector<double> without_nan(std::span<const double> sample) {
-  std::vector<double> v;
-  v.reserve(sample.size());
-  std::copy_if(sample.begin(), sample.end(), std::back_inserter(v),
-               [](double x) { return !std::isnan(x); });
-  return v;
-}
-
 // Position h = (n - 1) p / 100 split into whole part and fraction; false for a bad p.
 bool position(std::size_t n, double p, std::size_t& lo, double& frac) {
   if (n == 0 || !(p >= 0.0 && p <= 100.0)) return false;
@@ -65,6 +57,14 @@ std::vector<double> percentiles(std::span<const double> sample, std::span<const 
   out.reserve(ps.size());
   for (double p : ps) out.push_back(percentile_of_sorted(v, p));
   return out;
+}
+
+std::vector<double> without_nan(std::span<const double> sample) {
+  std::vector<double> v;
+  v.reserve(sample.size());
+  std::copy_if(sample.begin(), sample.end(), std::back_inserter(v),
+               [](double x) { return !std::isnan(x); });
+  return v;
 }
 
 }  // namespace pierre::stats

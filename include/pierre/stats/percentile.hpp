@@ -17,6 +17,9 @@
 
 namespace pierre::stats {
 
+// A copy of the sample without its NaN values (missing values), in the same order.
+std::vector<double> without_nan(std::span<const double> sample);
+
 // One percentile in O(n) (std::nth_element on a copy): the input is not reordered.
 double percentile(std::span<const double> sample, double p);
 
