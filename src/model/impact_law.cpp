@@ -33,8 +33,8 @@ BlockConstants ImpactLaw::block(const Block& b) const {
   c.f_min = b.shape_min;
   c.f_range = b.shape_max - b.shape_min;
   c.roughness_size_factor = roughness_.size_factor(b.diameter());
-  c.stop_head = stop_head_factor_ * c.radius;
-  c.stop_energy = c.stop_head * (c.mass * g_);
+  const double stop_head = stop_head_factor_ * c.radius;  // H_stop = c_stop R (Eq 3.13)
+  c.stop_energy = stop_head * (c.mass * g_);
   return c;
 }
 

@@ -25,8 +25,7 @@ struct BlockConstants {
   double mass = 0, radius = 0, inertia = 0;
   double f_min = 1, f_range = 0;
   double roughness_size_factor = 1;  // f_size of Eq 6.6
-  double stop_head = 0;              // H_stop = c_stop R, m
-  double stop_energy = 0;            // m g H_stop, J: the energy below which the block stops
+  double stop_energy = 0;            // m g H_stop with H_stop = c_stop R, J: below it the block stops
 };
 
 // The random numbers one impact uses, all from one draw of the trajectory's stream.
