@@ -33,6 +33,25 @@ using Col = lxw_col_t;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// A drawn trajectory keeps at most this many points: more cannot be seen in a chart, and a
+// block that bounces in place until the impact or time limit records hundreds of thousands,
+// which a few such paths would carry past a sheet's 1 048 576 rows.
+constexpr std::size_t kMaxPathPoints = 2000;
+
+// The points of `path` to draw: repeats of the point before dropped (zero-length steps), then,
+// above kMaxPathPoints, evenly spaced ones from the first to the last.
+std::vector<geometry::Vec2> drawn_points(const std::vector<geometry::Vec2>& path) {
+  std::vector<geometry::Vec2> kept;
+  for (const auto& p : path)
+    if (kept.empty() || p.x != kept.back().x || p.z != kept.back().z) kept.push_back(p);
+  if (kept.size() <= kMaxPathPoints) return kept;
+  std::vector<geometry::Vec2> out;
+  out.reserve(kMaxPathPoints);
+  const std::size_t last = kept.size() - 1;
+  for (std::size_t k = 0; k < kMaxPathPoints; ++k) out.push_back(kept[k * last / (kMaxPathPoints - 1)]);
+  return out;
+}
+
 [[noreturn]] void fail(std::string_view what, lxw_error e) {
   throw std::runtime_error(
       fmt::format("report.xlsx: {}: {}", what, lxw_strerror(e)));
@@ -195,6 +214,10 @@ class Report {
                bool line_too);
   void insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale = 1,
                     double y_scale = 1);
+  // Writes the drawn points of `paths` in columns 2 (x) and 3 (z) from row r0, an empty row
+  // after each path; returns the row after the last one written.
+  Row path_rows(lxw_worksheet* ws, Row r0, const std::vector<std::vector<geometry::Vec2>>& paths,
+                lxw_format* xf);
 
   // -- sheets
   // The sheet of a barrier or a quarry row: the template's sheets.<key> with {name} replaced.
@@ -495,6 +518,20 @@ void Report::insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x
   o.x_offset = 4;
   o.y_offset = 4;
   check(worksheet_insert_chart_opt(ws, at.row, at.col, chart, &o), "worksheet_insert_chart");
+}
+
+Row Report::path_rows(lxw_worksheet* ws, Row r0,
+                     const std::vector<std::vector<geometry::Vec2>>& paths, lxw_format* xf) {
+  Row r = r0;
+  for (const auto& path : paths) {
+    if (path.empty()) continue;
+    for (const auto& p : drawn_points(path)) {
+      num(ws, r, 2, p.x, xf);
+      num(ws, r++, 3, p.z, xf);
+    }
+    ++r;  // an empty row: a gap between paths
+  }
+  return r;
 }
 
 // ---- names -----------------------------------------------------------------------------
@@ -1301,15 +1338,7 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
 
   // Paths first so that the profile is drawn over them.
-  Row pr = r0;
-  for (const auto& path : d_.sample_paths) {
-    if (path.empty()) continue;
-    for (const auto& p : path) {
-      num(ws, pr, 2, p.x, xf);
-      num(ws, pr++, 3, p.z, xf);
-    }
-    ++pr;  // an empty row: a gap between paths
-  }
+  const Row pr = path_rows(ws, r0, d_.sample_paths, xf);
   if (pr > r0) {
     xy_series(chart, sheet, r0, pr - 2, 2, 3, h("profile", "paths"), t_.colour("paths"), 0.75f);
     any = true;
@@ -1892,15 +1921,7 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
   }
   Row last = r0;
   // Paths first, under the profile.
-  Row pr = r0;
-  for (const auto& path : view->paths) {
-    if (path.empty()) continue;
-    for (const auto& p : path) {
-      num(ws, pr, 2, p.x, xf);
-      num(ws, pr++, 3, p.z, xf);
-    }
-    ++pr;
-  }
+  const Row pr = path_rows(ws, r0, view->paths, xf);
   if (pr > r0)
     xy_series(chart, sheet, r0, pr - 2, 2, 3, h("quarry_chart", "paths"), t_.colour("paths"), 0.75f);
   Row vr = r0;

@@ -266,6 +266,53 @@ TEST(XlsxReport, SameInputsSameBytes) {
   EXPECT_EQ(read_file(dir.path() / "a.xlsx"), read_file(dir.path() / "b.xlsx"));
 }
 
+// A block bouncing in place until the impact limit records hundreds of thousands of path
+// points. Four such paths (2.4 million rows unthinned) overflowed the Profile sheet's
+// 1 048 576 rows and the report failed; now each path is drawn with its repeats dropped and
+// at most 2 000 points, the first and last among them.
+TEST(XlsxReport, LongPathsAreThinnedToFitTheSheet) {
+  if (!have("unzip")) GTEST_SKIP() << "unzip not installed (bash tools/bootstrap test installs it)";
+  TempDir dir;
+  auto f = make_fixture();
+  f->data.sample_paths.clear();
+  for (int k = 0; k < 4; ++k) {
+    std::vector<geometry::Vec2> path;
+    for (int i = 0; i < 300'000; ++i) {
+      const geometry::Vec2 p{5.0 + i * 1e-4, 60.0 - (i % 2) * 0.01};
+      path.push_back(p);
+      path.push_back(p);  // a zero-length step: dropped
+    }
+    path.push_back({1000.0 + k, -7.0 - k});  // the end point stays
+    f->data.sample_paths.push_back(path);
+  }
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  ASSERT_NO_THROW(io::write_report(xlsx, f->data, io::load_report_template(kTemplate)));
+
+  // The paths' series spans 4 paths of 2 000 points and a gap row after each but the last.
+  std::string ref;
+  for (const auto& n : zip_list(xlsx, dir.path()))
+    if (n.rfind("xl/charts/chart", 0) == 0) {
+      const std::string xml = zip_entry(xlsx, n, dir.path());
+      const auto at = xml.find("<c:f>Profile!$C$");
+      if (at != std::string::npos) ref = xml.substr(at + 16, xml.find('<', at + 5) - at - 16);
+    }
+  ASSERT_FALSE(ref.empty()) << "no paths series on the Profile chart";
+  const long first = std::stol(ref);
+  const long last = std::stol(ref.substr(ref.rfind('$') + 1));
+  EXPECT_EQ(last - first + 1, 4 * 2000 + 3) << ref;
+
+  // The first point of the first path and the last point of the last one are in the sheet.
+  std::string sheet;
+  for (const auto& n : zip_list(xlsx, dir.path()))
+    if (n.rfind("xl/worksheets/sheet", 0) == 0) {
+      std::string x = zip_entry(xlsx, n, dir.path());
+      if (x.find("<v>1003</v>") != std::string::npos) sheet = std::move(x);
+    }
+  ASSERT_FALSE(sheet.empty()) << "the last path's end point (1003, -10) is not written";
+  EXPECT_NE(sheet.find("<c r=\"C" + std::to_string(first) + "\""), std::string::npos);
+  EXPECT_NE(sheet.find("<v>-10</v>"), std::string::npos);
+}
+
 TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   if (!have("soffice"))
     GTEST_SKIP() << "soffice (LibreOffice) not installed: bash tools/bootstrap test installs "
