@@ -59,7 +59,11 @@ std::vector<std::string> read_material_fields(const TomlTable& t, model::Materia
     set.push_back("tangential_energy_k");
   }
   if (auto v = t.number("roughness")) {
-    t.check("roughness", *v >= 0, "a roughness scale >= 0 (tangent scale)");
+    // θ > 0 is what lifts a block sliding faster than the maximum sliding speed (§3.2.2,
+    // model-2d.md §3 step 3): at 0 it would be launched again and again at one instant.
+    t.check("roughness", *v > 0,
+            "a roughness scale > 0 (tangent scale, typically 0.3-1.5; 0 leaves a block sliding "
+            "faster than max_sliding_speed no way to leave the ground)");
     m.roughness = *v;
     set.push_back("roughness");
   }

@@ -111,6 +111,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"normal_energy_zero", {{12, "normal_energy = 0.0"}}, {}, "s.toml", 12, "materials.rock.normal_energy", "0.0"},
         Case{"tangential_energy_negative", {{13, "tangential_energy = -50.0"}}, {}, "s.toml", 13, "materials.rock.tangential_energy", "-50.0"},
         Case{"roughness_negative", {{14, "roughness = -0.1"}}, {}, "s.toml", 14, "materials.rock.roughness", "-0.1"},
+        Case{"roughness_zero", {{14, "roughness = 0.0"}}, {}, "s.toml", 14, "materials.rock.roughness", "0.0"},
         Case{"throws_zero", {{6, "throws = 0"}}, {}, "s.toml", 6, "simulation.throws", "0"},
         Case{"seed_negative", {{5, "seed = -1"}}, {}, "s.toml", 5, "simulation.seed", "-1"},
         Case{"max_time_zero", {{6, "throws = 2\nmax_time = 0.0"}}, {}, "s.toml", 7, "simulation.max_time", "0.0"},
