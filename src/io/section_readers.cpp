@@ -175,17 +175,21 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
     if (seg.n.z > 0) up += h;
     if (seg.n.z < 0) down += h;
   }
-  if (down >= up) {
-    const Vertex& v = vs.front();
+  const Vertex& v0 = vs.front();
+  if (up + down == 0)
+    throw InputError(v0.file, v0.line, v0.field,
+                     fmt::format("a profile of vertical segments only, at x = {} m", v0.p.x),
+                     "a profile that runs across a horizontal extent (the ground the blocks "
+                     "fall onto and the chainages are measured along)");
+  if (down >= up)
     throw InputError(
-        v.file, v.line, v.field,
+        v0.file, v0.line, v0.field,
         fmt::format("a profile from x = {} to {} m with the air below {:.0f} % of its horizontal "
                     "length",
-                    vs.front().p.x, vs.back().p.x, up + down > 0 ? 100 * down / (up + down) : 100.0),
-        "the air above the ground: the air is on the left of the walking direction, so list the "
-        "vertices from the source end of a slope that descends towards +x (mirror the x "
-        "coordinates of one that descends towards -x)");
-  }
+                    v0.p.x, vs.back().p.x, 100 * down / (up + down)),
+        "the air above most of the ground: the air is on the left of the walking direction, so "
+        "list the vertices from the source end of a slope that descends towards +x (mirror the "
+        "x coordinates of one that descends towards -x)");
   return std::move(*profile);
 }
 
