@@ -85,7 +85,30 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
              cell(s.runout.p95, 0), cell(s.runout.p99, 0), cell(s.runout.max, 0));
   fmt::print(out, "Stop reasons:");
   for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
-  fmt::print(out, "\n\nWritten:\n");
+  fmt::print(out, "\n");
+  // Blocks that did not come to rest or leave the profile: their stop points are where a limit
+  // cut them off, and the runout statistics above include them.
+  for (const auto& r : s.stop_reasons) {
+    if (r.count == 0) continue;
+    const char* what = nullptr;
+    switch (r.reason) {
+      case sim::StopReason::time_limit:
+        what = "simulation.max_time";
+        break;
+      case sim::StopReason::impact_limit:
+        what = "simulation.max_impacts (a block bouncing in place, e.g. on a very small roughness)";
+        break;
+      case sim::StopReason::numerical:
+        what = "a numerical failure (a non-finite value or a lost contact)";
+        break;
+      default:
+        break;
+    }
+    if (what)
+      fmt::print(out, "Note: {} {} cut off by {}, not at rest;\n      their stop points and runouts are where they were cut off.\n",
+                 r.count, r.count == 1 ? "trajectory was" : "trajectories were", what);
+  }
+  fmt::print(out, "\nWritten:\n");
   for (const auto& f : files) fmt::print(out, "  {}\n", f.string());
 }
 
