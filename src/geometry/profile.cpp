@@ -379,7 +379,9 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       if (!as.ax.window(nd.x_lo - kEps, nd.x_hi + kEps, as.t_best, ta, tb)) continue;
       // q(t) = z(t) − chord(x(t)) is a concave quadratic: a contact needs q in [off_lo, off_hi].
       const double q0 = p0.z - nd.icpt - nd.slope * p0.x, q1 = v0.z - nd.slope * v0.x;
-      auto q = [&](double t) { return q0 + q1 * t - 0.5 * g * t * t; };
+      // An endless window (a vertical flight searched without a time limit) ends far below
+      // everything: g > 0. (Evaluated, q(∞) is NaN when q1 ≥ 0 and skipped every node.)
+      auto q = [&](double t) { return t < kInf ? q0 + q1 * t - 0.5 * g * t * t : -kInf; };
       if (std::min(q(ta), q(tb)) > nd.off_hi + kEps) continue;  // lowest at an end
       if (q(std::clamp(q1 / g, ta, tb)) < nd.off_lo - kEps) continue;
       if (nd.straight) {

@@ -149,16 +149,18 @@ class Integrator {
     if (v_.x < 0) t_leave = (profile_.x_min() - p_.x) / v_.x;
     t_leave = std::max(t_leave, 0.0);
     const double t_left = set_.max_time - t_;
-    const double horizon = std::min(t_leave, t_left);
-    const auto contact = profile_.first_contact(p_, v_, g_, horizon, dep_);
+    // A wall that ends the profile stands at x_min or x_max itself, and is met at t_leave: the
+    // search looks a hair (kVertexSlack in x) beyond, so that the block hits it, not leaves.
+    const double t_reach = v_.x != 0 ? t_leave + kVertexSlack / std::abs(v_.x) : kInf;
+    const auto contact = profile_.first_contact(p_, v_, g_, std::min(t_reach, t_left), dep_);
 
     double tau;
     if (contact) {
       tau = contact->t;
     } else if (t_leave <= t_left) {
       tau = t_leave;
-    } else if (profile_.first_contact(p_, v_, g_, kInf, dep_)) {
-      tau = t_left;  // the contact lies beyond the time limit
+    } else if (t_leave < kInf || profile_.first_contact(p_, v_, g_, kInf, dep_)) {
+      tau = t_left;  // the landing or the leaving lies beyond the time limit
     } else {
       return stop(StopReason::numerical);  // no contact and no way out: lost through the ground
     }

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "pierre/geometry/profile.hpp"
 #include "support/builders.hpp"
@@ -22,6 +23,23 @@ TEST(ProfileContact, FreeFallOntoLevelGroundMatchesClosedForm) {
     EXPECT_NEAR(c->t, t, 1e-12 * t);
     const double speed = g * c->t;  // vz at contact
     EXPECT_NEAR(speed, std::sqrt(2 * g * h), 1e-12 * std::sqrt(2 * g * h));
+  }
+}
+
+// Without a time limit (t_max = ∞) the search must still find the ground: a vertical flight's
+// window over every node is then endless, and an endless window's lowest point is −∞. (It was
+// evaluated as NaN when the block rose or fell from rest, and every node was skipped.)
+TEST(ProfileContact, VerticalFlightWithoutATimeLimitFindsTheGround) {
+  const Profile p = make_profile({{0, 100}, {100, 0}, {150, 0}});
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double vz : {0.0, 3.0, -3.0}) {
+    SCOPED_TRACE(vz);
+    const auto c = p.first_contact({0.5, 200}, {0, vz}, g, inf, Departure{});
+    ASSERT_TRUE(c);
+    const double h = 200 - 99.5;  // above the slope z = 100 − x at x = 0.5
+    const double t = (vz + std::sqrt(vz * vz + 2 * g * h)) / g;
+    EXPECT_NEAR(c->t, t, 1e-12 * t);
+    EXPECT_EQ(c->segment, 0);
   }
 }
 

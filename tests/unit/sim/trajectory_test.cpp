@@ -163,6 +163,58 @@ TEST(Trajectory, FlyingOffTheProfileEndsAtTheBoundary) {
   EXPECT_EQ(t.impacts, 0u);
 }
 
+// A vertical wall that ends the profile stands at its x_min or x_max, where a block flying at it
+// would leave the section at the very time it meets the wall: it must hit the wall. (The
+// contact at exactly that time was cut off, and the blocks passed through as `boundary`.)
+TEST(Trajectory, AWallThatEndsTheProfileIsHitNotPassed) {
+  struct Case {
+    std::vector<Vec2> pts;
+    Vec2 source, velocity;
+    double wall_x;
+  };
+  const Case cases[] = {
+      {{{0, 100}, {100, 0}, {110, 0}, {110, 50}}, {100, 2}, {20, 0}, 110.0},  // at the end
+      {{{0, 50}, {0, 0}, {10, 0}, {110, -100}}, {5, 2}, {-20, 0}, 0.0},       // at the start
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.wall_x);
+    Scenario s = test::make_scenario(test::make_profile(c.pts), test::make_material(15, 50, 0.65),
+                                     {test::make_block(1000)}, c.source, 20);
+    s.sources[0].velocity = c.velocity;
+    for (const auto& t : run(s, 1).trajectories) {
+      EXPECT_NE(t.stop_reason, StopReason::boundary) << t.trajectory;
+      ASSERT_TRUE(t.has_first_impact);
+      EXPECT_NEAR(t.first_impact.x, c.wall_x, 1e-9);
+      // The wall is met after τ = distance / speed, at z = 2 − g τ²/2.
+      const double tau = std::abs(c.wall_x - c.source.x) / std::abs(c.velocity.x);
+      EXPECT_NEAR(t.first_impact.z, 2 - 0.5 * 9.81 * tau * tau, 1e-9);
+    }
+  }
+}
+
+// The time limit ends a flight in the air, at the arc's point at that time, whatever lies
+// beyond: a landing (a vertical drop) or leaving the section (a throw back over the top). Both
+// were reported as `numerical`, at the start point.
+TEST(Trajectory, TheTimeLimitStopsAFlightInTheAir) {
+  struct Case {
+    Vec2 source, velocity;
+  };
+  for (const Case& c : {Case{{0.5, 200}, {0, 0}}, Case{{90, 1000}, {-10, 0}}}) {
+    SCOPED_TRACE(c.source.x);
+    Scenario s = test::make_scenario(test::make_profile({{0, 100}, {100, 0}, {150, 0}}),
+                                     test::make_material(15, 50, 0.65), {test::make_block(1000)},
+                                     c.source, 1);
+    s.sources[0].velocity = c.velocity;
+    s.settings.max_time = 2.0;
+    const auto t = run(s, 1).trajectories.at(0);
+    EXPECT_EQ(t.stop_reason, StopReason::time_limit);
+    EXPECT_EQ(t.duration, 2.0);
+    EXPECT_NEAR(t.stop.x, c.source.x + 2 * c.velocity.x, 1e-9);
+    EXPECT_NEAR(t.stop.z, c.source.z - 0.5 * 9.81 * 4, 1e-9);
+    EXPECT_EQ(t.impacts, 0u);
+  }
+}
+
 TEST(Trajectory, PathFollowsTheParabolaAndEndsAtTheStop) {
   auto prof = test::make_profile({{0, 0}, {100, 0}});
   Scenario s = test::make_scenario(std::move(prof), test::make_material(5, 50, 0.3),
