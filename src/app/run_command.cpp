@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -47,8 +48,20 @@ class RunCommand final : public Command {
     c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
         ->required();
     c->add_option("--out,-o", out_, "Output folder (created when missing)")->required();
+    // Checked as text: CLI11 turns a number past the int64 range into its largest value, so
+    // two different seeds would give the same run. (The scenario's seed is a TOML integer,
+    // with the same range.)
     seed_opt_ = c->add_option("--seed", seed_, "Seed, an integer >= 0 (overrides simulation.seed)")
-                    ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max()));
+                    ->check(CLI::Validator(
+                        [](std::string& text) -> std::string {
+                          std::int64_t v = 0;
+                          const char* end = text.data() + text.size();
+                          const auto [p, ec] = std::from_chars(text.data(), end, v);
+                          if (ec == std::errc{} && p == end && v >= 0) return {};
+                          return fmt::format("Value {} is not a whole number from 0 to {}", text,
+                                             std::numeric_limits<std::int64_t>::max());
+                        },
+                        "INT in [0 - 9223372036854775807]"));
     c->add_option("--threads", threads_, "Worker threads (0: every hardware thread)")
         ->check(CLI::Range(0u, 4096u));
     throws_opt_ = c->add_option("--throws", throws_, "Throws per block and source (overrides simulation.throws)")

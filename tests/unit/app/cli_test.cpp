@@ -171,9 +171,17 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_FALSE(r.err.empty()) << args;
   }
   EXPECT_FALSE(fs::exists(dir_ / "x"));
-  // The range is said in whole numbers (not as 1.8e308 written out in full).
-  EXPECT_NE(pierre(run + " --seed -1").err.find("Value -1 not in range 0 to 9223372036854775807"),
-            std::string::npos);
+  // A seed is a whole number from 0 to 2^63 - 1, said in whole numbers (not as 1.8e308 written
+  // out in full); a larger one is refused, not clamped to the largest (two seeds, one run).
+  for (const char* seed : {"-1", "9223372036854775808", "18446744073709551615", "1e3", "12x"}) {
+    const Result r = pierre(run + " --seed " + seed);
+    EXPECT_EQ(r.code, 2) << seed;
+    EXPECT_NE(r.err.find(std::string("Value ") + seed +
+                         " is not a whole number from 0 to 9223372036854775807"),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
 }
 
 TEST_F(Cli, SameSeedSameFiles) {
