@@ -33,8 +33,4 @@ std::unique_ptr<Command> make_run_command();
 std::unique_ptr<Command> make_check_command();  // `run` that exits 1 when a check fails
 std::unique_ptr<Command> make_validate_command();
 
-// The rules folder: `option` (--rules) when given, else $PIERRE_RULES, else the source tree's
-// rules/ compiled in (PIERRE_SOURCE_DIR).
-std::filesystem::path rules_dir(const std::string& option);
-
 }  // namespace pierre::app

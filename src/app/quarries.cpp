@@ -173,7 +173,8 @@ void add_quarry_report_data(io::ReportData& data, const io::LoadedScenario& load
   }
 }
 
-int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& o) {
+int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
+                 const QuarryRunOptions& o) {
   apply_quarry_overrides(loaded, o.seed, o.throws);
   sim::RunOptions opt;
   opt.threads = o.threads;
@@ -257,7 +258,7 @@ int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& o) {
   report.samples = &all;
   report.checks = results.checks;
   add_quarry_report_data(report, loaded, *results.quarry);
-  write_report(folder->staged(io::kReportXlsx), report);
+  io::write_report(folder->staged(io::kReportXlsx), report, layout);
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});
   if (!o.quiet) print_results(stdout, stats, seconds, written);

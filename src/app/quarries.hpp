@@ -14,6 +14,7 @@
 
 #include "pierre/design/quarry_zones.hpp"
 #include "pierre/io/report_data.hpp"
+#include "pierre/io/report_template.hpp"
 #include "pierre/io/scenario_reader.hpp"
 
 namespace pierre::app {
@@ -34,7 +35,8 @@ void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint6
 
 // Runs a quarry scenario (loaded.quarries not empty); returns the exit code: 0, or 1 when
 // `check` and a check line FAILs. Nothing is written in `out` unless every section ran.
-int run_quarries(io::LoadedScenario& loaded, const QuarryRunOptions& options);
+int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
+                 const QuarryRunOptions& options);
 
 // The quarry table (Tables 6.2/6.3: n, RD and ID P50/P95/P99/max in m and /H, calculated beside
 // observed where given, RD_gov and ID_gov) and each section's geometry and zones.

@@ -79,12 +79,8 @@ io::ReportData report_data(const io::LoadedScenario& loaded,
   return d;
 }
 
-void write_report(const std::filesystem::path& file, const io::ReportData& data) {
-  const io::ReportTemplate tpl = io::load_report_template(io::default_report_template());
-  io::write_report(file, data, tpl);
-}
-
-void write_run_report(const std::filesystem::path& file, const io::LoadedScenario& loaded,
+void write_run_report(const std::filesystem::path& file, const io::ReportTemplate& layout,
+                      const io::LoadedScenario& loaded,
                       const design::RunStatistics& statistics, const design::RunSamples& samples,
                       const io::DesignResults& design, FirstRows&& first) {
   io::ReportData d = report_data(loaded, statistics);
@@ -101,7 +97,7 @@ void write_run_report(const std::filesystem::path& file, const io::LoadedScenari
   d.crossings = std::move(first.crossings);
   d.total_trajectories = first.total_trajectories;
   d.total_crossings = first.total_crossings;
-  write_report(file, d);
+  io::write_report(file, d, layout);
 }
 
 }  // namespace pierre::app

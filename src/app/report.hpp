@@ -8,6 +8,7 @@
 
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/report_data.hpp"
+#include "pierre/io/report_template.hpp"
 #include "pierre/io/result_writer.hpp"
 #include "pierre/io/scenario_reader.hpp"
 #include "pierre/sim/runner.hpp"
@@ -40,11 +41,9 @@ std::vector<std::vector<geometry::Vec2>> sample_paths(const sim::Scenario& scena
 // run statistics.
 io::ReportData report_data(const io::LoadedScenario& loaded, const design::RunStatistics& statistics);
 
-// Writes `data` into `file` (atomically) with the template from the templates/ folder.
-void write_report(const std::filesystem::path& file, const io::ReportData& data);
-
-// Writes report.xlsx of a run with barriers into `file`.
-void write_run_report(const std::filesystem::path& file, const io::LoadedScenario& loaded,
+// Writes report.xlsx of a run with barriers into `file`, laid out by `layout`.
+void write_run_report(const std::filesystem::path& file, const io::ReportTemplate& layout,
+                      const io::LoadedScenario& loaded,
                       const design::RunStatistics& statistics, const design::RunSamples& samples,
                       const io::DesignResults& design, FirstRows&& first);
 

@@ -18,6 +18,7 @@
 #include "barriers.hpp"
 #include "commands.hpp"
 #include "console.hpp"
+#include "data_folders.hpp"
 #include "interrupt.hpp"
 #include "quarries.hpp"
 #include "report.hpp"
@@ -98,7 +99,8 @@ class RunCommand final : public Command {
 
   int run() override {
     // 1. Everything about the input is checked before DIR is touched.
-    io::LoadedScenario loaded = io::load_scenario(scenario_, rules_dir(rules_));
+    io::LoadedScenario loaded = io::load_scenario(scenario_, rules_folder(rules_).path);
+    const io::ReportTemplate layout = load_report_layout();  // not found after hours of running
     if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
       QuarryRunOptions q;
       q.out = out_;
@@ -109,7 +111,7 @@ class RunCommand final : public Command {
       q.all_crossings = all_crossings_;
       q.quiet = quiet_;
       q.check = check_;
-      return run_quarries(loaded, q);
+      return run_quarries(loaded, layout, q);
     }
     sim::Scenario& sc = loaded.scenario;
     if (seed_opt_->count()) sc.settings.seed = static_cast<std::uint64_t>(seed_);
@@ -164,7 +166,7 @@ class RunCommand final : public Command {
     info.threads = used;
     info.all_crossings = all_crossings_;
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
-    write_run_report(folder->staged(io::kReportXlsx), loaded, stats, files.samples(),
+    write_run_report(folder->staged(io::kReportXlsx), layout, loaded, stats, files.samples(),
                      design_results, std::move(first));
     if (interrupt.interrupted()) return report_interrupted(out_.c_str());
     const auto written = folder->commit({io::kImpactsCsv});
@@ -189,15 +191,5 @@ class RunCommand final : public Command {
 
 std::unique_ptr<Command> make_run_command() { return std::make_unique<RunCommand>(false); }
 std::unique_ptr<Command> make_check_command() { return std::make_unique<RunCommand>(true); }
-
-std::filesystem::path rules_dir(const std::string& option) {
-  if (!option.empty()) return option;
-  if (const char* env = std::getenv("PIERRE_RULES"); env && *env) return env;
-#ifdef PIERRE_SOURCE_DIR
-  return std::filesystem::path(PIERRE_SOURCE_DIR) / "rules";
-#else
-  return io::default_rules_dir();
-#endif
-}
 
 }  // namespace pierre::app

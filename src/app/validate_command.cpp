@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "data_folders.hpp"
 #include "pierre/io/scenario_reader.hpp"
 
 namespace pierre::app {
@@ -23,7 +24,8 @@ class ValidateCommand final : public Command {
   }
 
   int run() override {
-    const io::LoadedScenario l = io::load_scenario(scenario_, rules_dir(rules_));
+    const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_).path);
+    load_report_layout();  // `run` needs it too: a missing or broken one is said now
     if (!l.quarries.empty()) return print_quarries(l);
     const sim::Scenario& s = l.scenario;
     std::string mats;

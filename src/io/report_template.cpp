@@ -359,18 +359,5 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
   return tpl;
 }
 
-std::filesystem::path default_report_template() {
-  if (const char* env = std::getenv("PIERRE_TEMPLATES"); env && *env)
-    return fs::path(env) / "report.toml";
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    for (const fs::path& cand :
-         {exe.parent_path().parent_path() / "templates",
-          exe.parent_path().parent_path() / "share" / "pierre" / "templates"})
-      if (fs::is_regular_file(cand / "report.toml", ec)) return cand / "report.toml";
-  }
-  return "templates/report.toml";
-}
 
 }  // namespace pierre::io

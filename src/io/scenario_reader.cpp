@@ -536,16 +536,5 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
   return out;
 }
 
-std::filesystem::path default_rules_dir() {
-  if (const char* env = std::getenv("PIERRE_RULES"); env && *env) return env;
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    for (const fs::path& cand : {exe.parent_path().parent_path() / "rules",
-                                 exe.parent_path().parent_path() / "share" / "pierre" / "rules"})
-      if (fs::is_regular_file(cand / "materials.toml", ec)) return cand;
-  }
-  return "rules";
-}
 
 }  // namespace pierre::io

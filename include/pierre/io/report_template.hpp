@@ -58,10 +58,4 @@ const std::vector<std::string>& report_template_colours();
 
 ReportTemplate load_report_template(const std::filesystem::path& file);
 
-// templates/report.toml next to the rules folder's parent when the caller has none:
-// $PIERRE_TEMPLATES/report.toml if set and not empty; else `<executable's folder>/../templates`
-// or `<executable's folder>/../share/pierre/templates` when it holds report.toml; else
-// "templates/report.toml" (relative to the working folder).
-std::filesystem::path default_report_template();
-
 }  // namespace pierre::io

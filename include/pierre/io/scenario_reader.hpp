@@ -51,11 +51,5 @@ struct LoadedScenario {
 LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
                              const std::filesystem::path& rules_dir);
 
-// The rules/ folder when the caller has none: $PIERRE_RULES if set and not empty; else
-// `<executable's folder>/../rules` or `<executable's folder>/../share/pierre/rules` when it holds
-// materials.toml (a build folder inside the source tree, or an installation); else "rules"
-// (relative to the working folder). The io library has no compiled-in source path: the
-// `pierre` program passes its own (--rules, $PIERRE_RULES, then the source tree's rules/).
-std::filesystem::path default_rules_dir();
 
 }  // namespace pierre::io

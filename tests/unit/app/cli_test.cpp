@@ -261,3 +261,44 @@ z = 99.4
 }
 
 }  // namespace
+
+namespace {
+
+// rules/ and templates/ are found the same way: a binary copied out of the build tree finds
+// both (before, it found the rules through the source path compiled in and not the template,
+// and failed only after the whole simulation). A template that cannot be found stops the run
+// before anything is simulated or written, naming the places searched.
+TEST_F(Cli, RulesAndTemplatesAreFoundTheSameWayAndCheckedFirst) {
+  fs::create_directories(dir_ / "bin");
+  fs::copy_file(PIERRE_BINARY, dir_ / "bin" / "pierre");
+  fs::permissions(dir_ / "bin" / "pierre", fs::perms::owner_exec, fs::perm_options::add);
+  const std::string copy = q(dir_ / "bin" / "pierre");
+  const std::string quiet = " >/dev/null 2>&1";
+  EXPECT_EQ(std::system((copy + " run " + kScenario + " --quiet --out " + q(dir_ / "a") + quiet).c_str()), 0);
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "a" / "report.xlsx"));
+
+  fs::create_directories(dir_ / "empty");
+  const std::string env = "PIERRE_TEMPLATES=" + q(dir_ / "empty") + " ";
+  for (const std::string& cmd : {"run " + kScenario + " --out " + q(dir_ / "b"),
+                                "validate " + kScenario}) {
+    const fs::path err = dir_ / "err.txt";
+    const int st = std::system((env + "'" PIERRE_BINARY "' " + cmd + " >/dev/null 2>" + q(err)).c_str());
+    EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 2) << cmd;
+    const std::string msg = slurp(err);
+    EXPECT_NE(msg.find((dir_ / "empty" / "report.toml").string() + ": file: found no such file"),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("$PIERRE_TEMPLATES = " + (dir_ / "empty").string()), std::string::npos) << msg;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "b"));
+
+  // $PIERRE_RULES is where the presets are read from.
+  const fs::path err = dir_ / "err.txt";
+  const int st = std::system(("PIERRE_RULES=" + q(dir_ / "empty") + " '" PIERRE_BINARY "' validate " +
+                              kScenario + " >/dev/null 2>" + q(err)).c_str());
+  EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 2);
+  EXPECT_NE(slurp(err).find((dir_ / "empty" / "materials.toml").string()), std::string::npos)
+      << slurp(err);
+}
+
+}  // namespace

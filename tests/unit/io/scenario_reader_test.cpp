@@ -111,13 +111,6 @@ TEST(ScenarioReader, ProfileCsvWithCommentsAndMaterials) {
   EXPECT_EQ(l.scenario.profile.x_max(), 20.0);
 }
 
-TEST(ScenarioReader, DefaultRulesDirHonoursEnvironment) {
-  ::setenv("PIERRE_RULES", "/some/where", 1);
-  EXPECT_EQ(pierre::io::default_rules_dir(), std::filesystem::path("/some/where"));
-  ::unsetenv("PIERRE_RULES");
-  EXPECT_NE(pierre::io::default_rules_dir(), std::filesystem::path("/some/where"));
-}
-
 TEST(ScenarioReader, TestDataScenarioIsValid) {
   const auto l = load_scenario(PIERRE_TEST_DATA "/small/scenario.toml", kRules);
   EXPECT_EQ(l.scenario.blocks.size(), 2u);

@@ -1,0 +1,70 @@
+#include "data_folders.hpp"
+
+#include <cstdlib>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "pierre/io/input_error.hpp"
+
+namespace pierre::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+DataFolder find(const char* name, const char* env_var, const char* probe) {
+  DataFolder f;
+  if (const char* env = std::getenv(env_var); env && *env) {
+    f.path = env;
+    f.searched.push_back(fmt::format("${} = {}", env_var, env));
+    return f;
+  }
+  f.searched.push_back(fmt::format("${} (not set)", env_var));
+  std::vector<fs::path> candidates;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path prefix = exe.parent_path().parent_path();
+    candidates.push_back(prefix / name);
+    candidates.push_back(prefix / "share" / "pierre" / name);
+  }
+#ifdef PIERRE_SOURCE_DIR
+  candidates.push_back(fs::path(PIERRE_SOURCE_DIR) / name);
+#endif
+  candidates.push_back(name);  // relative to the working folder
+  for (const fs::path& c : candidates) {
+    f.searched.push_back(c.string());
+    if (fs::is_regular_file(c / probe, ec)) {
+      f.path = c;
+      return f;
+    }
+  }
+  f.path = candidates.back();
+  return f;
+}
+
+}  // namespace
+
+DataFolder rules_folder(const std::string& option) {
+  if (!option.empty()) return {option, {"--rules " + option}};
+  return find("rules", "PIERRE_RULES", "materials.toml");
+}
+
+DataFolder templates_folder() { return find("templates", "PIERRE_TEMPLATES", "report.toml"); }
+
+io::ReportTemplate load_report_layout() {
+  const DataFolder f = templates_folder();
+  const fs::path file = f.path / "report.toml";
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) {
+    std::string places;
+    for (const auto& s : f.searched) places += (places.empty() ? "" : ", ") + s;
+    throw io::InputError(file, 0, "file", "no such file",
+                         fmt::format("the report layout report.toml in a templates folder; looked "
+                                     "in {} (set PIERRE_TEMPLATES to the folder that holds it)",
+                                     places));
+  }
+  return io::load_report_template(file);
+}
+
+}  // namespace pierre::app
