@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -353,6 +354,7 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
                                  dotted(table_path, "blocks")));
 
   std::set<std::string> ids;
+  std::map<std::string, std::size_t> made_by;  // every block's id (a row's count expanded): its row
   for (std::size_t i = 0; i < groups.size(); ++i) {
     const BlockGroup& g = groups[i];
     if (!ids.insert(g.id).second)
@@ -361,6 +363,24 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
     for (unsigned k = 1; k <= g.count; ++k) {
       model::Block blk;
       blk.id = g.count == 1 ? g.id : fmt::format("{}.{}", g.id, k);
+      // "b" with count 2 makes b.1 and b.2, which another row may name too.
+      if (const auto [it, fresh] = made_by.emplace(blk.id, i); !fresh) {
+        const std::size_t j = it->second;
+        const BlockGroup& other = groups[j];
+        throw InputError(where[i].file, where[i].line, where[i].field,
+                         g.count > 1 ? fmt::format("\"{}\" with count {}, which gives block {}",
+                                                   g.id, g.count, blk.id)
+                                     : fmt::format("\"{}\"", g.id),
+                         fmt::format("block ids not used by another row: {} on line {}{} "
+                                     "(\"{}\"{}) gives block {} too",
+                                     where[j].field, where[j].line,
+                                     where[j].file == where[i].file
+                                         ? std::string()
+                                         : " of " + where[j].file.string(),
+                                     other.id,
+                                     other.count > 1 ? fmt::format(", count {}", other.count) : "",
+                                     blk.id));
+      }
       blk.mass = g.mass;
       blk.density = g.density;
       blk.shape_min = g.shape_min;

@@ -170,6 +170,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"blocks_csv_truncated", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,volume\na,1.0\nb\n"}}, "b.csv", 3, "volume", "1 of 2"},
         Case{"block_mass_and_volume", {{18, "mass = 100.0\nvolume = 1.0"}}, {}, "s.toml", 17, "blocks.table[0].volume", "both mass and volume"},
         Case{"block_duplicate_id", {{18, "mass = 100.0\nid = \"a\"\n[[blocks.table]]\nid = \"a\"\nmass = 5.0"}}, {}, "s.toml", 21, "blocks.table[1].id", "\"a\""},
+        // "a" with count 2 is blocks a.1 and a.2: a row named a.1 clashes, in either order
+        Case{"block_id_expanded_clash", {{18, "mass = 100.0\nid = \"a\"\ncount = 2\n[[blocks.table]]\nid = \"a.1\"\nmass = 5.0"}}, {}, "s.toml", 22, "blocks.table[1].id", "\"a.1\""},
+        Case{"block_id_expanded_clash_after", {{18, "mass = 100.0\nid = \"a.2\"\n[[blocks.table]]\nid = \"a\"\ncount = 2\nmass = 5.0"}}, {}, "s.toml", 21, "blocks.table[1].id", "\"a\" with count 2, which gives block a.2"},
+        Case{"blocks_csv_expanded_clash", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,mass,count\nb,1000,2\nb.1,2000,1\n"}}, "b.csv", 3, "id", "\"b.1\""},
         // sources and observation lines inside the profile's horizontal extent [0, 20]
         Case{"source_outside", {{21, "x = -1.0"}}, {}, "s.toml", 21, "sources[0].x", "-1.0"},
         Case{"line_outside", {{26, "x = 25.0"}}, {}, "s.toml", 26, "observation_lines[0].x", "25.0"},
