@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "pierre/io/input_error.hpp"
+#include "text_check.hpp"
 
 namespace pierre::io::detail {
 namespace {
@@ -108,6 +109,9 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
     if (cells.size() > t.header.size())
       throw InputError(file, line_no, "row", fmt::format("{} columns", cells.size()),
                        fmt::format("{} columns ({})", t.header.size(), join(t.header)));
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      if (auto bad = control_character_in(cells[c]))
+        throw InputError(file, line_no, t.header[c], *bad, std::string(kNoControlCharacters));
     t.rows.push_back({line_no, std::move(cells)});
   }
   if (t.header.empty())

@@ -17,6 +17,7 @@
 #include "pierre/io/quarry_reader.hpp"
 #include "pierre/io/rule_set_reader.hpp"
 #include "section_readers.hpp"
+#include "text_check.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io {
@@ -137,6 +138,9 @@ std::vector<model::Material> read_materials(const TomlTable& top, Presets& prese
     const toml::node* node = mats->find(name);
     const auto* tbl = node->as_table();
     if (!tbl) mats->fail(name, "a table [materials.NAME]");
+    if (auto bad = detail::control_character_in(name))
+      throw InputError(top.file(), line, top.field("materials"), "a material name: " + *bad,
+                       std::string(detail::kNoControlCharacters));
     TomlTable t(top.file(), *tbl, mats->field(name), line_of(*node),
                 {"preset", "normal_energy", "normal_energy_k", "tangential_energy",
                  "tangential_energy_k", "roughness", "friction_angle"});

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "pierre/io/input_error.hpp"
+#include "text_check.hpp"
 
 namespace pierre::io::detail {
 
@@ -113,6 +114,8 @@ std::optional<std::string> TomlTable::string(std::string_view key) const {
   if (!n) return std::nullopt;
   const auto* s = n->as_string();
   if (!s) fail(key, "a string");
+  if (auto bad = control_character_in(s->get()))
+    throw InputError(file_, line_of(*n), field(key), *bad, std::string(kNoControlCharacters));
   return s->get();
 }
 

@@ -95,6 +95,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"bool_string", {{6, "throws = 2\nsize_reduction = \"yes\""}}, {}, "s.toml", 7, "simulation.size_reduction", "\"yes\""},
         Case{"roughness_string", {{14, "roughness = \"0.5\""}}, {}, "s.toml", 14, "materials.rock.roughness", "\"0.5\""},
         Case{"name_integer", {{2, "name = 5"}}, {}, "s.toml", 2, "scenario.name", "5"},
+        // control characters (the report's XML cannot hold them): TOML text, material names, CSV cells
+        Case{"name_control_character", {{2, "name = \"a\\u0007b\""}}, {}, "s.toml", 2, "scenario.name", "control character U+0007"},
+        Case{"material_name_control_character", {{9, "points = [[0.0, 10.0, \"r\\u001b\"], [20.0, 0.0, \"\"]]"}, {11, "[materials.\"r\\u001b\"]"}}, {}, "s.toml", 11, "materials", "material name: a text with the control character U+001B"},
+        Case{"blocks_csv_control_character", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,mass\na\x7f,100\n"}}, "b.csv", 2, "id", "control character U+007F"},
         Case{"mass_bool", {{18, "mass = true"}}, {}, "s.toml", 18, "blocks.table[0].mass", "true"},
         Case{"point_string", {{9, "points = [[\"0\", 10.0, \"rock\"], [10.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "\"0\""},
         Case{"distribution_name", {{6, "throws = 2\nroughness_distribution = \"normal\""}}, {}, "s.toml", 7, "simulation.roughness_distribution", "\"normal\""},
