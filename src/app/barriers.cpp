@@ -39,11 +39,15 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
     } else {
       design::CheckLine l;
       l.subject = spec.name;
-      l.id = "reach";
-      l.what = "crossings of the line (first in the main direction)";
-      l.value = static_cast<double>(s.speed.size());
-      l.limit = loaded.barrier_rules[i].min_crossings;
-      l.rule = design::rule_reference(loaded.barrier_rules[i], "reach");
+      l.id = o.failed_check;
+      if (o.failed_check == "reach") {
+        l.what = "crossings of the line (first in the main direction)";
+        l.value = static_cast<double>(s.speed.size());
+        l.limit = loaded.barrier_rules[i].min_crossings;
+      } else {
+        l.what = "the barrier's design from the crossings of its line";
+      }
+      l.rule = design::rule_reference(loaded.barrier_rules[i], l.id);
       l.status = design::CheckStatus::fail;
       l.reason = "no design: " + o.error;
       out.checks.push_back(std::move(l));

@@ -9,8 +9,9 @@
 namespace pierre::app {
 
 // Every barrier's design and check lines, in scenario order. A barrier that cannot be designed
-// (fewer than two crossings at its line, no fit) gets no design and a FAIL `reach` line that
-// says why: `pierre check` must not pass a barrier it could not check.
+// gets no design and a FAIL line that says why: `reach` (fewer than two crossings at its line)
+// or `design` (crossings that give no design, e.g. no fit): `pierre check` must not pass a
+// barrier it could not check.
 io::DesignResults compute_barriers(const io::LoadedScenario& loaded, const design::RunSamples& samples);
 
 }  // namespace pierre::app

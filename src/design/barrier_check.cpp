@@ -131,8 +131,10 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   if (d.crossings < 2) {
     out.error = "fewer than two trajectories crossed the line (" + std::to_string(d.crossings) +
                 "): nothing to fit, no design";
+    out.failed_check = "reach";
     return out;
   }
+  out.failed_check = "design";  // from here on the crossings are enough
   const std::vector<double> energy_kJ = scaled(sample.energy, 1e-3);
 
   // Step 2: fits and characteristic values.

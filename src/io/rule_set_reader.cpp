@@ -25,7 +25,8 @@ using detail::TomlTable;
 const char* const kCheckIds[] = {"energy.mel",        "energy.sel", "height.interception",
                                  "elongation",        "exceedance.energy",
                                  "exceedance.height", "fit.v",      "fit.h",
-                                 "fit.E",             "sample.size", "reach"};
+                                 "fit.E",             "sample.size", "reach",
+                                 "design"};
 
 using detail::parse_toml;  // shared with the scenario's section readers
 using detail::read_text;

@@ -201,9 +201,20 @@ TEST(BarrierProcedure, NoDesignWithoutCrossingsOrWithAMissingAnswer) {
   auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 1);
   EXPECT_FALSE(out.design);
   EXPECT_NE(out.error.find("fewer than two"), std::string::npos) << out.error;
+  EXPECT_EQ(out.failed_check, "reach");
   out = design::design_barrier(spec(), test::peila_ronco_2009(), test::etag027(), sample(), std::nullopt, 0, 1);
   EXPECT_FALSE(out.design);
   EXPECT_NE(out.error.find("trajectory"), std::string::npos) << out.error;
+  EXPECT_EQ(out.failed_check, "design");  // enough crossings: the design itself failed
+  // Every block crossing alike: no Weibull fit, no characteristic value. Not a `reach` failure
+  // (there are 50 crossings), which said "50 >= 30 crossings: FAIL".
+  auto same = sample();
+  std::fill(same.speed.begin(), same.speed.end(), 20.0);
+  std::fill(same.height.begin(), same.height.end(), 1.5);
+  out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), same, std::nullopt, 0, 1);
+  EXPECT_FALSE(out.design);
+  EXPECT_EQ(out.failed_check, "design");
+  EXPECT_NE(out.error.find("no characteristic value"), std::string::npos) << out.error;
 }
 
 TEST(BarrierProcedure, BootstrapIsDeterministicPerSeedAndCoversTheEstimate) {
