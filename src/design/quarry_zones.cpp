@@ -65,12 +65,15 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
     switch (c) {
       case QuarryGoverning::percentile:
         g.percentile_h = stats::percentile(sample.normalized, rules.percentile);
-        take(g.percentile_h, "P" + num(rules.percentile) + " " + num(g.percentile_h) +
-                                 (std::isfinite(g.percentile_h) ? " H" : ""));
+        take(g.percentile_h, "P" + num(rules.percentile) +
+                                 (std::isnan(g.percentile_h) ? ": no values"
+                                  : std::isfinite(g.percentile_h) ? " " + num(g.percentile_h) + " H"
+                                                                 : " " + num(g.percentile_h)));
         break;
       case QuarryGoverning::maximum:
         g.maximum_h = st.max_h;
-        take(g.maximum_h, "maximum " + num(g.maximum_h) + (std::isfinite(g.maximum_h) ? " H" : ""));
+        take(g.maximum_h, std::isnan(g.maximum_h) ? std::string("maximum: no values")
+                          : "maximum " + num(g.maximum_h) + (std::isfinite(g.maximum_h) ? " H" : ""));
         break;
       case QuarryGoverning::lognormal:
         if (st.fit) {
@@ -187,7 +190,8 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
     }
     row.rd_gov = governing_distance(row.rd_sample, row.rd, rules);
     row.id_gov = governing_distance(row.id_sample, row.id, rules);
-    if (!row.rd_sample.normalized.empty() &&
+    // A bootstrap of one value has no spread and says nothing: two at least.
+    if (row.rd_sample.normalized.size() >= 2 &&
         std::isfinite(stats::percentile(row.rd_sample.normalized, rules.sample_percentile))) {
       stats::BootstrapOptions opt;
       opt.resamples = rules.sample_resamples;
@@ -305,7 +309,8 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
       }
       if (row.reached_floor < rules.min_reached) {
         warn = true;
-        why += "; only " + std::to_string(row.reached_floor) + " blocks reached the floor (< " +
+        why += "; only " + std::to_string(row.reached_floor) +
+               (row.reached_floor == 1 ? " block" : " blocks") + " reached the floor (< " +
                std::to_string(rules.min_reached) + ")";
       }
       l.status = warn ? CheckStatus::warn : (std::isnan(l.value) ? CheckStatus::not_applicable : CheckStatus::pass);
