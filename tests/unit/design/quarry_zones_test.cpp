@@ -184,6 +184,24 @@ TEST(QuarryZones, SampleSize) {
   ASSERT_TRUE(big.design->rows[0].rd_interval);
 }
 
+// One block: a bootstrap of one value has no spread, so no interval (it said "RD95 known to
+// ±0 %"); and no block on the floor: no ID, said as "no values" (it said "P95 nan").
+TEST(QuarryZones, OneBlockGivesNoIntervalAndAnEmptyIdSaysSo) {
+  const auto one = design_quarry({section("One", {7.0})}, 1);
+  ASSERT_TRUE(one.design);
+  EXPECT_FALSE(one.design->rows[0].rd_interval);
+  const CheckLine* l = find(*one.design, "One", "sample.size");
+  ASSERT_TRUE(l);
+  EXPECT_TRUE(std::isnan(l->value));
+  EXPECT_NE(l->reason.find("no bootstrap interval"), std::string::npos) << l->reason;
+
+  const auto none = design_quarry({section("None", {-3.0, -2.0, -1.0})}, 1);  // all above the toe
+  ASSERT_TRUE(none.design);
+  const auto& row = none.design->rows[0];
+  EXPECT_TRUE(std::isnan(row.id_gov.value_h));
+  EXPECT_EQ(row.id_gov.how, "P95: no values");
+}
+
 TEST(QuarryZones, FitChecks) {
   const auto good = design_quarry({section("Good", lognormal_runouts(1000, 20, 3))}, 1);
   // Two clusters, at about 1 m and 100 m: no log-normal fits that.
