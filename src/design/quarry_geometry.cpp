@@ -129,8 +129,9 @@ stats::Outcome<QuarryGeometry> quarry_geometry(const geometry::Profile& profile,
         break;
       }
     if (!toe)
-      return Result::failure("no toe found: the section does not end in a floor flatter than " +
-          num(in.floor_angle_deg) + "° past the crest (give the toe)");
+      return Result::failure("a section with no toe: it does not end in a floor flatter than " +
+          num(in.floor_angle_deg) + "° past the crest at x = " + num(g.crest.x) +
+          " m (give the toe)");
     g.toe = v[*toe];
     g.toe_vertex = *toe;
     g.toe_origin = GeometryOrigin::found;

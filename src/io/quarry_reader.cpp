@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "csv_table.hpp"
+#include "rule_kind.hpp"
 #include "section_readers.hpp"
 #include "toml_fields.hpp"
 
@@ -250,6 +251,13 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     q.check("rules", !spec.rules.empty(), "a rule set name or path");
     const std::string rules_arg =
         is_path(spec.rules) ? relative_to(file, spec.rules).string() : spec.rules;
+    const fs::path rules_file =
+        is_path(rules_arg) ? fs::path(rules_arg) : rules_dir / (rules_arg + ".toml");
+    if (const auto kind = detail::rule_file_kind(rules_file);
+        kind != detail::RuleFileKind::quarry && kind != detail::RuleFileKind::other)
+      q.fail("rules", fmt::format("a quarry rule set (e.g. \"quarry-thesis-2015\", "
+                                  "\"quarry-conservative\"; {} is {})",
+                                  rules_file.string(), detail::describe(kind)));
     try {
       s.rules = load_quarry_rules(rules_arg, rules_dir);
     } catch (const InputError& e) {

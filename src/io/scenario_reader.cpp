@@ -17,6 +17,7 @@
 #include "pierre/io/quarry_reader.hpp"
 #include "pierre/io/rule_set_reader.hpp"
 #include "section_readers.hpp"
+#include "rule_kind.hpp"
 #include "text_check.hpp"
 #include "toml_fields.hpp"
 
@@ -408,6 +409,11 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
         t.fail("rules", expected + fmt::format(" ({} does not exist)", rules_file.string()));
       t.missing("rules", expected);
     }
+    if (const auto kind = detail::rule_file_kind(rules_file);
+        kind != detail::RuleFileKind::barrier && kind != detail::RuleFileKind::other)
+      t.fail("rules", fmt::format("a barrier rule set ({} is {}; the barrier rule sets of {} are {})",
+                                  rules_file.string(), detail::describe(kind), rules_dir.string(),
+                                  quoted_list(barrier_rule_set_names(rules_dir))));
     auto cached = cache.find(rules_file);
     if (cached == cache.end()) {
       design::BarrierRuleSet rules = load_rule_set_file(rules_file);

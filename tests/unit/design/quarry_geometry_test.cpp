@@ -119,7 +119,7 @@ TEST(QuarryGeometry, Failures) {
   const auto steep = test::make_profile({{0, 20}, {10, 20}, {10, 5}, {30, 5 - 20 * std::tan(0.35)}});
   const auto a = quarry_geometry(steep, {});
   EXPECT_FALSE(a);
-  EXPECT_NE(a.error.find("no toe found"), std::string::npos) << a.error;
+  EXPECT_NE(a.error.find("a section with no toe"), std::string::npos) << a.error;
   const auto p = test::make_profile({{0, 20}, {10, 20}, {10, 0}, {50, 0}});
   QuarryGeometryInput out;
   out.toe_x = 60;

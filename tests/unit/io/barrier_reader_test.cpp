@@ -158,6 +158,13 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"unknown_key", kThesis + "heigth = 3.0\n", {}, "", 32, "barriers[0].heigth", "unknown key", "design_block"},
         Case{"unknown_rules", kHead + "rules = \"etag-2099\"\n", {}, "", 31, "barriers[0].rules",
              "\"etag-2099\"", "thesis-2015"},
+        // a file of rules/ of another kind: said at the scenario's line, not as an unknown key there
+        Case{"rules_materials", kHead + "rules = \"materials\"\n", {}, "", 31, "barriers[0].rules",
+             "\"materials\"", "materials.toml is a materials file"},
+        Case{"rules_quarry", kHead + "rules = \"quarry-thesis-2015\"\n", {}, "", 31, "barriers[0].rules",
+             "\"quarry-thesis-2015\"", "is a quarry rule set"},
+        Case{"rules_classes", kHead + "rules = \"etag027-classes\"\n", {}, "", 31, "barriers[0].rules",
+             "\"etag027-classes\"", "is an energy class table"},
         Case{"rules_path_missing", kHead + "rules = \"nothere.toml\"\n", {}, "", 31, "barriers[0].rules",
              "\"nothere.toml\"", "path"},
         Case{"rules_file_broken", kHead + "rules = \"r.toml\"\n",

@@ -191,7 +191,7 @@ const ErrorCase kErrors[] = {
      8, "quarries[0].profile.points[1]", "\"rock\""},
     {"no_floor", 8,
      "points = [[0.0, 20.0, \"floor\"], [10.0, 20.0, \"face\"], [20.0, 0.0, \"face\"], [40.0, -10.0, \"\"]]",
-     7, "quarries[0].profile", "no toe found"},
+     7, "quarries[0].profile", "a section with no toe"},
     {"toe_outside", 0, "", -1, "", ""},  // placeholder replaced below
     {"mass_negative", 14, "mass = -1.0", 14, "quarries[0].blocks.table[0].mass", "-1.0"},
     {"source_outside", 21, "x = 95.0", 21, "quarries[0].sources[0].x", "95.0"},
@@ -200,6 +200,7 @@ const ErrorCase kErrors[] = {
     {"observed_order", 32, "runout = { p50 = 10.5, p95 = 9.0, max = 17.0 }", 32,
      "quarries[0].observed.runout.p95", "9.0"},
     {"rules_unknown", 4, "rules = \"no-such-rules\"", 4, "quarries[0].rules", "no-such-rules"},
+    {"rules_barrier", 4, "rules = \"thesis-2015\"", 4, "quarries[0].rules", "thesis-2015"},
     {"duplicate_name", 0, "\n[[quarries]]\nname = \"Preg 1\"\n", 36, "quarries[1].name", "Preg 1"},
 };
 
