@@ -116,6 +116,9 @@ namespace {
 
 std::string g(double v, int width) {
   if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
+  // Four significant digits, but a whole number of kJ or m up to a million stays one (a MEL
+  // of 10 000 kJ printed as 1e+04 reads as a typo).
+  if (std::abs(v) >= 1e4 && std::abs(v) < 1e6) return fmt::format("{:>{}.0f}", v, width);
   return fmt::format("{:>{}.4g}", v, width);
 }
 
