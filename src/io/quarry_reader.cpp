@@ -328,6 +328,18 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
                fmt::format("the rule set of the other sections of group \"{}\" (\"{}\")",
                            out[i].spec.group, out[j].rules.name));
       }
+  // A report row is a lone section or a group: a group may not take the name of a section
+  // outside it, or two rows would both be called so.
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (std::size_t j = 0; j < out.size(); ++j)
+      if (!out[i].spec.group.empty() && out[i].spec.group == out[j].spec.name &&
+          out[j].spec.group != out[i].spec.group) {
+        const toml::node& node = *a->get(i);
+        const TomlTable q(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node), {});
+        q.fail("group", fmt::format("a group name that no section outside the group has "
+                                    "(quarries[{}] is named \"{}\")",
+                                    j, out[j].spec.name));
+      }
   return out;
 }
 

@@ -222,6 +222,20 @@ TEST(QuarryReader, GroupWithDifferentRuleSets) {
   EXPECT_NE(e.expected().find("quarry-thesis-2015"), std::string::npos) << e.what();
 }
 
+// A report row is a lone section or a group: a group named as a section outside it would
+// make two rows of one name.
+TEST(QuarryReader, GroupNamedAsASectionOutsideIt) {
+  std::string other = section_with(3, "group = \"Other\"");
+  other.replace(other.find("name = \"Preg 1\""), 15, "name = \"Preg\"");
+  const std::string text = kSection + "\n" + other;
+  const InputError e = error_of(text);
+  EXPECT_EQ(e.field(), "quarries[0].group") << e.what();
+  EXPECT_EQ(e.found(), "\"Preg\"") << e.what();
+  // A section named as its own group is one row, and fine.
+  test::TempDir dir;
+  EXPECT_EQ(read(dir, kSection + "\n" + section_with(2, "name = \"Preg\"")).size(), 2u);
+}
+
 // ---- rule sets ----
 
 TEST(QuarryRules, ShippedRuleSets) {
