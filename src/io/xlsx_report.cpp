@@ -562,7 +562,8 @@ std::optional<std::uint32_t> Report::line_index(const std::string& name) const {
 }
 
 // Excel's rules: at most 31 characters, none of []:*?/\, not starting or ending with ', unique
-// regardless of case. Apostrophes are replaced too, so that chart ranges never need escaping.
+// regardless of case, not "History". Apostrophes are replaced too, so that chart ranges never
+// need escaping.
 std::string Report::item_sheet_name(std::string_view key, const std::string& item,
                                     std::vector<std::string>& used) {
   const std::string fallback = key == "quarry" ? "Quarry" : "Barrier";
@@ -2114,6 +2115,7 @@ void Report::write() {
   };
   for (const char* k : {"summary", "inputs", "profile", "trajectories", "crossings"})
     used.push_back(lower(t_.get("sheets", k)));
+  used.push_back("history");  // reserved by Excel, which refuses a workbook with such a sheet
   std::vector<std::string> barrier_names, quarry_names;
   for (const auto& b : d_.barriers)
     barrier_names.push_back(item_sheet_name("barrier", b.spec.name, used));

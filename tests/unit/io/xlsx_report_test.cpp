@@ -503,16 +503,19 @@ TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
   b.spec.name = "A very long barrier name: with [forbidden] characters/and more";
   f->data.barriers.push_back(b);
   f->data.barriers.push_back(b);
+  b.spec.name = "History";  // reserved by Excel
+  f->data.barriers.push_back(b);
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, tpl);
   const std::string wb = zip_entry(xlsx, "xl/workbook.xml", dir.path());
   EXPECT_NE(wb.find("<sheet name=\"summary (2)\""), std::string::npos) << wb;
+  EXPECT_NE(wb.find("<sheet name=\"History (2)\""), std::string::npos) << wb;
   EXPECT_NE(wb.find("<sheet name=\"A very long barrier name_ with\""), std::string::npos) << wb;
   EXPECT_NE(wb.find("<sheet name=\"A very long barrier name_ w (2)\""), std::string::npos) << wb;
   std::size_t charts = 0;
   for (const auto& n : zip_list(xlsx, dir.path()))
     if (n.rfind("xl/charts/chart", 0) == 0) ++charts;
-  EXPECT_EQ(charts, 4u * 6u + 1u);
+  EXPECT_EQ(charts, 5u * 6u + 1u);
 }
 
 }  // namespace
