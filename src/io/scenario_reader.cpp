@@ -321,6 +321,12 @@ design::CandidateBarrier read_candidate(const TomlTable& c, const design::Energy
   }
   k.mel_kJ = positive_number(c, "mel", "a declared MEL > 0 (kJ)");
   k.sel_kJ = positive_number(c, "sel", "a declared SEL > 0 (kJ)");
+  // The SEL is the service energy a barrier stands repeatedly, a fraction of its MEL (ETAG 027:
+  // SEL = MEL / 3): one above the MEL is a typo.
+  if (k.mel_kJ && k.sel_kJ)
+    c.check("sel", *k.sel_kJ <= *k.mel_kJ,
+            fmt::format("a declared SEL <= the declared MEL ({} kJ; ETAG 027 takes SEL = MEL / 3)",
+                        *k.mel_kJ));
   k.height = positive_number(c, "height", "a vertical interception height > 0 (m)");
   k.elongation_mel = positive_number(c, "elongation_mel", "a maximum elongation > 0 (m, MEL test)");
   k.elongation_sel = positive_number(c, "elongation_sel", "a maximum elongation > 0 (m, SEL test)");

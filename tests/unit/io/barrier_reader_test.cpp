@@ -193,6 +193,8 @@ INSTANTIATE_TEST_SUITE_P(
              "barriers[0].candidate.energy_class", "7", "mel and sel"},
         Case{"class_float", kThesis + "[barriers.candidate]\nenergy_class = 5.0\n", {}, "", 33,
              "barriers[0].candidate.energy_class", "5.0", "integer"},
+        Case{"sel_above_mel", kThesis + "[barriers.candidate]\nmel = 100.0\nsel = 5000.0\n", {}, "", 34,
+             "barriers[0].candidate.sel", "5000.0", "SEL <= the declared MEL (100 kJ"},
         Case{"candidate_empty", kThesis + "[barriers.candidate]\ndistance_to_object = 5.0\n", {}, "", 32,
              "barriers[0].candidate.energy_class", "nothing to check", "height"},
         Case{"candidate_height", kThesis + "[barriers.candidate]\nheight = 0\n", {}, "", 33,
