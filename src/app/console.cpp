@@ -107,6 +107,12 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
     if (what)
       fmt::print(out, "Note: {} {} cut off by {}, not at rest;\n      their stop points and runouts are where they were cut off.\n",
                  r.count, r.count == 1 ? "trajectory was" : "trajectories were", what);
+    if (r.reason == sim::StopReason::boundary)
+      fmt::print(out, "Note: {} {} the profile; {} runout is where {} left it, so the runout\n"
+                      "      percentiles are lower bounds (extend the profile to see where they "
+                      "stop).\n",
+                 r.count, r.count == 1 ? "trajectory left" : "trajectories left",
+                 r.count == 1 ? "its" : "their", r.count == 1 ? "it" : "they");
   }
   fmt::print(out, "\nWritten:\n");
   for (const auto& f : files) fmt::print(out, "  {}\n", f.string());

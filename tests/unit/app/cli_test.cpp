@@ -302,3 +302,40 @@ TEST_F(Cli, RulesAndTemplatesAreFoundTheSameWayAndCheckedFirst) {
 }
 
 }  // namespace
+
+namespace {
+
+// Blocks that run off a profile too short for them: their runouts (where they left it) bias the
+// percentiles low, and the summary says so with the count from the stop reasons.
+TEST_F(Cli, BlocksLeavingTheProfileAreNoted) {
+  const fs::path scenario = dir_ / "short.toml";
+  std::ofstream(scenario) << R"([scenario]
+name = "short slope"
+[simulation]
+seed = 1
+throws = 20
+[profile]
+points = [[0.0, 100.0, "t"], [60.0, 60.0, ""]]
+[materials.t]
+normal_energy = 15.0
+tangential_energy = 50.0
+roughness = 0.65
+[blocks]
+[[blocks.table]]
+mass = 1000.0
+[[sources]]
+x = 1.0
+z = 101.0
+)";
+  const Result r = pierre("run " + q(scenario) + " --out " + q(dir_ / "out"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const int left = summary(dir_ / "out")["stop_reasons"]["boundary"].get<int>();
+  ASSERT_GT(left, 0) << "the slope is meant to be too short for some blocks";
+  const std::string note = "Note: " + std::to_string(left) +
+                           (left == 1 ? " trajectory left the profile; its runout is where it left"
+                                      : " trajectories left the profile; their runout is where they left");
+  EXPECT_NE(r.out.find(note), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("cut off by"), std::string::npos) << r.out;  // no limit was reached
+}
+
+}  // namespace
