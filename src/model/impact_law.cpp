@@ -149,7 +149,7 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   ImpactDetail& det = *detail;
   det.contained = contained;
   const double vn_in_true = dot(v, n), vt_in_true = dot(v, t_hat);
-  det.slope_deg = std::atan2(-t_hat.z, std::abs(t_hat.x)) * kDeg;
+  det.slope_deg = std::atan2(-t_hat.z, std::abs(t_hat.x)) * kDeg + 0.0;  // + 0: level is 0, not −0
   det.roughness_deg = std::atan(tan_theta) * kDeg;
   det.r_eff = r_eff;
   det.vn_in = vn_in_true;

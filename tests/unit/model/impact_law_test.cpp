@@ -192,3 +192,21 @@ TEST(ImpactLaw, StopsWhenEnergyHeadBelowQuarterRadius) {
     }
   }
 }
+
+// The TR record's slope angle: the true surface's descent in the travel direction, in degrees;
+// level ground is 0, written "0" (not −0, which atan2(−0, x) gives).
+TEST(ImpactLaw, RecordedSlopeAngleIsTheDescentInTheTravelDirection) {
+  const ImpactLaw law = fixed_theta_law();
+  const Block b = pierre::test::make_block(1500);
+  const Material m = pierre::test::make_material(10, 50, 0.5);
+  for (const double descent : {0.0, 25.0}) {
+    const Segment s = segment_at(descent);
+    for (const double vx : {8.0, -8.0}) {
+      ImpactDetail det;
+      law.resolve({vx, -6}, 0.0, s, law.surface(m), law.block(b), ImpactDraws{0.5, 0.5, false}, &det);
+      const double expect = vx > 0 ? descent : -descent;  // travelling up a slope: it rises
+      EXPECT_NEAR(det.slope_deg, expect, 1e-12) << descent << " " << vx;
+      EXPECT_FALSE(std::signbit(det.slope_deg) && det.slope_deg == 0) << descent << " " << vx;
+    }
+  }
+}
