@@ -161,7 +161,7 @@ void sample_line(Builder& b) {
   CheckLine& l = b.add("sample.size",
                        "largest half-width of the 90 % bootstrap interval of v_k, h_k, E_d, h_i "
                        "relative to its value" + (which.empty() ? std::string() : " (" + which + ")"),
-                       worst, tol, "");
+                       100 * worst, 100 * tol, "%");  // in % as the quarries' sample.size
   if (std::isnan(worst) || missing) {
     set(l, CheckStatus::warn, "no bootstrap interval: too few crossings");
     return;

@@ -187,8 +187,9 @@ TEST(BarrierCheckLines, SampleSizeWarnsWithTheThrowsNeeded) {
   const auto lines = design::barrier_check_lines(d, rules());
   const auto& l = line(lines, "sample.size");
   EXPECT_EQ(l.status, CheckStatus::warn);
-  EXPECT_NEAR(l.value, 0.10, 1e-12);
-  EXPECT_DOUBLE_EQ(l.limit, 0.05);
+  EXPECT_NEAR(l.value, 10, 1e-10);  // %
+  EXPECT_DOUBLE_EQ(l.limit, 5);
+  EXPECT_EQ(l.unit, "%");
   EXPECT_NE(l.what.find("E_d"), std::string::npos) << l.what;
   EXPECT_NE(l.reason.find("2000 trajectories"), std::string::npos) << l.reason;  // 500 × 4
   EXPECT_NE(l.reason.find("throws = 20"), std::string::npos) << l.reason;         // 5 × 4
