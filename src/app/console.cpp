@@ -81,7 +81,7 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
     }
     fmt::print(out, "\n");
   }
-  fmt::print(out, "Runout (m):   P50 {}   P95 {}   P99 {}   max {}\n", cell(s.runout.p50, 0),
+  fmt::print(out, "Runout from the release point (m):   P50 {}   P95 {}   P99 {}   max {}\n", cell(s.runout.p50, 0),
              cell(s.runout.p95, 0), cell(s.runout.p99, 0), cell(s.runout.max, 0));
   fmt::print(out, "Stop reasons:");
   for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
