@@ -110,8 +110,8 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
       throw InputError(file, line_no, "row", fmt::format("{} columns", cells.size()),
                        fmt::format("{} columns ({})", t.header.size(), join(t.header)));
     for (std::size_t c = 0; c < cells.size(); ++c)
-      if (auto bad = control_character_in(cells[c]))
-        throw InputError(file, line_no, t.header[c], *bad, std::string(kNoControlCharacters));
+      if (auto bad = unwritable_text(cells[c]))
+        throw InputError(file, line_no, t.header[c], *bad, std::string(kWritableText));
     t.rows.push_back({line_no, std::move(cells)});
   }
   if (t.header.empty())

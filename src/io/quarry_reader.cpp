@@ -123,9 +123,8 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
   if (const auto c = top.subtable("clauses", {})) {
     for (auto&& [k, v] : c->table()) {
       const std::string key(k.str());
-      const auto* s = v.as_string();
-      if (!s) c->fail(key, "a string naming the clause");
-      r.clauses[key] = s->get();
+      if (!v.as_string()) c->fail(key, "a string naming the clause");
+      r.clauses[key] = *c->string(key);  // checked as text for the report
     }
   }
   return r;

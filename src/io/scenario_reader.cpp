@@ -139,9 +139,9 @@ std::vector<model::Material> read_materials(const TomlTable& top, Presets& prese
     const toml::node* node = mats->find(name);
     const auto* tbl = node->as_table();
     if (!tbl) mats->fail(name, "a table [materials.NAME]");
-    if (auto bad = detail::control_character_in(name))
+    if (auto bad = detail::unwritable_text(name))
       throw InputError(top.file(), line, top.field("materials"), "a material name: " + *bad,
-                       std::string(detail::kNoControlCharacters));
+                       std::string(detail::kWritableText));
     TomlTable t(top.file(), *tbl, mats->field(name), line_of(*node),
                 {"preset", "normal_energy", "normal_energy_k", "tangential_energy",
                  "tangential_energy_k", "roughness", "friction_angle"});

@@ -114,8 +114,8 @@ std::optional<std::string> TomlTable::string(std::string_view key) const {
   if (!n) return std::nullopt;
   const auto* s = n->as_string();
   if (!s) fail(key, "a string");
-  if (auto bad = control_character_in(s->get()))
-    throw InputError(file_, line_of(*n), field(key), *bad, std::string(kNoControlCharacters));
+  if (auto bad = unwritable_text(s->get()))
+    throw InputError(file_, line_of(*n), field(key), *bad, std::string(kWritableText));
   return s->get();
 }
 
