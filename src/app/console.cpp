@@ -105,8 +105,10 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
         break;
     }
     if (what)
-      fmt::print(out, "Note: {} {} cut off by {}, not at rest;\n      their stop points and runouts are where they were cut off.\n",
-                 r.count, r.count == 1 ? "trajectory was" : "trajectories were", what);
+      fmt::print(out, "Note: {} {} cut off by {}, not at rest;\n      {} where {} cut off.\n",
+                 r.count, r.count == 1 ? "trajectory was" : "trajectories were", what,
+                 r.count == 1 ? "its stop point and runout are" : "their stop points and runouts are",
+                 r.count == 1 ? "it was" : "they were");
     if (r.reason == sim::StopReason::boundary)
       fmt::print(out, "Note: {} {} the profile; {} runout is where {} left it, so the runout\n"
                       "      percentiles are lower bounds (extend the profile to see where they "

@@ -28,10 +28,10 @@ DataFolder find(const char* name, const char* env_var, const char* probe) {
     candidates.push_back(prefix / name);
     candidates.push_back(prefix / "share" / "pierre" / name);
   }
+  candidates.push_back(name);  // relative to the working folder: an engineer's own copy
 #ifdef PIERRE_SOURCE_DIR
-  candidates.push_back(fs::path(PIERRE_SOURCE_DIR) / name);
+  candidates.push_back(fs::path(PIERRE_SOURCE_DIR) / name);  // the last resort of a built binary
 #endif
-  candidates.push_back(name);  // relative to the working folder
   for (const fs::path& c : candidates) {
     f.searched.push_back(c.string());
     if (fs::is_regular_file(c / probe, ec)) {

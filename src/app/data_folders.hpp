@@ -17,8 +17,8 @@ struct DataFolder {
 };
 
 // The rules folder: `option` (--rules) when given; else $PIERRE_RULES when set; else the first
-// of <executable>/../rules, <executable>/../share/pierre/rules, the source tree's rules/ (when
-// built from source) and ./rules that holds materials.toml (the last when none does).
+// of <executable>/../rules, <executable>/../share/pierre/rules, ./rules and the source tree's
+// rules/ (when built from source) that holds materials.toml (the last when none does).
 DataFolder rules_folder(const std::string& option);
 
 // The templates folder: $PIERRE_TEMPLATES when set; else the first of the same places (with

@@ -134,7 +134,6 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
     out.failed_check = "reach";
     return out;
   }
-  out.failed_check = "design";  // from here on the crossings are enough
   const std::vector<double> energy_kJ = scaled(sample.energy, 1e-3);
 
   // Step 2: fits and characteristic values.

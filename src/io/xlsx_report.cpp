@@ -38,12 +38,21 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // which a few such paths would carry past a sheet's 1 048 576 rows.
 constexpr std::size_t kMaxPathPoints = 2000;
 
-// The points of `path` to draw: repeats of the point before dropped (zero-length steps), then,
-// above kMaxPathPoints, evenly spaced ones from the first to the last.
+// The points of `path` to draw: the first, then each one at least 1/10 000 of the path's extent
+// from the last kept (a block bouncing in place adds nothing a chart can show, and would crowd
+// out the flights before it), and the last; above kMaxPathPoints, evenly spaced ones of those.
 std::vector<geometry::Vec2> drawn_points(const std::vector<geometry::Vec2>& path) {
-  std::vector<geometry::Vec2> kept;
+  if (path.empty()) return {};
+  double x0 = path[0].x, x1 = x0, z0 = path[0].z, z1 = z0;
+  for (const auto& p : path) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    z0 = std::min(z0, p.z), z1 = std::max(z1, p.z);
+  }
+  const double step = 1e-4 * std::hypot(x1 - x0, z1 - z0);
+  std::vector<geometry::Vec2> kept{path.front()};
   for (const auto& p : path)
-    if (kept.empty() || p.x != kept.back().x || p.z != kept.back().z) kept.push_back(p);
+    if (std::hypot(p.x - kept.back().x, p.z - kept.back().z) > step) kept.push_back(p);
+  if (path.back().x != kept.back().x || path.back().z != kept.back().z) kept.push_back(path.back());
   if (kept.size() <= kMaxPathPoints) return kept;
   std::vector<geometry::Vec2> out;
   out.reserve(kMaxPathPoints);

@@ -150,8 +150,10 @@ class Integrator {
     t_leave = std::max(t_leave, 0.0);
     const double t_left = set_.max_time - t_;
     // A wall that ends the profile stands at x_min or x_max itself, and is met at t_leave: the
-    // search looks a hair (kVertexSlack in x) beyond, so that the block hits it, not leaves.
-    const double t_reach = v_.x != 0 ? t_leave + kVertexSlack / std::abs(v_.x) : kInf;
+    // search looks a hair beyond (kVertexSlack in x, and no more than kVertexSlack seconds for
+    // a block that barely moves in x), so that the block hits it, not leaves.
+    const double t_reach =
+        v_.x != 0 ? t_leave + std::min(kVertexSlack / std::abs(v_.x), kVertexSlack) : kInf;
     const auto contact = profile_.first_contact(p_, v_, g_, std::min(t_reach, t_left), dep_);
 
     double tau;

@@ -189,7 +189,7 @@ struct BarrierOutcome {
   // Without a design, the check line that FAILs in its place: "reach" when fewer than two
   // blocks crossed the line, "design" when the crossings gave no design (e.g. no fit of
   // identical values, a design value out of the rule set's tables).
-  std::string failed_check;
+  std::string failed_check = "design";
 };
 BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rules,
                               const EnergyClassTable& classes, const BarrierSample& sample,

@@ -258,6 +258,13 @@ z = 99.4
     EXPECT_GE(x, runout - 1e-9) << q;         // it cannot stop before reaching 5 m/s
     EXPECT_LE(x, runout + 0.05 * cos_b) << q;  // nor drift further than the bound above
   }
+  // One trajectory: the note in the singular throughout.
+  const Result one = pierre("run " + q(scenario) + " --throws 1 --out " + q(dir_ / "one"));
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_NE(one.out.find("Note: 1 trajectory was cut off by simulation.max_impacts"), std::string::npos)
+      << one.out;
+  EXPECT_NE(one.out.find("its stop point and runout are where it was cut off."), std::string::npos)
+      << one.out;
 }
 
 }  // namespace
