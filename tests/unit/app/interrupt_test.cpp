@@ -30,10 +30,11 @@ class Interrupt : public pierre::test::PierreCli {
   // Starts `pierre run` on the small scenario with enough throws to run for a long while,
   // waits until its staging folder exists (the run is under way), sends `sig`, and returns
   // the exit status, or -1 when it did not end within 30 s of the signal.
-  int run_and_signal(const fs::path& out, int sig) {
+  int run_and_signal(const fs::path& out, int sig, const std::string& scenario = kScenario,
+                     const char* throws = "5000000") {
     const std::string bin = PIERRE_BINARY, err = (dir_ / "stderr.txt").string();
-    std::vector<std::string> args{bin, "run", kScenario, "--out", out.string(),
-                                  "--throws", "5000000", "--threads", "2"};
+    std::vector<std::string> args{bin, "run", scenario, "--out", out.string(),
+                                  "--throws", throws, "--threads", "2"};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -75,6 +76,21 @@ TEST_F(Interrupt, CtrlCOrAHangUpExits130AndRemovesTheFolderItCreated) {
               std::string::npos)
         << err;
   }
+}
+
+// A quarry scenario runs its sections one after the other, each a run of its own: a signal
+// during one of them ends the whole and leaves nothing either.
+TEST_F(Interrupt, AQuarryRunStopsAsWell) {
+  const fs::path out = dir_ / "quarry";
+  const int code = run_and_signal(out, SIGINT,
+                                  PIERRE_SOURCE_DIR "/examples/quarry-austria/scenario.toml", "500000");
+  ASSERT_TRUE(staged_) << "the run never started";
+  EXPECT_EQ(code, 130);
+  EXPECT_FALSE(fs::exists(out));
+  const std::string err = pierre::test::slurp(dir_ / "stderr.txt");
+  EXPECT_NE(err.find("interrupted: the run was stopped; nothing was written to " + out.string()),
+            std::string::npos)
+      << err;
 }
 
 TEST_F(Interrupt, SigtermLeavesAnExistingFolderAsItWas) {
