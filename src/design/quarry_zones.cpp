@@ -214,7 +214,6 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
                                    (std::isfinite(sr.danger_zone) ? " m" : "") + " (" +
                                    row.rd_gov.how + ")";
       auto zone_line = [&](const std::string& id, const std::string& what, double value) {
-        std::string gov_text_extra;
         CheckLine l = line(subject, id, rules);
         l.what = what;
         l.value = value;
@@ -229,12 +228,15 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
                      num(100 - rules.percentile) + " % of the blocks left the section (" +
                      std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
                      "); extend the section";
-        } else if (value < sr.danger_zone) {
-          if (sr.danger_zone > sr.geometry.floor_length)
-            gov_text_extra = " — beyond the section's end (floor " + num(sr.geometry.floor_length) +
-                             " m): extend the section";
+        } else if (sr.danger_zone_beyond_profile()) {
+          // The governing distance (a fit's extrapolation, or a percentile of blocks that ran
+          // to the end) lies past the floor the section models: nothing there was simulated.
           l.status = CheckStatus::fail;
-          l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text + gov_text_extra;
+          l.reason = "the danger zone reaches beyond the section's end: " + gov_text + " > floor " +
+                     num(sr.geometry.floor_length) + " m; extend the section";
+        } else if (value < sr.danger_zone) {
+          l.status = CheckStatus::fail;
+          l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
         } else {
           l.status = CheckStatus::pass;
           l.reason = num(value) + " m from the toe is outside the danger zone: " + gov_text;
@@ -243,7 +245,7 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
       };
       for (const WorkArea& a : sr.spec.work_areas)
         zone_line("zone." + a.name, "distance of work area \"" + a.name + "\" from the toe vs the danger zone RD_gov", a.distance);
-      if (sr.spec.work_areas.empty() && std::isinf(sr.danger_zone))
+      if (sr.spec.work_areas.empty() && sr.danger_zone_beyond_profile())
         zone_line("zone.extent", "the danger zone RD_gov vs the section's floor length", sr.geometry.floor_length);
 
       if (sr.spec.bench_width) {

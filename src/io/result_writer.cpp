@@ -419,7 +419,7 @@ ojson quarry_section_json(const design::QuarrySectionResult& s, std::uint64_t se
                    {"floor_angle_deg", g.floor_angle_deg}};
   put_counts(j, d);
   j["danger_zone_m"] = distance(s.danger_zone);
-  j["danger_zone_beyond_profile"] = beyond(s.danger_zone);
+  j["danger_zone_beyond_profile"] = s.danger_zone_beyond_profile();
   j["first_impact_zone_m"] = distance(s.first_impact_zone);
   j["first_impact_zone_beyond_profile"] = beyond(s.first_impact_zone);
   ojson areas = ojson::array();

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -102,6 +103,11 @@ struct QuarrySectionResult {
   double first_impact_zone = 0;  // m: [0, ID_gov]
   std::optional<double> bench_retention;  // share of the row's blocks with RD <= bench width
   std::optional<double> ritchie_width;    // m
+  // The danger zone reaches past the section's floor (or is infinite: too many blocks left):
+  // the simulation cannot place its limit, and every zone check FAILs until it is extended.
+  bool danger_zone_beyond_profile() const {
+    return std::isinf(danger_zone) || danger_zone > geometry.floor_length;
+  }
 };
 
 // The "Average (normalized by H)" lines: means over the rows of the per-row ratios.

@@ -146,6 +146,44 @@ TEST(QuarryZones, DangerZoneBeyondTheProfileFails) {
   EXPECT_EQ(extent->status, CheckStatus::fail);
 }
 
+// A finite danger zone longer than the floor the section models (a log-normal extrapolation, or
+// a group's pooled zone on a section with a short floor) reaches where nothing was simulated:
+// every zone check FAILs. (They PASSed, and `check` exited 0, while the zone ran off the end.)
+QuarrySectionInput short_floor(const std::string& name, double floor_end, std::string group = "") {
+  QuarrySectionInput s;
+  s.spec.name = name;
+  s.spec.group = std::move(group);
+  s.rules = thesis();
+  s.geometry = *quarry_geometry(test::make_profile({{0, 20}, {10, 20}, {10, 0}, {floor_end, 0}}), {});
+  s.distances = distances(one_to(100), s.geometry);  // 1 … 100 m: RD95 = 95.05 m
+  return s;
+}
+
+TEST(QuarryZones, DangerZonePastTheFloorFails) {
+  auto a = short_floor("Short", 10 + 101);  // a 101 m floor: every block stops on it
+  a.geometry.floor_length = 90;             // … but say it models only 90 m
+  a.spec.work_areas = {{"yard", 300}};
+  auto b = short_floor("Bare", 10 + 101);
+  b.geometry.floor_length = 90;
+  auto ok = short_floor("Long", 10 + 101);  // 101 m of floor: the zone fits
+  ok.spec.work_areas = {{"yard", 300}};
+  const auto out = design_quarry({a, b, ok}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  EXPECT_NEAR(out.design->sections[0].danger_zone, 95.05, 1e-9);
+  EXPECT_TRUE(out.design->sections[0].danger_zone_beyond_profile());
+  const CheckLine* yard = find(*out.design, "Short", "zone.yard");
+  ASSERT_TRUE(yard);
+  EXPECT_EQ(yard->status, CheckStatus::fail);
+  EXPECT_NE(yard->reason.find("> floor 90 m"), std::string::npos) << yard->reason;
+  const CheckLine* extent = find(*out.design, "Bare", "zone.extent");
+  ASSERT_TRUE(extent);
+  EXPECT_EQ(extent->status, CheckStatus::fail);
+  const CheckLine* fine = find(*out.design, "Long", "zone.yard");
+  ASSERT_TRUE(fine);
+  EXPECT_EQ(fine->status, CheckStatus::pass) << fine->reason;
+  EXPECT_FALSE(find(*out.design, "Long", "zone.extent"));
+}
+
 TEST(QuarryZones, BenchRetentionAndRitchie) {
   auto pass = section("Wide", one_to(100));
   pass.spec.bench_width = 90;  // 90 of 100 blocks stop within 90 m: exactly the 90 % target
