@@ -45,8 +45,11 @@ void set(CheckLine& l, CheckStatus s, std::string reason) {
   l.reason = std::move(reason);
 }
 
+// `declares_energy`: the candidate gives some capacity (a class, a MEL or a SEL). One that gives
+// none is checked on its height alone; one that gives a capacity but not the one the rule set
+// designs on cannot pass that check.
 void capacity_line(Builder& b, const char* id, const char* name, bool needed, double declared,
-                   double required) {
+                   double required, bool declares_energy) {
   CheckLine& l = b.add(id, std::string("candidate ") + name + " against the required " + name +
                                " (γE · E_d)",
                        declared, required, "kJ");
@@ -54,9 +57,15 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
     set(l, CheckStatus::not_applicable,
         std::string("the rule set designs on ") + to_string(b.r.design_on) + ", not " + name);
   else if (std::isnan(declared))
-    set(l, CheckStatus::not_applicable,
-        std::string("the candidate declares no ") + name + " (energy_class or " +
-            (std::string(name) == "MEL" ? "mel" : "sel") + ")");
+    set(l, declares_energy ? CheckStatus::fail : CheckStatus::not_applicable,
+        std::string(declares_energy ? "the rule set designs on " +
+                                          std::string(b.r.design_on == DesignOn::both
+                                                          ? "MEL and SEL"
+                                                          : to_string(b.r.design_on)) +
+                                          " and the candidate declares no "
+                                    : "the candidate declares no ") +
+            name + " (give " + (std::string(name) == "MEL" ? "mel" : "sel") +
+            ", or an energy_class whose " + name + " the class table holds)");
   else if (declared >= required)
     set(l, CheckStatus::pass, std::string("candidate ") + name + " " + num(declared) + " kJ >= required " +
                                   num(required) + " kJ");
@@ -184,12 +193,26 @@ void sample_line(Builder& b) {
 
 std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const BarrierRuleSet& rules) {
   Builder b{d, rules, {}};
+  // A design (no candidate) that no class of the table meets recommends no barrier: `check`
+  // must not pass it. (A candidate is judged on its own declared capacities below.)
+  if (!d.spec.candidate && !d.energy_class) {
+    CheckLine& l = b.add("design", "an energy class of the table that meets the required capacities",
+                         needs_mel(rules.design_on) ? d.MEL_req_kJ : d.SEL_req_kJ, kNaN, "kJ");
+    set(l, CheckStatus::fail,
+        "no class of the class table meets " +
+            (needs_mel(rules.design_on) ? "MEL_req " + num(d.MEL_req_kJ) + " kJ" : std::string()) +
+            (needs_mel(rules.design_on) && needs_sel(rules.design_on) ? " and " : "") +
+            (needs_sel(rules.design_on) ? "SEL_req " + num(d.SEL_req_kJ) + " kJ" : std::string()) +
+            ": a barrier beyond the table (declare it as a candidate with its mel and sel), or "
+            "protection of another kind");
+  }
   if (d.spec.candidate) {
     const CandidateBarrier& c = *d.spec.candidate;
+    const bool declares_energy = c.energy_class || c.mel_kJ || c.sel_kJ;
     capacity_line(b, "energy.mel", "MEL", needs_mel(rules.design_on), d.candidate_mel_kJ,
-                  d.MEL_req_kJ);
+                  d.MEL_req_kJ, declares_energy);
     capacity_line(b, "energy.sel", "SEL", needs_sel(rules.design_on), d.candidate_sel_kJ,
-                  d.SEL_req_kJ);
+                  d.SEL_req_kJ, declares_energy);
     {
       const double value = c.height.value_or(kNaN);
       CheckLine& l = b.add("height.interception",

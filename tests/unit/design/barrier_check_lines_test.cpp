@@ -3,6 +3,8 @@
 // advisory lines.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -211,12 +213,44 @@ TEST(BarrierCheckLines, ReachWarnsBelowThirty) {
 TEST(BarrierCheckLines, WithoutCandidateOnlyTheAdvisoryLines) {
   auto d = base();
   d.spec.candidate.reset();
+  d.energy_class = design::EnergyClass{6, 1500, 4500, false};  // the class the design recommends
   d.spec.acceptable_height_exceedance = 1e-6;  // would fail with a candidate
   const auto lines = design::barrier_check_lines(d, rules());
   std::vector<std::string> ids;
   for (const auto& l : lines) ids.push_back(l.id);
   EXPECT_EQ(ids, (std::vector<std::string>{"fit.v", "fit.h", "fit.E", "sample.size", "reach"}));
   EXPECT_FALSE(design::any_failure(lines));
+
+  // No class of the table meets MEL_req / SEL_req: the design recommends no barrier, a FAIL.
+  d.energy_class.reset();
+  const auto none = design::barrier_check_lines(d, rules());
+  ASSERT_FALSE(none.empty());
+  EXPECT_EQ(none.front().id, "design");
+  EXPECT_EQ(none.front().status, CheckStatus::fail);
+  EXPECT_DOUBLE_EQ(none.front().value, 1500);  // MEL_req, kJ (the rule set designs on both)
+  EXPECT_NE(none.front().reason.find("MEL_req 1500 kJ and SEL_req 1250 kJ"), std::string::npos)
+      << none.front().reason;
+}
+
+// A candidate that declares a capacity, but not the one the rule set designs on, cannot pass
+// that check; one that declares no capacity at all is checked on its height alone.
+TEST(BarrierCheckLines, AMissingCapacityFailsOnlyWhenTheCandidateDeclaresAnother) {
+  auto d = base();
+  d.spec.candidate->energy_class.reset();
+  d.spec.candidate->mel_kJ = 5000;
+  d.spec.candidate->sel_kJ.reset();
+  d.candidate_mel_kJ = 5000;
+  d.candidate_sel_kJ = std::numeric_limits<double>::quiet_NaN();
+  auto lines = design::barrier_check_lines(d, rules());  // designs on both
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::pass);
+  EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::fail);
+  EXPECT_NE(line(lines, "energy.sel").reason.find("designs on MEL and SEL"), std::string::npos)
+      << line(lines, "energy.sel").reason;
+  d.spec.candidate->mel_kJ.reset();
+  d.candidate_mel_kJ = std::numeric_limits<double>::quiet_NaN();
+  lines = design::barrier_check_lines(d, rules());  // a height only
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::not_applicable);
+  EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::not_applicable);
 }
 
 }  // namespace
