@@ -124,6 +124,7 @@ namespace {
 
 std::string g(double v, int width) {
   if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
+  if (std::isinf(v)) return fmt::format("{:>{}}", v > 0 ? "beyond" : "-inf", width);  // a zone off the end
   // Four significant digits, but a whole number of kJ or m up to a million stays one (a MEL
   // of 10 000 kJ printed as 1e+04 reads as a typo).
   if (std::abs(v) >= 1e4 && std::abs(v) < 1e6) return fmt::format("{:>{}.0f}", v, width);

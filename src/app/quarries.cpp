@@ -112,8 +112,9 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
       const auto omx = observed_value(*l.obs, l.per_h ? &OC::max_h : &OC::max);
       std::string gov;
       if (l.gov)
-        gov = fmt::format("{}_gov {} m ({})", l.s == &r.rd ? "RD" : "ID",
-                          metres(l.gov->value_h * H, 0), l.gov->how);
+        gov = fmt::format("{}_gov {}{} ({})", l.s == &r.rd ? "RD" : "ID",
+                          metres(l.gov->value_h * H, 0),
+                          std::isfinite(l.gov->value_h) ? " m" : " the profile", l.gov->how);
       if (first)
         fmt::print(out, "{:<18} {:>6} {:>6.1f}  ", r.name, l.s->count, H);
       else if (l.s == &r.id && !l.per_h)

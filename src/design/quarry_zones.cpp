@@ -291,7 +291,16 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
       l.unit = "%";
       std::string why;
       bool warn = false;
-      if (row.rd_interval && row.rd_interval->estimate > 0) {
+      if (row.rd_interval && row.rd_interval->estimate > 0 &&
+          !std::isfinite(row.rd_interval->half_width())) {
+        // Resamples with more blocks off the end than the percentile allows: the interval's
+        // upper end is beyond the profile, and no number of throws on this section closes it.
+        warn = true;
+        why = "the " + num(100 * rules.sample_confidence) + " % interval of RD" +
+              num(rules.sample_percentile) + " reaches beyond the profile (" +
+              std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
+              " blocks left the section): extend the section";
+      } else if (row.rd_interval && row.rd_interval->estimate > 0) {
         const double rel = row.rd_interval->half_width() / row.rd_interval->estimate;
         l.value = 100.0 * rel;
         if (rel > rules.sample_tolerance) {
