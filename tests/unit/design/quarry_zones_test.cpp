@@ -240,6 +240,24 @@ TEST(QuarryZones, OneBlockGivesNoIntervalAndAnEmptyIdSaysSo) {
   EXPECT_EQ(row.id_gov.how, "P95: no values");
 }
 
+// Three blocks of 100 off the end: RD95 is finite, but resamples with six or more off the end
+// put the interval's upper end beyond the profile, which more throws cannot close.
+TEST(QuarryZones, SampleSizeWithAnIntervalBeyondTheProfile) {
+  auto v = one_to(97);
+  for (int i = 0; i < 3; ++i) v.push_back(kInf);
+  const auto out = design_quarry({section("Edge", v)}, 1);
+  ASSERT_TRUE(out.design);
+  ASSERT_TRUE(out.design->rows[0].rd_interval);
+  EXPECT_TRUE(std::isfinite(out.design->rows[0].rd_interval->estimate));
+  EXPECT_TRUE(std::isinf(out.design->rows[0].rd_interval->upper));
+  const CheckLine* l = find(*out.design, "Edge", "sample.size");
+  ASSERT_TRUE(l);
+  EXPECT_EQ(l->status, CheckStatus::warn);
+  EXPECT_TRUE(std::isnan(l->value));
+  EXPECT_NE(l->reason.find("reaches beyond the profile (3 of 100 blocks left"), std::string::npos)
+      << l->reason;
+}
+
 TEST(QuarryZones, FitChecks) {
   const auto good = design_quarry({section("Good", lognormal_runouts(1000, 20, 3))}, 1);
   // Two clusters, at about 1 m and 100 m: no log-normal fits that.
