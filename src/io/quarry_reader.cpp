@@ -303,7 +303,27 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     read_work_areas(q, spec);
     read_observed(q, s);
 
-    const auto g = design::quarry_geometry(sc.profile, spec.geometry);
+    auto g = design::quarry_geometry(sc.profile, spec.geometry);
+    if (g && !g->toe_vertex) {
+      // A toe given inside a segment: the floor is the profile past the toe (design-checks.md
+      // §2), so the segment is cut there into two collinear pieces (the same physics,
+      // model-2d.md §2) and the floor starts at the new vertex.
+      const auto& segs = sc.profile.segments();
+      std::vector<geometry::Vec2> pts{segs.front().a};
+      std::vector<int> mats;
+      for (std::size_t j = 0; j < segs.size(); ++j) {
+        if (static_cast<int>(j) == g->floor_segment) {
+          pts.push_back(g->toe);
+          mats.push_back(segs[j].material);
+        }
+        pts.push_back(segs[j].b);
+        mats.push_back(segs[j].material);
+      }
+      if (auto cut = geometry::Profile::build(pts, mats, nullptr)) {
+        sc.profile = std::move(*cut);
+        g = design::quarry_geometry(sc.profile, spec.geometry);
+      }
+    }
     if (!g) {
       const char* key = spec.geometry.toe_x ? "toe" : spec.geometry.crest_x ? "crest" : "profile";
       const toml::node* n = q.find(key);

@@ -10,7 +10,8 @@
 //
 // The floor is the profile past the toe: `floor_segment` is the index of its first segment,
 // for sim::SimulationSettings::floor_segment. A toe given inside a segment makes that segment
-// the first floor segment (a contact on it before the toe counts as ID = 0).
+// the first floor segment here; the quarry reader cuts the segment at the toe first, so that
+// the floor starts exactly there.
 // Distances are horizontal, from the toe, along the main direction (Profile::main_direction).
 #pragma once
 

@@ -121,6 +121,25 @@ TEST(QuarryReader, ReadsASection) {
   EXPECT_EQ(s.observed.source, "Table 6.2, 6.3");
 }
 
+// A toe given inside a segment: the floor is the profile past the toe, so the segment is cut
+// there (two collinear pieces, the same physics) and the floor starts at the new vertex. Before,
+// the whole segment was floor and every first contact on it before the toe counted as ID = 0.
+TEST(QuarryReader, AToeInsideASegmentStartsTheFloorThere) {
+  test::TempDir dir;
+  const auto q = read(dir, section_with(3, "group = \"Preg\"\ntoe = 25.0"));
+  ASSERT_EQ(q.size(), 1u);
+  const QuarrySection& s = q[0];
+  const auto& v = s.scenario.profile.vertices();
+  ASSERT_EQ(v.size(), 5u);  // (0, 20), (10, 20), (20, 0), (25, 0), (90, 0)
+  EXPECT_DOUBLE_EQ(v[3].x, 25);
+  EXPECT_DOUBLE_EQ(v[3].z, 0);
+  EXPECT_EQ(s.geometry.toe_vertex, 3u);
+  EXPECT_EQ(s.scenario.settings.floor_segment, 3);
+  EXPECT_DOUBLE_EQ(s.geometry.floor_length, 65);
+  EXPECT_EQ(s.scenario.profile.segment(2).material, s.scenario.profile.segment(3).material);
+  EXPECT_EQ(s.geometry.toe_origin, design::GeometryOrigin::given);
+}
+
 TEST(QuarryReader, GivenGeometryCsvFilesAndSeed) {
   test::TempDir dir;
   dir.write("face.csv", "x,z,material\n0,20,floor\n10,20,face\n20,0,floor\n90,0,\n");
@@ -146,7 +165,7 @@ observed = { file = "observed.csv" }
   EXPECT_DOUBLE_EQ(s.geometry.toe.x, 25);
   EXPECT_DOUBLE_EQ(s.geometry.height, 19.5);
   EXPECT_DOUBLE_EQ(s.geometry.height_derived, 20);
-  EXPECT_EQ(s.scenario.settings.floor_segment, 2);
+  EXPECT_EQ(s.scenario.settings.floor_segment, 3);  // the segment cut at the toe (x = 25)
   EXPECT_EQ(s.scenario.settings.seed, 7u);
   EXPECT_EQ(s.scenario.blocks.size(), 2u);
   EXPECT_EQ(s.observed.id.metres, (std::vector<double>{1.0, 2.5}));
