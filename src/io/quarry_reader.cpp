@@ -203,6 +203,12 @@ void read_observed(const TomlTable& q, QuarrySection& out) {
   if (!obs) return;
   design::QuarryObserved& o = out.observed;
   o.source = obs->string("source").value_or("");
+  // Raw values or summary values, not both: the raw ones would be used and the others dropped.
+  if (obs->has("file"))
+    for (const char* key : {"runout", "first_impact", "count"})
+      if (obs->has(key))
+        obs->fail(key, "either file (the raw observations) or summary values (runout, "
+                       "first_impact, count), not both: with a file the summary follows from it");
   if (auto f = obs->string("file")) read_observed_csv(relative_to(q.file(), *f), o);
   read_summary(*obs, "runout", o.rd);
   read_summary(*obs, "first_impact", o.id);
@@ -346,6 +352,27 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
         q.fail(q.has("rules") ? "rules" : "group",
                fmt::format("the rule set of the other sections of group \"{}\" (\"{}\")",
                            out[i].spec.group, out[j].rules.name));
+      }
+  // A group's observed values are raw observations pooled, or one section's summary values:
+  // a mix would drop the summary values without a word.
+  auto raw = [](const QuarrySection& s) {
+    return !s.observed.rd.metres.empty() || !s.observed.id.metres.empty();
+  };
+  auto summary = [](const QuarrySection& s) {
+    for (const auto* d : {&s.observed.rd, &s.observed.id})
+      if (d->p50 || d->p95 || d->max) return true;
+    return false;
+  };
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (!out[i].spec.group.empty() && out[i].spec.group == out[j].spec.group &&
+          ((raw(out[i]) && summary(out[j])) || (summary(out[i]) && raw(out[j])))) {
+        const toml::node& node = *a->get(i);
+        const TomlTable q(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node), {});
+        q.fail("observed", fmt::format("observed values of the kind the other sections of group "
+                                       "\"{}\" give (quarries[{}] gives {}): raw observations "
+                                       "(file) in every section, or summary values",
+                                       out[i].spec.group, j, raw(out[j]) ? "a file" : "summary values"));
       }
   // A report row is a lone section or a group: a group may not take the name of a section
   // outside it, or two rows would both be called so.

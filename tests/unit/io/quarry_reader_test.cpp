@@ -220,6 +220,8 @@ const ErrorCase kErrors[] = {
      "quarries[0].observed.runout.p95", "9.0"},
     {"rules_unknown", 4, "rules = \"no-such-rules\"", 4, "quarries[0].rules", "no-such-rules"},
     {"rules_barrier", 4, "rules = \"thesis-2015\"", 4, "quarries[0].rules", "thesis-2015"},
+    {"observed_file_and_summary", 30, "source = \"x\"\nfile = \"obs.csv\"", 33,
+     "quarries[0].observed.runout", "a table"},
     {"duplicate_name", 0, "\n[[quarries]]\nname = \"Preg 1\"\n", 36, "quarries[1].name", "Preg 1"},
 };
 
@@ -253,6 +255,22 @@ TEST(QuarryReader, GroupNamedAsASectionOutsideIt) {
   // A section named as its own group is one row, and fine.
   test::TempDir dir;
   EXPECT_EQ(read(dir, kSection + "\n" + section_with(2, "name = \"Preg\"")).size(), 2u);
+}
+
+// Sections pooled in a group: raw observations in every one, or summary values; a mix would
+// drop the summary values without a word.
+TEST(QuarryReader, GroupMixingRawAndSummaryObservations) {
+  test::TempDir dir;
+  dir.write("obs.csv", "runout\n5.0\n9.5\n");
+  std::string second = section_with(2, "name = \"Preg 2\"");
+  second = second.substr(0, second.find("count = 25")) + "file = \"obs.csv\"\n";
+  try {
+    read(dir, kSection + "\n" + second);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "quarries[1].observed") << e.what();
+    EXPECT_NE(e.expected().find("quarries[0] gives summary values"), std::string::npos) << e.what();
+  }
 }
 
 // ---- rule sets ----
