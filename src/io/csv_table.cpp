@@ -20,16 +20,45 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+// The cells of one line (RFC 4180 within a line): a cell in double quotes may hold commas and
+// doubled quotes ("P,01", "5"" block"); spaces around a cell are trimmed.
 std::vector<std::string> split(std::string_view line) {
   std::vector<std::string> cells;
-  std::size_t start = 0;
+  std::size_t i = 0;
   while (true) {
-    const std::size_t comma = line.find(',', start);
-    std::string_view cell = trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
-    if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"') cell = cell.substr(1, cell.size() - 2);
-    cells.emplace_back(cell);
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    std::string cell;
+    if (i < line.size() && line[i] == '"') {
+      std::size_t j = i + 1;
+      for (; j < line.size(); ++j) {
+        if (line[j] != '"') {
+          cell += line[j];
+        } else if (j + 1 < line.size() && line[j + 1] == '"') {
+          cell += '"';
+          ++j;
+        } else {
+          break;  // the closing quote
+        }
+      }
+      if (j >= line.size()) {  // no closing quote: the text as it stands
+        cell = std::string(trim(line.substr(i)));
+        cells.push_back(std::move(cell));
+        break;
+      }
+      const std::size_t comma = line.find(',', j + 1);
+      // Anything between the closing quote and the comma is kept, so that it is not lost quietly.
+      cell += trim(line.substr(j + 1, comma == std::string_view::npos ? std::string_view::npos
+                                                                       : comma - j - 1));
+      cells.push_back(std::move(cell));
+      if (comma == std::string_view::npos) break;
+      i = comma + 1;
+      continue;
+    }
+    const std::size_t comma = line.find(',', i);
+    cells.emplace_back(trim(line.substr(i, comma == std::string_view::npos ? std::string_view::npos
+                                                                           : comma - i)));
     if (comma == std::string_view::npos) break;
-    start = comma + 1;
+    i = comma + 1;
   }
   return cells;
 }
@@ -52,7 +81,11 @@ double CsvTable::number(const CsvRow& row, std::size_t col) const {
   const std::string& cell = row.cells[col];
   double v = 0;
   const char* end = cell.data() + cell.size();
-  const auto [ptr, ec] = std::from_chars(cell.data(), end, v);
+  // from_chars takes no '+', which spreadsheets write for positive numbers ("+0.0"); one more
+  // sign after it ("+-1") is still refused.
+  const char* begin = cell.data();
+  if (cell.size() > 1 && cell[0] == '+' && cell[1] != '-' && cell[1] != '+') ++begin;
+  const auto [ptr, ec] = std::from_chars(begin, end, v);
   if (cell.empty())
     throw InputError(file, row.line, header[col], "an empty cell", "a number");
   if (ec != std::errc{} || ptr != end)

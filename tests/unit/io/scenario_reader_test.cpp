@@ -102,6 +102,23 @@ TEST(ScenarioReader, BlockGroupsExpandAndMassFromVolume) {
   EXPECT_EQ(b[6].mass, 10.0);
 }
 
+// Quoted cells may hold commas and doubled quotes (RFC 4180), and numbers a leading '+'.
+TEST(ScenarioReader, CsvQuotedCellsAndPlusSigns) {
+  TempDir dir;
+  dir.write("p.csv", "x,z,material\n+0.0,+10,\"rock\"\n10,0,rock\n20,0,\n");
+  dir.write("b.csv", "id,mass\n\"P,01\",100\n\"the \"\"big\"\" one\",+200\n");
+  const auto l = load_scenario(
+      dir.write("s.toml", base_with(9, "file = \"p.csv\"").replace(
+                              base_with(9, "file = \"p.csv\"").find("[blocks]"), 8,
+                              "[blocks]\nfile = \"b.csv\"")),
+      kRules);
+  EXPECT_EQ(l.scenario.profile.vertices()[0].z, 10.0);
+  ASSERT_GE(l.scenario.blocks.size(), 2u);
+  EXPECT_EQ(l.scenario.blocks[0].id, "P,01");
+  EXPECT_EQ(l.scenario.blocks[1].id, "the \"big\" one");
+  EXPECT_EQ(l.scenario.blocks[1].mass, 200.0);
+}
+
 TEST(ScenarioReader, ProfileCsvWithCommentsAndMaterials) {
   TempDir dir;
   dir.write("p.csv", "# a comment\n\nx, z, material\n0,10,rock\n10,0,rock\n20,0,\n");
