@@ -212,11 +212,18 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   ProgressBar bar(!o.quiet && ::isatty(2));
   const auto t0 = std::chrono::steady_clock::now();
   std::uint64_t before = 0;
+  // The report's data sheets: the first rows over all sections, each with its section.
+  std::vector<sim::TrajectorySummary> first_trajectories;
+  std::vector<sim::Crossing> first_crossings;
+  std::vector<std::uint32_t> trajectory_sections, crossing_sections;
+  std::uint64_t total_trajectories = 0, total_crossings = 0;
   for (io::QuarrySection& s : loaded.quarries) {
     files.begin_section(s.scenario, s.spec.name);
     QuarrySink sink(files, s.geometry, all);
+    FirstRows first(sink, layout.trajectory_rows - first_trajectories.size(),
+                    layout.crossing_rows - first_crossings.size());
     const sim::RunReport rep = sim::run_simulation(
-        s.scenario, opt, sink,
+        s.scenario, opt, first,
         [&](std::uint64_t done, std::uint64_t) { bar.update(before + done, total); });
     if (rep.error)
       throw std::runtime_error(fmt::format("writing the results of section \"{}\" failed: {}",
@@ -226,6 +233,13 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
       return report_interrupted(o.out.c_str());
     }
     before += s.scenario.trajectory_count();
+    const auto section = static_cast<std::uint32_t>(&s - loaded.quarries.data());
+    trajectory_sections.insert(trajectory_sections.end(), first.trajectories.size(), section);
+    crossing_sections.insert(crossing_sections.end(), first.crossings.size(), section);
+    first_trajectories.insert(first_trajectories.end(), first.trajectories.begin(), first.trajectories.end());
+    first_crossings.insert(first_crossings.end(), first.crossings.begin(), first.crossings.end());
+    total_trajectories += first.total_trajectories;
+    total_crossings += first.total_crossings;
     inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed});
     seeds.push_back(s.scenario.settings.seed);
   }
@@ -259,6 +273,12 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   report.samples = &all;
   report.checks = results.checks;
   add_quarry_report_data(report, loaded, *results.quarry);
+  report.trajectories = std::move(first_trajectories);
+  report.crossings = std::move(first_crossings);
+  report.trajectory_sections = std::move(trajectory_sections);
+  report.crossing_sections = std::move(crossing_sections);
+  report.total_trajectories = total_trajectories;
+  report.total_crossings = total_crossings;
   io::write_report(folder->staged(io::kReportXlsx), report, layout);
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});

@@ -32,9 +32,6 @@
 namespace pierre::app {
 namespace {
 
-// Rows of the report's Trajectories and Crossings sheets (the CSV files hold every row).
-constexpr std::size_t kReportRows = 10000;
-
 class RunCommand final : public Command {
  public:
   explicit RunCommand(bool check) : check_(check) {}
@@ -140,7 +137,8 @@ class RunCommand final : public Command {
       return kExitInput;
     }
     io::ResultFiles files(folder->staging(), sc, impacts_);
-    FirstRows first(files, kReportRows, kReportRows);  // the report's data sheets
+    // The report's data sheets: as many rows as its layout shows (the CSVs hold every row).
+    FirstRows first(files, layout.trajectory_rows, layout.crossing_rows);
     ProgressBar bar(!quiet_ && ::isatty(2));
     const auto t0 = std::chrono::steady_clock::now();
     const sim::RunReport rep = sim::run_simulation(

@@ -52,7 +52,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
                  "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
-                 "id",            "beyond_profile", "pooled",    "observed_source", "total"};
+                 "id",            "beyond_profile", "pooled",    "observed_source", "total",
+                 "quarry_profile"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};
@@ -104,11 +105,11 @@ std::map<std::string, Keys, std::less<>> make_sections() {
       "trajectory", "source",   "block",       "throw",          "mass",
       "start_x",    "start_z",  "stop_x",      "stop_z",         "runout",
       "stop_reason", "duration", "impacts",    "first_impact_x", "first_impact_z",
-      "max_jump_height", "max_speed", "max_energy"};
+      "max_jump_height", "max_speed", "max_energy", "section"};
   s["headings.crossings"] = {"trajectory", "line",  "chainage", "block",  "mass",
                              "time",       "direction", "vx",   "vz",     "speed",
                              "omega",      "translational_energy", "rotational_energy",
-                             "passing_height", "sliding"};
+                             "passing_height", "sliding", "section"};
   // Quarry danger zones (design-checks.md §2).
   s["headings.quarry_summary"] = {"row",    "source", "height", "thrown", "rd_gov", "id_gov",
                                   "rd50_h", "rd95_h", "rdmax_h", "id50_h", "id95_h", "idmax_h"};

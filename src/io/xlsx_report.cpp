@@ -207,6 +207,18 @@ class Report {
     return t_.get("headings." + std::string(table), key);
   }
   const char* keep(std::string s) { return strings_.emplace_back(std::move(s)).c_str(); }
+  // The scenario a data row's names come from: its quarry section's, or the run's.
+  const sim::Scenario* row_scenario(const std::vector<std::uint32_t>& sections, std::size_t i) const {
+    if (!d_.scenario) return nullptr;
+    if (i < sections.size() && sections[i] < d_.scenario->quarries.size())
+      return &d_.scenario->quarries[sections[i]].scenario;
+    return &d_.scenario->scenario;
+  }
+  std::string section_name(const std::vector<std::uint32_t>& sections, std::size_t i) const {
+    if (d_.scenario && i < sections.size() && sections[i] < d_.scenario->quarries.size())
+      return d_.scenario->quarries[sections[i]].spec.name;
+    return {};
+  }
   // Sets row r's height to show every wrapped text: (text, width of its cells in characters).
   void fit_row(lxw_worksheet* ws, Row r,
                std::initializer_list<std::pair<const std::string*, double>> cells);
@@ -831,27 +843,39 @@ void Report::inputs(lxw_worksheet* ws) {
     text(ws, r++, 0, t_.get("titles", "blocks"), section());
     headings(ws, r++, 0, "blocks",
              {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"});
-    for (const auto& b : sc->block_groups) {
-      text(ws, r, 0, b.id);
-      num(ws, r, 1, b.mass, number("mass"));
-      num(ws, r, 2, b.volume, number("volume"));
-      num(ws, r, 3, b.density, number("density"));
-      num(ws, r, 4, b.shape_min, number("factor"));
-      num(ws, r, 5, b.shape_max, number("factor"));
-      count(ws, r++, 6, b.count);
-    }
+    // A quarry scenario's blocks and sources are its sections': each under its name.
+    auto each_section = [&](auto&& write) {
+      if (sc->quarries.empty()) return write(sc->block_groups, s.sources);
+      for (const auto& q : sc->quarries) {
+        text(ws, r++, 0, q.spec.name, bold());
+        write(q.block_groups, q.scenario.sources);
+      }
+    };
+    each_section([&](const auto& groups, const auto&) {
+      for (const auto& b : groups) {
+        text(ws, r, 0, b.id);
+        num(ws, r, 1, b.mass, number("mass"));
+        num(ws, r, 2, b.volume, number("volume"));
+        num(ws, r, 3, b.density, number("density"));
+        num(ws, r, 4, b.shape_min, number("factor"));
+        num(ws, r, 5, b.shape_max, number("factor"));
+        count(ws, r++, 6, b.count);
+      }
+    });
 
     ++r;
     text(ws, r++, 0, t_.get("titles", "sources"), section());
     headings(ws, r++, 0, "sources", {"name", "x", "z", "vx", "vz", "omega"});
-    for (const auto& so : s.sources) {
-      text(ws, r, 0, so.name);
-      num(ws, r, 1, so.position.x, number("coordinate"));
-      num(ws, r, 2, so.position.z, number("coordinate"));
-      num(ws, r, 3, so.velocity.x, number("speed"));
-      num(ws, r, 4, so.velocity.z, number("speed"));
-      num(ws, r++, 5, so.omega, number("speed"));
-    }
+    each_section([&](const auto&, const auto& sources) {
+      for (const auto& so : sources) {
+        text(ws, r, 0, so.name);
+        num(ws, r, 1, so.position.x, number("coordinate"));
+        num(ws, r, 2, so.position.z, number("coordinate"));
+        num(ws, r, 3, so.velocity.x, number("speed"));
+        num(ws, r, 4, so.velocity.z, number("speed"));
+        num(ws, r++, 5, so.omega, number("speed"));
+      }
+    });
 
     ++r;
     text(ws, r++, 0, t_.get("titles", "observation_lines"), section());
@@ -1309,6 +1333,10 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   page_setup(ws);
   width(ws, 0, 7, 12);
   text(ws, 0, 0, t_.get("titles", "profile"), title());
+  if (d_.quarry) {  // sections have profiles of their own, drawn on their rows' sheets
+    text(ws, 2, 0, t_.get("labels", "quarry_profile"), note());
+    return;
+  }
   const Row chart_row = 2;
   const Row rows_for_chart = static_cast<Row>(std::ceil(1.8 * t_.chart_height / 20.0)) + 2;
   Row r = chart_row + rows_for_chart;
@@ -2012,19 +2040,30 @@ void Report::trajectories(lxw_worksheet* ws) {
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_trajectories, d_.trajectories.size());
   Row r = cap_note(ws, 1, shown, total, "trajectories.csv");
   const Row head = r;
-  headings(ws, r++, 0, "trajectories",
+  // A quarry run leads with the section of each row; its names come from that section.
+  const bool by_section = !d_.trajectory_sections.empty();
+  const Col c0 = by_section ? 1 : 0;
+  if (by_section) headings(ws, r, 0, "trajectories", {"section"}, 45);
+  headings(ws, r++, c0, "trajectories",
            {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x",
             "stop_z", "runout", "stop_reason", "duration", "impacts", "first_impact_x",
             "first_impact_z", "max_jump_height", "max_speed", "max_energy"},
            45);
-  worksheet_freeze_panes(ws, r, 1);
+  worksheet_freeze_panes(ws, r, 1 + c0);
   check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
-  const sim::Scenario* s = d_.scenario ? &d_.scenario->scenario : nullptr;
   lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
              *lf = number("length"), *tf = number("time"), *sf = number("speed"),
              *ef = number("energy");
   for (std::size_t i = 0; i < shown; ++i, ++r) {
     const auto& t = d_.trajectories[i];
+    const sim::Scenario* s = row_scenario(d_.trajectory_sections, i);
+    if (by_section) text(ws, r, 0, section_name(d_.trajectory_sections, i));
+    auto num = [&](lxw_worksheet* w, Row rr, Col c, double v, lxw_format* f) {
+      this->num(w, rr, c + c0, v, f);
+    };
+    auto text = [&](lxw_worksheet* w, Row rr, Col c, const std::string& v, lxw_format* f = nullptr) {
+      this->text(w, rr, c + c0, v, f);
+    };
     num(ws, r, 0, static_cast<double>(t.trajectory), cf);
     if (s && t.source < s->sources.size()) text(ws, r, 1, s->sources[t.source].name);
     else num(ws, r, 1, t.source, cf);
@@ -2049,7 +2088,7 @@ void Report::trajectories(lxw_worksheet* ws) {
     num(ws, r, 17, t.max_energy / 1000, ef);
   }
   const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
-  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 17), "worksheet_print_area");
+  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 17 + c0), "worksheet_print_area");
 }
 
 void Report::crossings(lxw_worksheet* ws) {
@@ -2062,19 +2101,29 @@ void Report::crossings(lxw_worksheet* ws) {
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_crossings, d_.crossings.size());
   Row r = cap_note(ws, 1, shown, total, "crossings.csv");
   const Row head = r;
-  headings(ws, r++, 0, "crossings",
+  const bool by_section = !d_.crossing_sections.empty();
+  const Col c0 = by_section ? 1 : 0;
+  if (by_section) headings(ws, r, 0, "crossings", {"section"}, 45);
+  headings(ws, r++, c0, "crossings",
            {"trajectory", "line", "chainage", "block", "mass", "time", "direction", "vx", "vz",
             "speed", "omega", "translational_energy", "rotational_energy", "passing_height",
             "sliding"},
            45);
-  worksheet_freeze_panes(ws, r, 1);
+  worksheet_freeze_panes(ws, r, 1 + c0);
   check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
-  const sim::Scenario* s = d_.scenario ? &d_.scenario->scenario : nullptr;
   lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
              *lf = number("length"), *tf = number("time"), *sf = number("speed"),
              *ef = number("energy"), *gf = number("general");
   for (std::size_t i = 0; i < shown; ++i, ++r) {
     const auto& c = d_.crossings[i];
+    const sim::Scenario* s = row_scenario(d_.crossing_sections, i);
+    if (by_section) text(ws, r, 0, section_name(d_.crossing_sections, i));
+    auto num = [&](lxw_worksheet* w, Row rr, Col col, double v, lxw_format* f) {
+      this->num(w, rr, col + c0, v, f);
+    };
+    auto text = [&](lxw_worksheet* w, Row rr, Col col, const std::string& v, lxw_format* f = nullptr) {
+      this->text(w, rr, col + c0, v, f);
+    };
     num(ws, r, 0, static_cast<double>(c.trajectory), cf);
     text(ws, r, 1, line_name(c.line));
     num(ws, r, 2, line_chainage(c.line), xf);
@@ -2093,7 +2142,7 @@ void Report::crossings(lxw_worksheet* ws) {
     num(ws, r, 14, c.sliding ? 1 : 0, cf);
   }
   const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
-  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 14), "worksheet_print_area");
+  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 14 + c0), "worksheet_print_area");
 }
 
 // ---- the whole workbook ----------------------------------------------------------------

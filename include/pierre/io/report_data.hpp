@@ -42,6 +42,9 @@ struct ReportData {
   std::vector<sim::TrajectorySummary> trajectories;
   std::vector<sim::Crossing> crossings;
   std::uint64_t total_trajectories = 0, total_crossings = 0;
+  // A quarry run: the section of each row above (an index into scenario->quarries); the
+  // sheets then lead with a section column and take names from that section. Empty otherwise.
+  std::vector<std::uint32_t> trajectory_sections, crossing_sections;
 };
 
 }  // namespace pierre::io

@@ -5,6 +5,8 @@
 // thread-count reproducibility, and the shipped example (examples/quarry-austria).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstdio>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -107,6 +109,30 @@ TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
   if (!parts.empty()) {
     const std::size_t charts = count_of(parts, "xl/charts/chart");
     EXPECT_GE(charts, 2u * 5u) << parts;  // per row: a section chart, 2 histograms, 2 CDFs
+    // The data sheets hold every section's rows (there were none), led by the section's name.
+    auto part = [&](const std::string& name) {
+      std::string text;
+      if (FILE* p = ::popen(("unzip -p '" + (out / "report.xlsx").string() + "' " + name).c_str(), "r")) {
+        char buf[4096];
+        for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) text.append(buf, n);
+        ::pclose(p);
+      }
+      return text;
+    };
+    const std::string wb = part("xl/workbook.xml"), strings = part("xl/sharedStrings.xml");
+    int index = 0, sheet = 0;
+    for (auto at = wb.find("<sheet name=\""); at != std::string::npos; at = wb.find("<sheet name=\"", at + 1)) {
+      ++index;
+      if (wb.compare(at + 13, 13, "Trajectories\"") == 0) sheet = index;
+    }
+    ASSERT_GT(sheet, 0) << wb;
+    const std::string rows = part("xl/worksheets/sheet" + std::to_string(sheet) + ".xml");
+    const std::string csv = slurp(out / "trajectories.csv");
+    const auto lines = static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n'));
+    EXPECT_EQ(count_of(rows, "<row "), lines - 1 + 3);  // title, note, headings; every trajectory
+    EXPECT_NE(strings.find(">Quarry section<"), std::string::npos);
+    for (const char* section : {">North<", ">South<"})
+      EXPECT_NE(strings.find(section), std::string::npos) << section;
   }
   // `pierre run` exits 0 whatever the checks say.
   const fs::path out2 = dir_ / "out2";
