@@ -137,13 +137,13 @@ void print_design(std::FILE* out, const io::DesignResults& r) {
   if (r.barriers.empty() && r.checks.empty()) return;
   if (!r.barriers.empty()) {
     fmt::print(out, "\nBarriers (ETAG 027, design-checks.md §1; characteristic values at the rule set's percentile)\n");
-    fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>9} {:>9} {:>6} {:>7}\n", "barrier",
-               "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req", "SEL_req",
+    fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>10} {:>10} {:>6} {:>7}\n", "barrier",
+               "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req kJ", "SEL_req kJ",
                "class", "h_i m");
     for (const auto& d : r.barriers)
       fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>6} {}\n", d.spec.name, d.spec.line,
                  d.rules_name, g(d.v_k.value, 8), g(d.h_k.value, 8), g(d.v_d, 8), g(d.E_d_kJ, 9),
-                 g(d.MEL_req_kJ, 9), g(d.SEL_req_kJ, 9),
+                 g(d.MEL_req_kJ, 10), g(d.SEL_req_kJ, 10),
                  d.energy_class ? std::to_string(d.energy_class->number) +
                                       (d.energy_class->open_ended ? "+" : "")
                                 : std::string("-"),
