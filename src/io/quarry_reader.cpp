@@ -288,6 +288,9 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
         const std::string field = fmt::format("{}[{}]", q.field("exceedance"), k);
         const double v = coordinate(q, e, field, expected);
         if (!(v > 0 && v < 1)) throw InputError(file, line_of(e), field, describe(e), expected);
+        if (std::find(spec.exceedance.begin(), spec.exceedance.end(), v) != spec.exceedance.end())
+          throw InputError(file, line_of(e), field, describe(e),
+                           "a probability not already in the list (each gives one row)");
         spec.exceedance.push_back(v);
       }
     }

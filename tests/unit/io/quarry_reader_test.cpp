@@ -205,6 +205,7 @@ const ErrorCase kErrors[] = {
     {"unknown_key", 4, "bench = 12.0", 4, "quarries[0].bench", "an unknown key"},
     {"bench_width_zero", 4, "bench_width = 0.0", 4, "quarries[0].bench_width", "0.0"},
     {"exceedance_one", 5, "exceedance = [0.05, 1.0]", 5, "quarries[0].exceedance[1]", "1.0"},
+    {"exceedance_twice", 5, "exceedance = [0.05, 0.01, 0.05]", 5, "quarries[0].exceedance[2]", "0.05"},
     {"unknown_material", 8,
      "points = [[0.0, 20.0, \"floor\"], [10.0, 20.0, \"rock\"], [20.0, 0.0, \"floor\"], [90.0, 0.0, \"\"]]",
      8, "quarries[0].profile.points[1]", "\"rock\""},
