@@ -1,7 +1,9 @@
 #include "data_folders.hpp"
 
 #include <cstdlib>
+#include <string>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -11,6 +13,11 @@ namespace pierre::app {
 namespace {
 
 namespace fs = std::filesystem;
+
+struct DataFolder {
+  fs::path path;                      // the folder to use
+  std::vector<std::string> searched;  // every place looked at, in order, for error messages
+};
 
 DataFolder find(const char* name, const char* env_var, const char* probe) {
   DataFolder f;
@@ -45,15 +52,13 @@ DataFolder find(const char* name, const char* env_var, const char* probe) {
 
 }  // namespace
 
-DataFolder rules_folder(const std::string& option) {
-  if (!option.empty()) return {option, {"--rules " + option}};
-  return find("rules", "PIERRE_RULES", "materials.toml");
+fs::path rules_folder(const std::string& option) {
+  if (!option.empty()) return option;
+  return find("rules", "PIERRE_RULES", "materials.toml").path;
 }
 
-DataFolder templates_folder() { return find("templates", "PIERRE_TEMPLATES", "report.toml"); }
-
 io::ReportTemplate load_report_layout() {
-  const DataFolder f = templates_folder();
+  const DataFolder f = find("templates", "PIERRE_TEMPLATES", "report.toml");
   const fs::path file = f.path / "report.toml";
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) {

@@ -5,28 +5,19 @@
 
 #include <filesystem>
 #include <string>
-#include <vector>
 
 #include "pierre/io/report_template.hpp"
 
 namespace pierre::app {
 
-struct DataFolder {
-  std::filesystem::path path;          // the folder to use
-  std::vector<std::string> searched;   // every place looked at, in order, for error messages
-};
-
 // The rules folder: `option` (--rules) when given; else $PIERRE_RULES when set; else the first
 // of <executable>/../rules, <executable>/../share/pierre/rules, ./rules and the source tree's
 // rules/ (when built from source) that holds materials.toml (the last when none does).
-DataFolder rules_folder(const std::string& option);
+std::filesystem::path rules_folder(const std::string& option);
 
-// The templates folder: $PIERRE_TEMPLATES when set; else the first of the same places (with
-// templates/ for rules/) that holds report.toml (the last when none does).
-DataFolder templates_folder();
-
-// The report layout, read before anything is simulated so that a missing or broken template
-// costs nothing: an io::InputError (exit 2) names the places searched when there is none.
+// The report layout, templates/report.toml, with templates/ looked for the same way
+// ($PIERRE_TEMPLATES, then the same places). Read before anything is simulated, so that a
+// missing or broken one costs nothing: an io::InputError (exit 2) names the places searched.
 io::ReportTemplate load_report_layout();
 
 }  // namespace pierre::app

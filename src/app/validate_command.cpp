@@ -24,7 +24,7 @@ class ValidateCommand final : public Command {
   }
 
   int run() override {
-    const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_).path);
+    const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
     load_report_layout();  // `run` needs it too: a missing or broken one is said now
     if (!l.quarries.empty()) return print_quarries(l);
     const sim::Scenario& s = l.scenario;

@@ -56,16 +56,18 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
   if (!needed)
     set(l, CheckStatus::not_applicable,
         std::string("the rule set designs on ") + to_string(b.r.design_on) + ", not " + name);
-  else if (std::isnan(declared))
-    set(l, declares_energy ? CheckStatus::fail : CheckStatus::not_applicable,
-        std::string(declares_energy ? "the rule set designs on " +
-                                          std::string(b.r.design_on == DesignOn::both
-                                                          ? "MEL and SEL"
-                                                          : to_string(b.r.design_on)) +
-                                          " and the candidate declares no "
-                                    : "the candidate declares no ") +
-            name + " (give " + (std::string(name) == "MEL" ? "mel" : "sel") +
-            ", or an energy_class whose " + name + " the class table holds)");
+  else if (std::isnan(declared)) {
+    const std::string missing = std::string("the candidate declares no ") + name + " (give " +
+                                (std::string(name) == "MEL" ? "mel" : "sel") +
+                                ", or an energy_class whose " + name + " the class table holds)";
+    if (!declares_energy)
+      set(l, CheckStatus::not_applicable, missing);
+    else
+      set(l, CheckStatus::fail,
+          "the rule set designs on " +
+              std::string(b.r.design_on == DesignOn::both ? "MEL and SEL" : to_string(b.r.design_on)) +
+              " and " + missing);
+  }
   else if (declared >= required)
     set(l, CheckStatus::pass, std::string("candidate ") + name + " " + num(declared) + " kJ >= required " +
                                   num(required) + " kJ");

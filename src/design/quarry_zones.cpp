@@ -56,6 +56,11 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
   g.percentile_h = g.maximum_h = g.lognormal_h = kNaN;
   g.value_h = kNaN;
   std::string how;
+  // "<label> 0.51 H", "<label> beyond the profile", or "<label>: no values" (an empty sample).
+  auto labelled = [](const std::string& label, double v_h) {
+    if (std::isnan(v_h)) return label + ": no values";
+    return label + " " + num(v_h) + (std::isfinite(v_h) ? " H" : "");
+  };
   auto take = [&](double v, const std::string& text) {
     how += (how.empty() ? "" : ", ") + text;
     if (std::isnan(v)) return;
@@ -65,15 +70,11 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
     switch (c) {
       case QuarryGoverning::percentile:
         g.percentile_h = stats::percentile(sample.normalized, rules.percentile);
-        take(g.percentile_h, "P" + num(rules.percentile) +
-                                 (std::isnan(g.percentile_h) ? ": no values"
-                                  : std::isfinite(g.percentile_h) ? " " + num(g.percentile_h) + " H"
-                                                                 : " " + num(g.percentile_h)));
+        take(g.percentile_h, labelled("P" + num(rules.percentile), g.percentile_h));
         break;
       case QuarryGoverning::maximum:
         g.maximum_h = st.max_h;
-        take(g.maximum_h, std::isnan(g.maximum_h) ? std::string("maximum: no values")
-                          : "maximum " + num(g.maximum_h) + (std::isfinite(g.maximum_h) ? " H" : ""));
+        take(g.maximum_h, labelled("maximum", g.maximum_h));
         break;
       case QuarryGoverning::lognormal:
         if (st.fit) {

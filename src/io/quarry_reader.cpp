@@ -225,10 +225,16 @@ void read_observed(const TomlTable& q, QuarrySection& out) {
 
 }  // namespace
 
+namespace {
+// A rule set named in rules_dir, or a path.
+fs::path quarry_rules_file(const std::string& name_or_path, const fs::path& rules_dir) {
+  return is_path(name_or_path) ? fs::path(name_or_path) : rules_dir / (name_or_path + ".toml");
+}
+}  // namespace
+
 design::QuarryRuleSet load_quarry_rules(const std::string& name_or_path,
                                         const std::filesystem::path& rules_dir) {
-  const fs::path file = is_path(name_or_path) ? fs::path(name_or_path)
-                                              : rules_dir / (name_or_path + ".toml");
+  const fs::path file = quarry_rules_file(name_or_path, rules_dir);
   return read_rules(file, file.stem().string());
 }
 
@@ -256,8 +262,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     q.check("rules", !spec.rules.empty(), "a rule set name or path");
     const std::string rules_arg =
         is_path(spec.rules) ? relative_to(file, spec.rules).string() : spec.rules;
-    const fs::path rules_file =
-        is_path(rules_arg) ? fs::path(rules_arg) : rules_dir / (rules_arg + ".toml");
+    const fs::path rules_file = quarry_rules_file(rules_arg, rules_dir);
     if (const auto kind = detail::rule_file_kind(rules_file);
         kind != detail::RuleFileKind::quarry && kind != detail::RuleFileKind::other)
       q.fail("rules", fmt::format("a quarry rule set (e.g. \"quarry-thesis-2015\", "
@@ -345,13 +350,17 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     sc.settings.floor_segment = s.geometry.floor_segment;
     out.push_back(std::move(s));
   }
+  // The checks across sections report at the later section's table.
+  auto section_table = [&](std::size_t i) {
+    const toml::node& node = *a->get(i);
+    return TomlTable(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node), {});
+  };
   // Sections pooled in one group must follow one rule set.
   for (std::size_t i = 0; i < out.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (!out[i].spec.group.empty() && out[i].spec.group == out[j].spec.group &&
           out[i].rules.name != out[j].rules.name) {
-        const toml::node& node = *a->get(i);
-        const TomlTable q(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node), {});
+        const TomlTable q = section_table(i);
         q.fail(q.has("rules") ? "rules" : "group",
                fmt::format("the rule set of the other sections of group \"{}\" (\"{}\")",
                            out[i].spec.group, out[j].rules.name));
@@ -370,8 +379,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     for (std::size_t j = 0; j < i; ++j)
       if (!out[i].spec.group.empty() && out[i].spec.group == out[j].spec.group &&
           ((raw(out[i]) && summary(out[j])) || (summary(out[i]) && raw(out[j])))) {
-        const toml::node& node = *a->get(i);
-        const TomlTable q(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node), {});
+        const TomlTable q = section_table(i);
         q.fail("observed", fmt::format("observed values of the kind the other sections of group "
                                        "\"{}\" give (quarries[{}] gives {}): raw observations "
                                        "(file) in every section, or summary values",
@@ -383,8 +391,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     for (std::size_t j = 0; j < out.size(); ++j)
       if (!out[i].spec.group.empty() && out[i].spec.group == out[j].spec.name &&
           out[j].spec.group != out[i].spec.group) {
-        const toml::node& node = *a->get(i);
-        const TomlTable q(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node), {});
+        const TomlTable q = section_table(i);
         q.fail("group", fmt::format("a group name that no section outside the group has "
                                     "(quarries[{}] is named \"{}\")",
                                     j, out[j].spec.name));

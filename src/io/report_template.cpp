@@ -360,5 +360,4 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
   return tpl;
 }
 
-
 }  // namespace pierre::io

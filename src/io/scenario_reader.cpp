@@ -16,8 +16,8 @@
 #include "csv_table.hpp"
 #include "pierre/io/quarry_reader.hpp"
 #include "pierre/io/rule_set_reader.hpp"
-#include "section_readers.hpp"
 #include "rule_kind.hpp"
+#include "section_readers.hpp"
 #include "text_check.hpp"
 #include "toml_fields.hpp"
 
@@ -415,13 +415,13 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
         t.fail("rules", expected + fmt::format(" ({} does not exist)", rules_file.string()));
       t.missing("rules", expected);
     }
-    if (const auto kind = detail::rule_file_kind(rules_file);
-        kind != detail::RuleFileKind::barrier && kind != detail::RuleFileKind::other)
-      t.fail("rules", fmt::format("a barrier rule set ({} is {}; the barrier rule sets of {} are {})",
-                                  rules_file.string(), detail::describe(kind), rules_dir.string(),
-                                  quoted_list(barrier_rule_set_names(rules_dir))));
     auto cached = cache.find(rules_file);
-    if (cached == cache.end()) {
+    if (cached == cache.end()) {  // read once per file, however many barriers name it
+      if (const auto kind = detail::rule_file_kind(rules_file);
+          kind != detail::RuleFileKind::barrier && kind != detail::RuleFileKind::other)
+        t.fail("rules", fmt::format("a barrier rule set ({} is {}; the barrier rule sets of {} are {})",
+                                    rules_file.string(), detail::describe(kind), rules_dir.string(),
+                                    quoted_list(barrier_rule_set_names(rules_dir))));
       design::BarrierRuleSet rules = load_rule_set_file(rules_file);
       fs::path classes_file = rules_file.parent_path() / (rules.classes + ".toml");
       if (!fs::is_regular_file(classes_file, ec)) classes_file = rules_dir / (rules.classes + ".toml");
@@ -551,6 +551,5 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
   read_barriers(top, rules_dir, out);
   return out;
 }
-
 
 }  // namespace pierre::io

@@ -6,8 +6,8 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <optional>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 

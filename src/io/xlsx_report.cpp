@@ -207,17 +207,29 @@ class Report {
     return t_.get("headings." + std::string(table), key);
   }
   const char* keep(std::string s) { return strings_.emplace_back(std::move(s)).c_str(); }
-  // The scenario a data row's names come from: its quarry section's, or the run's.
-  const sim::Scenario* row_scenario(const std::vector<std::uint32_t>& sections, std::size_t i) const {
-    if (!d_.scenario) return nullptr;
-    if (i < sections.size() && sections[i] < d_.scenario->quarries.size())
-      return &d_.scenario->quarries[sections[i]].scenario;
-    return &d_.scenario->scenario;
-  }
-  std::string section_name(const std::vector<std::uint32_t>& sections, std::size_t i) const {
-    if (d_.scenario && i < sections.size() && sections[i] < d_.scenario->quarries.size())
-      return d_.scenario->quarries[sections[i]].spec.name;
-    return {};
+  // One row of a data sheet (Trajectories, Crossings). In a quarry run its first cell names the
+  // row's section and the others move one column right; names come from that section.
+  struct DataRow {
+    Report& rep;
+    lxw_worksheet* ws;
+    Row r;
+    Col c0;
+    const sim::Scenario* scenario;
+    void num(Col c, double v, lxw_format* f) const { rep.num(ws, r, c + c0, v, f); }
+    void text(Col c, const std::string& v, lxw_format* f = nullptr) const {
+      rep.text(ws, r, c + c0, v, f);
+    }
+  };
+  DataRow data_row(lxw_worksheet* ws, Row r, const std::vector<std::uint32_t>& sections,
+                   std::size_t i) {
+    DataRow row{*this, ws, r, sections.empty() ? Col{0} : Col{1},
+                d_.scenario ? &d_.scenario->scenario : nullptr};
+    if (d_.scenario && i < sections.size() && sections[i] < d_.scenario->quarries.size()) {
+      const auto& q = d_.scenario->quarries[sections[i]];
+      text(ws, r, 0, q.spec.name);
+      row.scenario = &q.scenario;
+    }
+    return row;
   }
   // Sets row r's height to show every wrapped text: (text, width of its cells in characters).
   void fit_row(lxw_worksheet* ws, Row r,
@@ -2056,36 +2068,30 @@ void Report::trajectories(lxw_worksheet* ws) {
              *ef = number("energy");
   for (std::size_t i = 0; i < shown; ++i, ++r) {
     const auto& t = d_.trajectories[i];
-    const sim::Scenario* s = row_scenario(d_.trajectory_sections, i);
-    if (by_section) text(ws, r, 0, section_name(d_.trajectory_sections, i));
-    auto num = [&](lxw_worksheet* w, Row rr, Col c, double v, lxw_format* f) {
-      this->num(w, rr, c + c0, v, f);
-    };
-    auto text = [&](lxw_worksheet* w, Row rr, Col c, const std::string& v, lxw_format* f = nullptr) {
-      this->text(w, rr, c + c0, v, f);
-    };
-    num(ws, r, 0, static_cast<double>(t.trajectory), cf);
-    if (s && t.source < s->sources.size()) text(ws, r, 1, s->sources[t.source].name);
-    else num(ws, r, 1, t.source, cf);
-    if (s && t.block < s->blocks.size()) text(ws, r, 2, s->blocks[t.block].id);
-    else num(ws, r, 2, t.block, cf);
-    num(ws, r, 3, t.throw_index, cf);
-    num(ws, r, 4, t.mass, mf);
-    num(ws, r, 5, t.start.x, xf);
-    num(ws, r, 6, t.start.z, xf);
-    num(ws, r, 7, t.stop.x, xf);
-    num(ws, r, 8, t.stop.z, xf);
-    num(ws, r, 9, t.runout(), lf);
-    text(ws, r, 10, std::string(sim::to_string(t.stop_reason)), centred());
-    num(ws, r, 11, t.duration, tf);
-    num(ws, r, 12, t.impacts, cf);
+    const DataRow row = data_row(ws, r, d_.trajectory_sections, i);
+    const sim::Scenario* s = row.scenario;
+    row.num(0, static_cast<double>(t.trajectory), cf);
+    if (s && t.source < s->sources.size()) row.text(1, s->sources[t.source].name);
+    else row.num(1, t.source, cf);
+    if (s && t.block < s->blocks.size()) row.text(2, s->blocks[t.block].id);
+    else row.num(2, t.block, cf);
+    row.num(3, t.throw_index, cf);
+    row.num(4, t.mass, mf);
+    row.num(5, t.start.x, xf);
+    row.num(6, t.start.z, xf);
+    row.num(7, t.stop.x, xf);
+    row.num(8, t.stop.z, xf);
+    row.num(9, t.runout(), lf);
+    row.text(10, std::string(sim::to_string(t.stop_reason)), centred());
+    row.num(11, t.duration, tf);
+    row.num(12, t.impacts, cf);
     if (t.has_first_impact) {
-      num(ws, r, 13, t.first_impact.x, xf);
-      num(ws, r, 14, t.first_impact.z, xf);
+      row.num(13, t.first_impact.x, xf);
+      row.num(14, t.first_impact.z, xf);
     }
-    num(ws, r, 15, t.max_jump_height, lf);
-    num(ws, r, 16, t.max_speed, sf);
-    num(ws, r, 17, t.max_energy / 1000, ef);
+    row.num(15, t.max_jump_height, lf);
+    row.num(16, t.max_speed, sf);
+    row.num(17, t.max_energy / 1000, ef);
   }
   const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
   check(worksheet_print_area(ws, 0, 0, std::max(last, head), 17 + c0), "worksheet_print_area");
@@ -2116,30 +2122,24 @@ void Report::crossings(lxw_worksheet* ws) {
              *ef = number("energy"), *gf = number("general");
   for (std::size_t i = 0; i < shown; ++i, ++r) {
     const auto& c = d_.crossings[i];
-    const sim::Scenario* s = row_scenario(d_.crossing_sections, i);
-    if (by_section) text(ws, r, 0, section_name(d_.crossing_sections, i));
-    auto num = [&](lxw_worksheet* w, Row rr, Col col, double v, lxw_format* f) {
-      this->num(w, rr, col + c0, v, f);
-    };
-    auto text = [&](lxw_worksheet* w, Row rr, Col col, const std::string& v, lxw_format* f = nullptr) {
-      this->text(w, rr, col + c0, v, f);
-    };
-    num(ws, r, 0, static_cast<double>(c.trajectory), cf);
-    text(ws, r, 1, line_name(c.line));
-    num(ws, r, 2, line_chainage(c.line), xf);
-    if (s && c.block < s->blocks.size()) text(ws, r, 3, s->blocks[c.block].id);
-    else num(ws, r, 3, c.block, cf);
-    num(ws, r, 4, c.mass, mf);
-    num(ws, r, 5, c.time, tf);
-    num(ws, r, 6, c.direction, gf);
-    num(ws, r, 7, c.velocity.x, sf);
-    num(ws, r, 8, c.velocity.z, sf);
-    num(ws, r, 9, c.speed, sf);
-    num(ws, r, 10, c.omega, sf);
-    num(ws, r, 11, c.translational_energy / 1000, ef);
-    num(ws, r, 12, c.rotational_energy / 1000, ef);
-    num(ws, r, 13, c.height, lf);
-    num(ws, r, 14, c.sliding ? 1 : 0, cf);
+    const DataRow row = data_row(ws, r, d_.crossing_sections, i);
+    const sim::Scenario* s = row.scenario;
+    row.num(0, static_cast<double>(c.trajectory), cf);
+    row.text(1, line_name(c.line));
+    row.num(2, line_chainage(c.line), xf);
+    if (s && c.block < s->blocks.size()) row.text(3, s->blocks[c.block].id);
+    else row.num(3, c.block, cf);
+    row.num(4, c.mass, mf);
+    row.num(5, c.time, tf);
+    row.num(6, c.direction, gf);
+    row.num(7, c.velocity.x, sf);
+    row.num(8, c.velocity.z, sf);
+    row.num(9, c.speed, sf);
+    row.num(10, c.omega, sf);
+    row.num(11, c.translational_energy / 1000, ef);
+    row.num(12, c.rotational_energy / 1000, ef);
+    row.num(13, c.height, lf);
+    row.num(14, c.sliding ? 1 : 0, cf);
   }
   const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
   check(worksheet_print_area(ws, 0, 0, std::max(last, head), 14 + c0), "worksheet_print_area");

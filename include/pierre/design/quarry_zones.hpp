@@ -15,8 +15,8 @@
 // QuarryDesign out.
 #pragma once
 
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>

@@ -51,5 +51,4 @@ struct LoadedScenario {
 LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
                              const std::filesystem::path& rules_dir);
 
-
 }  // namespace pierre::io
