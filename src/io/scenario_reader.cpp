@@ -210,6 +210,12 @@ sim::SimulationSettings read_simulation(const TomlTable& top) {
   r.mean = s->number("roughness_mean", ModelDefaults::roughness_mean);
   r.sd = s->number("roughness_sd", ModelDefaults::roughness_sd);
   s->check("roughness_sd", r.sd > 0, "a standard deviation > 0");
+  // X is the normal truncated to X > 0: 30 σ below 0 its part above 0, Φ(−30) ≈ 5e-198, is
+  // about the last a double carries through the inverse CDF.
+  s->check("roughness_mean", r.mean >= -30.0 * r.sd,
+           fmt::format("a mean >= -30 × roughness_sd = {:g} (X is the normal truncated to X > 0; "
+                       "further below 0 none of it is left to draw from)",
+                       -30.0 * r.sd));
   r.b = s->number("size_reduction_b", ModelDefaults::size_reduction_b);
   s->check("size_reduction_b", r.b > 0, "a number > 0 (Eq 6.6)");
   r.m = s->number("size_reduction_m", ModelDefaults::size_reduction_m);

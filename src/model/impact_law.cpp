@@ -14,7 +14,7 @@ ImpactLaw::ImpactLaw(const RoughnessModel& roughness, double stop_head_factor, d
     : roughness_(roughness),
       stop_head_factor_(stop_head_factor),
       g_(gravity),
-      cdf_lo_(roughness.truncation_cdf()) {}
+      kept_mass_(roughness.kept_mass()) {}
 
 SurfaceConstants ImpactLaw::surface(const Material& m) const {
   SurfaceConstants s;
@@ -40,7 +40,7 @@ BlockConstants ImpactLaw::block(const Block& b) const {
 
 ImpactSample ImpactLaw::sample(const ImpactDraws& draws, const BlockConstants& blk) const {
   ImpactSample smp;
-  smp.x = roughness_.sample(draws.roughness_u, cdf_lo_);  // Eq 3.5 or 3.4
+  smp.x = roughness_.sample(draws.roughness_u, kept_mass_);  // Eq 3.5 or 3.4
   smp.f = blk.f_min + blk.f_range * draws.shape_u;        // Eq 3.9
   smp.r_eff = smp.f * blk.radius;
   smp.kappa = 1.0 + 2.5 * smp.f * smp.f;

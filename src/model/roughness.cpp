@@ -10,15 +10,16 @@ double RoughnessModel::size_factor(double diameter) const {
   return std::max(floor, b - m * diameter);  // Eq 6.6 with the floor of §3.4.1
 }
 
-double RoughnessModel::truncation_cdf() const {
-  return distribution == RoughnessDistribution::truncated_normal ? normal_cdf(-mean / sd) : 0.0;
+double RoughnessModel::kept_mass() const {
+  return distribution == RoughnessDistribution::truncated_normal ? normal_cdf(mean / sd) : 1.0;
 }
 
-double RoughnessModel::sample(double u, double cdf_lo) const {
+double RoughnessModel::sample(double u, double kept) const {
   if (distribution == RoughnessDistribution::uniform) return u;  // Eq 3.4
-  // Inverse CDF of N(μ, σ²) restricted to X > 0: p uniform on (Φ(−μ/σ), 1).
-  const double p = cdf_lo + u * (1.0 - cdf_lo);
-  return std::max(0.0, mean + sd * normal_quantile(p));
+  // Inverse CDF of N(μ, σ²) restricted to X > 0, S = Φ(μ/σ) the mass kept: z = Φ⁻¹(1 − (1 − u) S)
+  // = −Φ⁻¹((1 − u) S). Written from the upper tail, S keeps its digits when μ lies well below 0
+  // (Φ(−μ/σ) = 1 − S would round to 1 and every draw to +∞); 1 − u is exact for our uniforms.
+  return std::max(0.0, mean - sd * normal_quantile((1.0 - u) * kept));
 }
 
 double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }

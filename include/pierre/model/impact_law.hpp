@@ -98,7 +98,7 @@ class ImpactLaw {
   RoughnessModel roughness_;
   double stop_head_factor_;
   double g_;
-  double cdf_lo_;  // Φ(−μ/σ): the truncation point of the roughness normal
+  double kept_mass_;  // Φ(μ/σ): the part of the roughness normal above 0
 };
 
 }  // namespace pierre::model

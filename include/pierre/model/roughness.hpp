@@ -20,12 +20,12 @@ struct RoughnessModel {
 
   // f_size for a block of diameter D (m).
   double size_factor(double diameter) const;
-  // Φ(−μ/σ): the probability mass the truncation removes; compute once, pass to sample().
-  double truncation_cdf() const;
+  // Φ(μ/σ): the probability mass the truncation keeps (X > 0); compute once, pass to sample().
+  double kept_mass() const;
   // X from one uniform u in (0, 1). The truncated normal is drawn by inverting its CDF: the same
   // distribution as redrawing negatives, with exactly one uniform per impact so that every
   // implementation fed the same stream draws the same X.
-  double sample(double u, double truncation_cdf) const;
+  double sample(double u, double kept_mass) const;
 };
 
 // Standard normal quantile Φ⁻¹(p), p in (0, 1): Wichura's AS 241 (PPND16), relative

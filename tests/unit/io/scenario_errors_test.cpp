@@ -121,6 +121,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"roughness_zero", {{14, "roughness = 0.0"}}, {}, "s.toml", 14, "materials.rock.roughness", "0.0"},
         Case{"throws_zero", {{6, "throws = 0"}}, {}, "s.toml", 6, "simulation.throws", "0"},
         Case{"seed_negative", {{5, "seed = -1"}}, {}, "s.toml", 5, "simulation.seed", "-1"},
+        Case{"roughness_mean_far_below_zero", {{6, "throws = 2\nroughness_mean = -16.0"}}, {}, "s.toml", 7, "simulation.roughness_mean", "-16.0"},
         Case{"max_time_zero", {{6, "throws = 2\nmax_time = 0.0"}}, {}, "s.toml", 7, "simulation.max_time", "0.0"},
         Case{"count_zero", {{18, "mass = 100.0\ncount = 0"}}, {}, "s.toml", 19, "blocks.table[0].count", "0"},
         // NaN and infinities (TOML allows the literals)

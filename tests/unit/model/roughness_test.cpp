@@ -30,13 +30,14 @@ TEST(Roughness, NormalQuantileInvertsTheCdf) {
 
 TEST(Roughness, TruncatedNormalMomentsMatchClosedForm) {
   RoughnessModel r;  // μ = σ = 0.5, truncated to X > 0
-  const double lo = r.truncation_cdf();
+  const double kept = r.kept_mass();
+  const double lo = 1.0 - kept;
   Lcg u;
   const int n = 1'000'000;
   std::vector<double> x(n);
   double sum = 0, sum2 = 0;
   for (int i = 0; i < n; ++i) {
-    x[i] = r.sample(u.next(), lo);
+    x[i] = r.sample(u.next(), kept);
     ASSERT_GT(x[i], 0.0);
     sum += x[i];
   }
@@ -60,10 +61,46 @@ TEST(Roughness, TruncatedNormalMomentsMatchClosedForm) {
   EXPECT_LT(d, 1.95 / std::sqrt(double(n)));
 }
 
+// A mean far below 0 (μ/σ = −10): the truncated normal keeps Φ(−10) ≈ 7.6e-24 of the normal, so
+// 1 − Φ(10) rounds to 1 and a sampler that inverts from the lower end draws +∞ every time. Its
+// mean is μ + σ φ(α)/Φ(−α) with α = −μ/σ (the inverse Mills ratio), 0.04906 here, and its CDF
+// F(x) = 1 − Φ(−(x − μ)/σ) / Φ(μ/σ), both evaluated from the upper tail where they keep digits.
+TEST(Roughness, TruncatedNormalFarBelowZeroIsStillDrawn) {
+  RoughnessModel r;
+  r.mean = -5.0;
+  r.sd = 0.5;
+  const double kept = r.kept_mass();
+  EXPECT_NEAR(kept / 7.6198530241605e-24, 1.0, 1e-9);  // Φ(−10), tables of the normal
+  Lcg u;
+  const int n = 200'000;
+  std::vector<double> x(n);
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    x[i] = r.sample(u.next(), kept);
+    ASSERT_TRUE(std::isfinite(x[i]));
+    ASSERT_GE(x[i], 0.0);
+    sum += x[i];
+  }
+  const double alpha = 10.0;
+  const double mills = std::exp(-0.5 * alpha * alpha) / std::sqrt(2 * M_PI) / normal_cdf(-alpha);
+  const double mean = r.mean + r.sd * mills;
+  EXPECT_NEAR(mean, 0.049047, 1e-6);
+  // The variance of this near-exponential law is about mean², so the standard error of the
+  // sample mean is about mean/√n = 0.22 % of it: 1 % is over four standard errors.
+  EXPECT_NEAR(sum / n, mean, 0.01 * mean);
+  std::sort(x.begin(), x.end());
+  double d = 0;
+  for (int i = 0; i < n; ++i) {
+    const double F = 1.0 - normal_cdf(-(x[i] - r.mean) / r.sd) / kept;
+    d = std::max({d, std::abs(F - double(i) / n), std::abs(F - double(i + 1) / n)});
+  }
+  EXPECT_LT(d, 1.95 / std::sqrt(double(n)));  // KS at 0.1 %
+}
+
 TEST(Roughness, UniformIsTheDrawItself) {
   RoughnessModel r;
   r.distribution = RoughnessDistribution::uniform;
-  EXPECT_EQ(r.sample(0.25, r.truncation_cdf()), 0.25);
+  EXPECT_EQ(r.sample(0.25, r.kept_mass()), 0.25);
 }
 
 TEST(Roughness, SizeFactorFollowsEq66AndFloorsAt03) {
