@@ -50,6 +50,10 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
       l.rule = design::rule_reference(loaded.barrier_rules[i], l.id);
       l.status = design::CheckStatus::fail;
       l.reason = "no design: " + o.error;
+      out.barriers_without_design.push_back({spec.name, spec.line, loaded.barrier_rules[i].name,
+                                             it == sc.lines.end() ? 0.0 : it->x,
+                                             static_cast<std::uint64_t>(s.speed.size()),
+                                             o.failed_check, o.error});
       out.checks.push_back(std::move(l));
     }
   }

@@ -536,6 +536,14 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
       for (const auto& d : results.barriers) barriers.push_back(barrier_json(d));
       j["barriers"] = barriers;
     }
+    if (!results.barriers_without_design.empty()) {
+      json none = json::array();
+      for (const auto& b : results.barriers_without_design)
+        none.push_back({{"name", b.name}, {"line", b.line}, {"chainage_m", b.chainage},
+                        {"rules", b.rules}, {"crossings", b.crossings},
+                        {"failed_check", b.failed_check}, {"reason", b.reason}});
+      j["barriers_without_design"] = none;
+    }
     json checks = json::array();
     for (const auto& c : results.checks)
       checks.push_back({{"subject", c.subject},

@@ -92,8 +92,19 @@ struct RunInfo {
 
 // The design results of a run: every barrier computed, the quarry danger zones (a quarry
 // scenario), and every check line (all subjects).
+// A barrier whose line gave no design (too few crossings, no fit, no class): its FAIL line is
+// among the checks; summary.json also lists it, so that a reader of "barriers" misses none.
+struct BarrierWithoutDesign {
+  std::string name, line, rules;
+  double chainage = 0;          // m
+  std::uint64_t crossings = 0;  // first crossings of the line
+  std::string failed_check;     // "reach" or "design"
+  std::string reason;
+};
+
 struct DesignResults {
   std::vector<design::BarrierDesign> barriers;
+  std::vector<BarrierWithoutDesign> barriers_without_design;
   std::optional<design::QuarryDesign> quarry;
   std::vector<std::uint64_t> quarry_seeds;  // the seed of each quarry section's run
   std::vector<design::CheckLine> checks;
@@ -101,7 +112,8 @@ struct DesignResults {
 
 // summary.json's text (pretty-printed, NaN as null): pierre version, scenario, seed, throws,
 // trajectories, threads, stop-reason counts, per-line statistics (energies in kJ), runout;
-// with design results also "barriers" (the design values of each), for a quarry scenario
+// with design results also "barriers" (the design values of each) and, when a barrier got
+// none, "barriers_without_design" (name, line, chainage, rules, crossings, reason), for a quarry scenario
 // "quarries" (one entry per row of Tables 6.2/6.3 — a lone section or a pooled group — with
 // its statistics, governing distances and its sections' geometry and zones; distances in m and
 // /H, null where beyond the profile or undefined, with "beyond_profile" flags) and

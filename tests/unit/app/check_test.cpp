@@ -120,6 +120,40 @@ TEST_F(Check, DesignWithoutCandidateHasOnlyAdvisoryLines) {
   EXPECT_NEAR(b["gamma_F"]["value"].get<double>(), 1.10 * 1.10, 1e-12);
 }
 
+// A barrier on a line that (almost) no block reaches has no design: its "reach" line FAILs, and
+// summary.json lists it under "barriers_without_design" with the line's own crossing count, so
+// that a pipeline reading "barriers" alone is not left to think it was never asked for.
+TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
+  std::string text = slurp(kData + "design.toml");
+  const auto at = [&](const std::string& s) {
+    const auto k = text.find(s);
+    if (k == std::string::npos) throw std::runtime_error("design.toml has no " + s);
+    return k;
+  };
+  text.replace(at("\"../small/profile.csv\""), std::string("\"../small/profile.csv\"").size(),
+               "\"" PIERRE_TEST_DATA "/small/profile.csv\"");
+  text.replace(at("x = 105.0"), std::string("x = 105.0").size(), "x = 199.5");  // 0.5 m from the end
+  const fs::path scenario = dir_ / "far.toml", out = dir_ / "out";
+  std::ofstream(scenario) << text;
+  const Result r = pierre("check '" + scenario.string() + "' --out '" + out.string() + "' --quiet");
+  const auto j = summary(out);
+  ASSERT_EQ(j["lines"][1]["name"], "Road");
+  const auto reached = j["lines"][1]["count"].get<std::uint64_t>();
+  ASSERT_LT(reached, 2u) << "the test needs a line that fewer than two blocks reach";
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_EQ(check(j, "reach")["status"], "FAIL");
+  EXPECT_TRUE(j["barriers"].empty());
+  ASSERT_EQ(j["barriers_without_design"].size(), 1u);
+  const auto& b = j["barriers_without_design"][0];
+  EXPECT_EQ(b["name"], "Design");
+  EXPECT_EQ(b["line"], "Road");
+  EXPECT_EQ(b["chainage_m"], 199.5);
+  EXPECT_EQ(b["rules"], "peila-ronco-2009");
+  EXPECT_EQ(b["crossings"].get<std::uint64_t>(), reached);
+  EXPECT_EQ(b["failed_check"], "reach");
+  EXPECT_NE(b["reason"].get<std::string>().find("fewer than two"), std::string::npos) << b["reason"];
+}
+
 TEST_F(Check, SameSeedSameChecks) {
   const fs::path a = dir_ / "a", b = dir_ / "b";
   ASSERT_EQ(pierre("check " + kData + "pass.toml --out '" + a.string() + "' -q --threads 1").code, 0);
