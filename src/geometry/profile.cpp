@@ -508,6 +508,37 @@ std::optional<GroundPoint> Profile::ground_below(double x, double z) const {
 
 std::optional<GroundPoint> Profile::top_ground(double x) const { return ground_below(x, kInf); }
 
+std::optional<Profile::LineAbove> Profile::line_above(double x, double z) const {
+  LineAbove best{kInf, -1, false};
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& nd = nodes_[stack[--top]];
+    if (x < nd.x_lo - kEps || x > nd.x_hi + kEps || nd.z_hi <= z + kEps || nd.z_lo > best.z)
+      continue;
+    if (nd.left >= 0) {
+      stack[top++] = nd.left;
+      stack[top++] = nd.right;
+      continue;
+    }
+    for (int j = nd.first; j < nd.last; ++j) {
+      const Segment& s = segments_[j];
+      if (s.d.x == 0.0) continue;
+      const double lo = std::min(s.a.x, s.b.x), hi = std::max(s.a.x, s.b.x);
+      if (x < lo - kEps || x > hi + kEps) continue;
+      const double u = std::clamp((x - s.a.x) / (s.b.x - s.a.x), 0.0, 1.0);
+      const double zs = s.a.z + u * (s.b.z - s.a.z);
+      // At the lip of an overhang a ground line and a ceiling meet at one height: the ceiling
+      // decides, as just beside the lip the point is below the underside, in the air.
+      if (zs > z + kEps && (zs < best.z || (zs == best.z && s.n.z < 0.0)))
+        best = {zs, j, s.n.z > 0.0};
+    }
+  }
+  if (best.segment < 0) return std::nullopt;
+  return best;
+}
+
 double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end,
                                         double at_least, int seg_a, int seg_b) const {
   // The commonest arc: departing from and landing on one straight run. The ground under it is

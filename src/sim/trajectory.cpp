@@ -102,23 +102,23 @@ class Integrator {
   }
 
   void start() {
-    note_speed(v_, omega_);
     // Where the source's blocks start was found once for the run (TrajectoryModel).
     const TrajectoryModel::SourceStart& st = m_.source_start(out_.source);
     using Kind = TrajectoryModel::SourceStart::Kind;
     if (st.kind == Kind::flight) {  // above the ground: starts in flight
       mode_ = Mode::flight;
       dep_ = Departure{};
-      return;
-    }
-    if (st.kind == Kind::outside) {
+    } else if (st.kind == Kind::outside) {
       stop(StopReason::boundary);
-      return;
+    } else {
+      // On or below the ground: placed on the ground, starts sliding (§3.2.2).
+      p_.z = st.z;
+      out_.start = p_;
+      enter_ground(st.segment, v_);
     }
-    // On or below the ground: placed on the ground, starts sliding (§3.2.2).
-    p_.z = st.z;
-    out_.start = p_;
-    enter_ground(st.segment, v_);
+    // The speed it starts with: on the ground, what is left once the part into (or out of)
+    // the ground is dropped.
+    note_speed(v_, omega_);
   }
 
   // The block is on segment j at p_ with velocity v (tangential part kept): slide where the
@@ -237,6 +237,9 @@ class Integrator {
     v_ = res.v;
     omega_ = res.omega;
     if (!all_finite(v_.x, v_.z, omega_)) return stop(StopReason::numerical);
+    // A rebound can leave faster than the block came (spin turned into translation), and the
+    // arc after it may end slower: the rebound is one of the trajectory's speeds too.
+    note_speed(v_, omega_);
     switch (res.result) {
       case model::ImpactResult::stopped:
         return stop(StopReason::energy);
@@ -350,8 +353,9 @@ class Integrator {
       along_ = dir > 0 ? 0.0 : ns.length;
       return;
     }
-    if (!count_event()) return;
+    // A concave vertex is an impact on the next segment, and impact() counts it.
     if (turn == VertexTurn::concave) return impact(next, dir > 0 ? 0.0 : ns.length);
+    if (!count_event()) return;
     // Convex: a point mass cannot follow the bend, it flies from the vertex. At rest it simply
     // moves on to the next segment.
     if (w_ == 0.0) return enter_ground(next, v_);
@@ -402,6 +406,12 @@ TrajectoryModel::TrajectoryModel(const Scenario& scenario)
   const geometry::Profile& profile = scenario.profile;
   for (const Source& src : scenario.sources) {
     const Vec2 p = src.position;
+    // Inside the rock (the first line straight up is a ground line, e.g. in a ledge or under
+    // the slope beneath an overhang): placed on that line, the ground over it.
+    if (const auto above = profile.line_above(p.x, p.z); above && above->ground) {
+      starts_.push_back({SourceStart::Kind::ground, above->z, above->segment});
+      continue;
+    }
     const auto below = profile.ground_below(p.x, p.z);
     if (below && p.z > below->z) {
       starts_.push_back({SourceStart::Kind::flight, 0.0, -1});

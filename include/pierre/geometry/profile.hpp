@@ -79,8 +79,17 @@ class Profile {
 
   // The first ground line met going straight down from (x, z) (matters under overhangs).
   std::optional<GroundPoint> ground_below(double x, double z) const;
-  // The highest ground line at x (where a source on or below the ground is placed).
+  // The highest ground line at x.
   std::optional<GroundPoint> top_ground(double x) const;
+  // The first line met going straight up from (x, z), strictly above it: a ground line (air
+  // above it: the point is inside the rock) or a ceiling (the underside of an overhang, air
+  // below it: the point is in the air). Vertical faces are passed by.
+  struct LineAbove {
+    double z = 0;
+    int segment = -1;
+    bool ground = false;
+  };
+  std::optional<LineAbove> line_above(double x, double z) const;
 
   // Largest vertical distance between the parabola and the ground directly below it over
   // the arc 0 <= t <= t_end (model-2d.md §4). Exact: piecewise concave, maximised per segment.

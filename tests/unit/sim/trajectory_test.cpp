@@ -152,6 +152,93 @@ TEST(Trajectory, BlockAtRestOnAGentleSlopeStopsByFriction) {
   }
 }
 
+// A source inside the rock is placed on the ground over it (model-2d.md §1: "on or below
+// ground: placed on the ground"), also under an overhang, where ground lies below it too: in the
+// ledge it goes onto the ledge's top, below the slope under the ledge onto that slope. (It used
+// to start in flight whenever any ground lay below it, and fell through the ledge's underside.)
+TEST(Trajectory, ASourceInsideTheRockIsPlacedOnTheGroundOverIt) {
+  // A level ledge top at z = 50 over an underside from (10, 50) back to (8, 45), a wall down
+  // to (8, 20), a 42.3° slope to (30, 0) and a level floor.
+  auto prof = test::make_profile({{0, 50}, {10, 50}, {8, 45}, {8, 20}, {30, 0}, {60, 0}});
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(5, 50, 0.3, 30),
+                                   {test::make_block(1000)}, {9, 49}, 1);
+  const double z_slope = 20.0 - 20.0 * (9.0 - 8.0) / 22.0;  // the slope's z at x = 9
+  // At x = 9: the ledge's rock spans z 47.5 to 50, the air 19.09 to 47.5, the slope's rock below.
+  s.sources = {Source{"in the ledge", {9, 49}, {0, 0}, 0},
+               Source{"under the slope", {9, 10}, {0, 0}, 0},
+               Source{"under the ledge", {9, 46}, {0, 0}, 0}};
+  const auto r = run(s, 1);
+  ASSERT_EQ(r.trajectories.size(), 3u);
+  const auto& ledge = r.trajectories[0];
+  EXPECT_EQ(ledge.start.z, 50.0);  // on the ledge top, level: at rest at once
+  EXPECT_EQ(ledge.stop_reason, StopReason::friction);
+  EXPECT_EQ(ledge.impacts, 0u);
+  EXPECT_EQ(ledge.max_speed, 0.0);
+  const auto& slope = r.trajectories[1];
+  EXPECT_NEAR(slope.start.z, z_slope, 1e-12);  // onto the slope over it, not the ledge's top
+  const auto& air = r.trajectories[2];
+  EXPECT_EQ(air.start.z, 46.0);  // in the air: falls from where it is
+  EXPECT_GE(air.impacts, 1u);
+  EXPECT_NEAR(air.first_impact.x, 9.0, 1e-9);  // straight down onto the slope below
+  EXPECT_NEAR(air.first_impact.z, z_slope, 1e-9);
+}
+
+// The largest speed of a trajectory is over all of it, rebounds included: a spinning block can
+// leave an impact faster than it came (spin turned into translation), faster than at the end of
+// the arc that follows. And a source on the ground keeps only its velocity along the ground:
+// a block thrown into level ground at 30 m/s starts, and stays, at rest.
+TEST(Trajectory, MaxSpeedCountsReboundsAndOnlyTheSpeedKeptAtTheStart) {
+  auto prof = test::make_profile({{0, 100}, {200, 0}});  // 26.6°
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(5, 50, 0.3),
+                                   {test::make_block(2650)}, {100, 50.1}, 20, 1);
+  s.sources[0].omega = 60.0;  // rad/s, counter-clockwise: against the travel down the slope
+  const auto r = run(s, 1, true);
+  std::size_t k = 0;
+  int faster_rebounds = 0;
+  for (const auto& t : r.trajectories) {
+    double v_max = 0;
+    for (; k < r.impacts.size() && r.impacts[k].trajectory == t.trajectory; ++k) {
+      const auto& d = r.impacts[k].detail;
+      if (r.impacts[k].result != model::ImpactResult::rebound) continue;
+      const double in = std::hypot(d.vt_in, d.vn_in), out = std::hypot(d.vt_out, d.vn_out);
+      v_max = std::max({v_max, in, out});
+      faster_rebounds += out > in;
+    }
+    EXPECT_GE(t.max_speed, v_max * (1 - 1e-12)) << t.trajectory;
+  }
+  EXPECT_GT(faster_rebounds, 0) << "the case must have rebounds faster than their impacts";
+
+  auto level = test::make_profile({{0, 0}, {100, 0}});
+  Scenario g = test::make_scenario(std::move(level), test::make_material(5, 50, 0.3),
+                                   {test::make_block(1000)}, {50, 0}, 1);
+  g.sources[0].velocity = {0, -30};
+  const auto t = run(g, 1).trajectories.at(0);
+  EXPECT_EQ(t.stop_reason, StopReason::friction);
+  EXPECT_EQ(t.max_speed, 0.0);
+  EXPECT_EQ(t.max_energy, 0.0);
+}
+
+// A concave vertex met while sliding is one impact and one event against max_impacts (it was
+// counted twice: with max_impacts = 1 a block sliding into a V stopped with 0 impacts).
+TEST(Trajectory, AConcaveVertexIsOneEventAgainstTheImpactLimit) {
+  auto prof = test::make_profile({{0, 1}, {1, 0}, {2, 1}});  // a 45° V
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(5, 50, 0.3, 30),
+                                   {test::make_block(100)}, {0.5, 0}, 1);
+  for (long limit : {1L, 2L, 3L}) {
+    s.settings.max_impacts = limit;
+    const auto r = run(s, 1, true);
+    const auto& t = r.trajectories.at(0);
+    ASSERT_GE(r.impacts.size(), 1u);
+    EXPECT_EQ(r.impacts.front().position.x, 1.0);  // slid into the vertex: the first impact
+    if (t.stop_reason == StopReason::impact_limit) {
+      EXPECT_GE(t.impacts, 1u) << limit;
+    }
+  }
+  s.settings.max_impacts = 1;
+  const auto t = run(s, 1).trajectories.at(0);
+  EXPECT_EQ(t.impacts, 1u);
+}
+
 TEST(Trajectory, FlyingOffTheProfileEndsAtTheBoundary) {
   auto prof = test::make_profile({{0, 100}, {10, 0}});
   Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3),
