@@ -21,8 +21,34 @@ void DistanceSample::add(std::span<const double> values_m, double height, double
   for (double v : values_m) {
     metres.push_back(v);
     normalized.push_back(v / height);
-    if (std::isinf(v)) censored_at.push_back(censor_distance / height);
+    if (std::isinf(v)) {
+      censored_at.push_back(censor_distance / height);
+      censored_at_m.push_back(censor_distance);
+    }
   }
+}
+
+double censored_percentile(std::span<const double> values, std::span<const double> censored_at,
+                           double p) {
+  if (!(p >= 0 && p <= 100)) return kNaN;
+  std::vector<double> bounded;
+  bounded.reserve(values.size());
+  std::size_t k = 0;
+  for (double v : values) {
+    if (std::isnan(v)) continue;
+    if (std::isinf(v)) {
+      bounded.push_back(k < censored_at.size() ? censored_at[k] : kInf);
+      ++k;
+    } else {
+      bounded.push_back(v);
+    }
+  }
+  const double n = static_cast<double>(bounded.size());
+  if (bounded.empty()) return kNaN;
+  // "More than (1 − p) of all blocks leave": k > (1 − p/100) n, with a hair of slack for the
+  // rounding of 100 − p (p = 99.9 and k = 1 of 1000 is exactly the limit, not beyond it).
+  if (static_cast<double>(k) * 100.0 > (100.0 - p) * n * (1.0 + 1e-9)) return kInf;
+  return stats::percentile(bounded, p);
 }
 
 stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
@@ -67,12 +93,10 @@ DistanceStatistics distance_statistics(const DistanceSample& s) {
     if (v == 0) ++out.zeros;
     if (std::isinf(v)) ++out.censored;
   }
-  const double ps[] = {50, 95, 99, 100};
-  const auto m = stats::percentiles(s.metres, ps);
-  const auto h = stats::percentiles(s.normalized, ps);
-  auto at = [](const std::vector<double>& v, std::size_t k) { return k < v.size() ? v[k] : kNaN; };
-  out.p50 = at(m, 0), out.p95 = at(m, 1), out.p99 = at(m, 2), out.max = at(m, 3);
-  out.p50_h = at(h, 0), out.p95_h = at(h, 1), out.p99_h = at(h, 2), out.max_h = at(h, 3);
+  auto m = [&](double p) { return censored_percentile(s.metres, s.censored_at_m, p); };
+  auto h = [&](double p) { return censored_percentile(s.normalized, s.censored_at, p); };
+  out.p50 = m(50), out.p95 = m(95), out.p99 = m(99), out.max = m(100);
+  out.p50_h = h(50), out.p95_h = h(95), out.p99_h = h(99), out.max_h = h(100);
   if (out.count == 0) {
     out.fit_error = "no values";
     return out;
@@ -92,9 +116,9 @@ DistanceStatistics distance_statistics(const DistanceSample& s) {
   return out;
 }
 
-double empirical_at_exceedance(std::span<const double> sample, double q) {
+double empirical_at_exceedance(const DistanceSample& sample, double q) {
   if (!(q >= 0 && q <= 1)) return kNaN;
-  return stats::percentile(sample, 100.0 * (1.0 - q));
+  return censored_percentile(sample.normalized, sample.censored_at, 100.0 * (1.0 - q));
 }
 
 double empirical_exceedance(std::span<const double> sample, double d) {

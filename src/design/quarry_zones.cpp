@@ -69,7 +69,7 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
   for (QuarryGoverning c : rules.governing) {
     switch (c) {
       case QuarryGoverning::percentile:
-        g.percentile_h = stats::percentile(sample.normalized, rules.percentile);
+        g.percentile_h = censored_percentile(sample.normalized, sample.censored_at, rules.percentile);
         take(g.percentile_h, labelled("P" + num(rules.percentile), g.percentile_h));
         break;
       case QuarryGoverning::maximum:
@@ -181,8 +181,8 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
       e.probability = q;
       e.rd_fit_h = row.rd.fit ? stats::value_at_exceedance(*row.rd.fit, q) : kNaN;
       e.id_fit_h = row.id.fit ? stats::value_at_exceedance(*row.id.fit, q) : kNaN;
-      e.rd_empirical_h = empirical_at_exceedance(row.rd_sample.normalized, q);
-      e.id_empirical_h = empirical_at_exceedance(row.id_sample.normalized, q);
+      e.rd_empirical_h = empirical_at_exceedance(row.rd_sample, q);
+      e.id_empirical_h = empirical_at_exceedance(row.id_sample, q);
       e.rd_fit = e.rd_fit_h * row.height;
       e.id_fit = e.id_fit_h * row.height;
       e.rd_empirical = e.rd_empirical_h * row.height;
@@ -192,8 +192,9 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
     row.rd_gov = governing_distance(row.rd_sample, row.rd, rules);
     row.id_gov = governing_distance(row.id_sample, row.id, rules);
     // A bootstrap of one value has no spread and says nothing: two at least.
-    if (row.rd_sample.normalized.size() >= 2 &&
-        std::isfinite(stats::percentile(row.rd_sample.normalized, rules.sample_percentile))) {
+    const double rd_sampled = censored_percentile(row.rd_sample.normalized,
+                                                  row.rd_sample.censored_at, rules.sample_percentile);
+    if (row.rd_sample.normalized.size() >= 2 && std::isfinite(rd_sampled)) {
       stats::BootstrapOptions opt;
       opt.resamples = rules.sample_resamples;
       opt.confidence = rules.sample_confidence;
@@ -229,12 +230,6 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
                      num(100 - rules.percentile) + " % of the blocks left the section (" +
                      std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
                      "); extend the section";
-        } else if (sr.danger_zone_beyond_profile()) {
-          // The governing distance (a fit's extrapolation, or a percentile of blocks that ran
-          // to the end) lies past the floor the section models: nothing there was simulated.
-          l.status = CheckStatus::fail;
-          l.reason = "the danger zone reaches beyond the section's end: " + gov_text + " > floor " +
-                     num(sr.geometry.floor_length) + " m; extend the section";
         } else if (value < sr.danger_zone) {
           l.status = CheckStatus::fail;
           l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
@@ -246,8 +241,25 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
       };
       for (const WorkArea& a : sr.spec.work_areas)
         zone_line("zone." + a.name, "distance of work area \"" + a.name + "\" from the toe vs the danger zone RD_gov", a.distance);
-      if (sr.spec.work_areas.empty() && sr.danger_zone_beyond_profile())
+      if (std::isinf(sr.danger_zone) && sr.spec.work_areas.empty()) {
+        // RD_p beyond the profile FAILs its check (design-checks.md §2): without a work area
+        // this is the line that carries it.
         zone_line("zone.extent", "the danger zone RD_gov vs the section's floor length", sr.geometry.floor_length);
+      } else if (sr.danger_zone_beyond_profile() && std::isfinite(sr.danger_zone)) {
+        // A finite zone longer than the floor the section models (a fit's extrapolation, or a
+        // group's pooled zone on a section with a shorter floor): its end was not simulated.
+        // The zone lines judge against it as the spec has them; this says how far to trust it.
+        CheckLine l = line(subject, "zone.extent", rules);
+        l.what = "the section's floor length vs the danger zone RD_gov";
+        l.value = sr.geometry.floor_length;
+        l.limit = sr.danger_zone;
+        l.unit = "m";
+        l.status = CheckStatus::warn;
+        l.reason = gov_text + " reaches past the floor's end at " + num(sr.geometry.floor_length) +
+                   " m from the toe: the zone's end is extrapolated, not simulated; extend the "
+                   "section to simulate it";
+        d.checks.push_back(std::move(l));
+      }
 
       if (sr.spec.bench_width) {
         const double w = *sr.spec.bench_width;
@@ -315,7 +327,7 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
           why = "RD" + num(rules.sample_percentile) + " known to ±" + num(l.value, 3) + " %";
         }
       } else {
-        why = std::isinf(stats::percentile(row.rd_sample.normalized, rules.sample_percentile))
+        why = std::isinf(rd_sampled)
                   ? "RD" + num(rules.sample_percentile) + " is beyond the profile: no interval"
                   : "no bootstrap interval";
       }

@@ -6,11 +6,13 @@
 // its KS statistic; the distance at a probability of exceedance; comparisons with observed
 // values (CDF RMSE on the observed break points, Eq 4.1, and the two-sample KS statistic).
 //
-// Percentiles are type 7 (stats/percentile.hpp); +infinity (a block that left the profile) is
-// "beyond every value", so a percentile or maximum that needs it is +infinity: "beyond the
-// profile". Samples pooled over sections of different H are normalized value by value, each by
-// its own section's H; the /H percentiles are those of the normalized sample (for one section,
-// exactly the metre percentiles / H).
+// Percentiles are type 7 (stats/percentile.hpp) with the right-censored values (+infinity: a
+// block that left the profile) as design-checks.md §2 has them: when more than (1 − p) of all
+// values are censored, the p-th percentile is +infinity, "beyond the profile"; otherwise it is
+// the percentile with each censored value at its censoring distance (all that is known of it).
+// So the maximum is beyond the profile as soon as one block left. Samples pooled over sections
+// of different H are normalized value by value, each by its own section's H; the /H percentiles
+// are those of the normalized sample (for one section, exactly the metre percentiles / H).
 #pragma once
 
 #include <cstddef>
@@ -29,6 +31,7 @@ struct DistanceSample {
   std::vector<double> metres;      // m; +infinity: censored
   std::vector<double> normalized;  // / H of its own section; +infinity: censored
   std::vector<double> censored_at;  // / H: the censoring threshold of each censored value
+  std::vector<double> censored_at_m;  // m: the same thresholds
   // Appends a section's values (m) with its H and the distance where its censored values
   // were censored (the floor length, m).
   void add(std::span<const double> values_m, double height, double censor_distance);
@@ -60,9 +63,16 @@ DistanceStatistics distance_statistics(const DistanceSample& sample);
 stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
                                      const stats::CensoredLognormalFit& fit, double below);
 
-// The empirical distance (same unit as the sample) exceeded with probability q: the type-7
-// percentile 100 (1 − q); +infinity when it is beyond the profile; NaN for q outside [0, 1].
-double empirical_at_exceedance(std::span<const double> sample, double q);
+// The type-7 percentile p (0 to 100) of `values`, whose +infinity are right-censored at the
+// thresholds `censored_at` (in their order): +infinity, beyond the profile, when more than
+// (1 − p/100) of the values are censored; else the percentile with each censored value at its
+// threshold. NaN for an empty sample or a p outside [0, 100].
+double censored_percentile(std::span<const double> values, std::span<const double> censored_at,
+                           double p);
+
+// The empirical distance (/H) exceeded with probability q: censored_percentile at 100 (1 − q)
+// of the normalized sample; NaN for q outside [0, 1].
+double empirical_at_exceedance(const DistanceSample& sample, double q);
 // Share of the sample above d (censored values are above every d).
 double empirical_exceedance(std::span<const double> sample, double d);
 

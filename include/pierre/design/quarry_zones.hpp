@@ -103,8 +103,8 @@ struct QuarrySectionResult {
   double first_impact_zone = 0;  // m: [0, ID_gov]
   std::optional<double> bench_retention;  // share of the row's blocks with RD <= bench width
   std::optional<double> ritchie_width;    // m
-  // The danger zone reaches past the section's floor (or is infinite: too many blocks left):
-  // the simulation cannot place its limit, and every zone check FAILs until it is extended.
+  // The danger zone reaches past the section's floor: infinite (more than 1 − p of the blocks
+  // left, and the zone checks FAIL) or extrapolated past the floor's end (a WARN says so).
   bool danger_zone_beyond_profile() const {
     return std::isinf(danger_zone) || danger_zone > geometry.floor_length;
   }

@@ -56,7 +56,7 @@ TEST(QuarryStatistics, PercentilesInMetresAndPerH) {
   EXPECT_DOUBLE_EQ(st.p50_h, 5.05);
   EXPECT_DOUBLE_EQ(st.p95_h, 9.505);
   EXPECT_DOUBLE_EQ(st.max_h, 10);
-  EXPECT_DOUBLE_EQ(empirical_at_exceedance(v, 0.05), 95.05);
+  EXPECT_DOUBLE_EQ(empirical_at_exceedance(s, 0.05), 9.505);
   EXPECT_DOUBLE_EQ(empirical_exceedance(v, 90), 0.10);
 }
 
@@ -79,6 +79,41 @@ TEST(QuarryStatistics, BeyondTheProfile) {
   DistanceSample t;
   t.add(w, 20, 120);
   EXPECT_TRUE(std::isfinite(distance_statistics(t).p95));
+}
+
+// Exactly (1 − p) of the blocks left: not "more than", so RD_p is finite (design-checks.md §2),
+// the type-7 percentile with the censored values at the profile's end: rank 0.95 · 99 = 94.05
+// lies between the 95th value (95 m) and the first censored one (120 m), so
+// P95 = 95 + 0.05 · (120 − 95) = 96.25 m. (Interpolating towards +infinity called it beyond the
+// profile, and every work area FAILed.) One more block out and it is beyond; the maximum is
+// beyond with a single block out.
+TEST(QuarryStatistics, ExactlyOneMinusPLeftIsNotBeyondTheProfile) {
+  auto v = one_to(95);
+  for (int i = 0; i < 5; ++i) v.push_back(kInf);
+  DistanceSample s;
+  s.add(v, 20, 120);
+  const auto st = distance_statistics(s);
+  EXPECT_NEAR(st.p95, 96.25, 1e-12);  // 94.05 = 99 · 0.95 is not exact in binary
+  EXPECT_NEAR(st.p95_h, 96.25 / 20, 1e-12);
+  EXPECT_DOUBLE_EQ(st.p50, 50.5);
+  EXPECT_TRUE(std::isinf(st.p99));
+  EXPECT_TRUE(std::isinf(st.max));
+  EXPECT_NEAR(empirical_at_exceedance(s, 0.05), 96.25 / 20, 1e-12);
+  EXPECT_TRUE(std::isinf(empirical_at_exceedance(s, 0.049)));
+  // p = 99.9 with 1 of 1000 out: 100 − 99.9 is not exact in binary, the limit still holds.
+  auto u = one_to(999);
+  u.push_back(kInf);
+  EXPECT_TRUE(std::isfinite(censored_percentile(u, std::vector<double>{2000.0}, 99.9)));
+  u[998] = kInf;  // 2 of 1000 out
+  EXPECT_TRUE(std::isinf(censored_percentile(u, std::vector<double>{2000.0, 2000.0}, 99.9)));
+  // Pooled sections censor at their own ends: each censored value at its own threshold.
+  DistanceSample pooled;
+  pooled.add(one_to(95), 20, 120);
+  pooled.add(std::vector<double>{kInf, kInf, kInf, kInf, kInf}, 10, 60);
+  EXPECT_EQ(pooled.censored_at_m, (std::vector<double>{60, 60, 60, 60, 60}));
+  // Sorted: 1..60, the five censored at 60 m, 61..95: ranks 94 and 95 (from 0) hold 90 and
+  // 91 m, so P95 = 90.05 m (at 120 m, the first section's end, it would be 95.05 m).
+  EXPECT_NEAR(distance_statistics(pooled).p95, 90.05, 1e-12);
 }
 
 TEST(QuarryStatistics, CensoredLognormalRecoversKnownParameters) {
