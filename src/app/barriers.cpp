@@ -40,16 +40,21 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
       design::CheckLine l;
       l.subject = spec.name;
       l.id = o.failed_check;
+      l.rule = design::rule_reference(loaded.barrier_rules[i], l.id);
       if (o.failed_check == "reach") {
+        // Too few crossings is the advisory `reach` line (design-checks.md §1: "WARN if
+        // fewer"), however few: no block to design for is not a failed design.
         l.what = "crossings of the line (first in the main direction)";
         l.value = static_cast<double>(s.speed.size());
         l.limit = loaded.barrier_rules[i].min_crossings;
+        l.status = design::CheckStatus::warn;
+        l.reason = "no design: " + o.error + (spec.candidate ? "; the candidate is not checked" : "") +
+                   ": is the line where the barrier stands?";
       } else {
         l.what = "the barrier's design from the crossings of its line";
+        l.status = design::CheckStatus::fail;
+        l.reason = "no design: " + o.error;
       }
-      l.rule = design::rule_reference(loaded.barrier_rules[i], l.id);
-      l.status = design::CheckStatus::fail;
-      l.reason = "no design: " + o.error;
       out.barriers_without_design.push_back({spec.name, spec.line, loaded.barrier_rules[i].name,
                                              it == sc.lines.end() ? 0.0 : it->x,
                                              static_cast<std::uint64_t>(s.speed.size()),

@@ -120,9 +120,10 @@ TEST_F(Check, DesignWithoutCandidateHasOnlyAdvisoryLines) {
   EXPECT_NEAR(b["gamma_F"]["value"].get<double>(), 1.10 * 1.10, 1e-12);
 }
 
-// A barrier on a line that (almost) no block reaches has no design: its "reach" line FAILs, and
-// summary.json lists it under "barriers_without_design" with the line's own crossing count, so
-// that a pipeline reading "barriers" alone is not left to think it was never asked for.
+// A barrier on a line that (almost) no block reaches has no design: its "reach" line WARNs (the
+// spec's status for too few crossings, so `check` exits 0), and summary.json lists it under
+// "barriers_without_design" with the line's own crossing count, so that a pipeline reading
+// "barriers" alone is not left to think it was never asked for.
 TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
   std::string text = slurp(kData + "design.toml");
   const auto at = [&](const std::string& s) {
@@ -140,8 +141,9 @@ TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
   ASSERT_EQ(j["lines"][1]["name"], "Road");
   const auto reached = j["lines"][1]["count"].get<std::uint64_t>();
   ASSERT_LT(reached, 2u) << "the test needs a line that fewer than two blocks reach";
-  EXPECT_EQ(r.code, 1) << r.out;
-  EXPECT_EQ(check(j, "reach")["status"], "FAIL");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(check(j, "reach")["status"], "WARN");
+  EXPECT_EQ(j["checks_failed"], false);
   EXPECT_TRUE(j["barriers"].empty());
   ASSERT_EQ(j["barriers_without_design"].size(), 1u);
   const auto& b = j["barriers_without_design"][0];
