@@ -68,7 +68,7 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
               std::string(b.r.design_on == DesignOn::both ? "MEL and SEL" : to_string(b.r.design_on)) +
               " and " + missing);
   }
-  else if (declared >= required)
+  else if (at_least(declared, required))
     set(l, CheckStatus::pass, std::string("candidate ") + name + " " + num(declared) + " kJ >= required " +
                                   num(required) + " kJ");
   else
@@ -109,7 +109,7 @@ void elongation_line(Builder& b, const CandidateBarrier& c) {
     set(l, CheckStatus::not_applicable,
         "not applicable: the candidate does not declare both the elongation of the governing "
         "test and distance_to_object");
-  else if (value >= limit)
+  else if (at_least(value, limit))
     set(l, CheckStatus::pass, "distance " + num(value) + " m >= " + how + " = " + num(limit) + " m");
   else
     set(l, CheckStatus::fail, "distance " + num(value) + " m < " + how + " = " + num(limit) + " m");
@@ -122,7 +122,7 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, double
     set(l, CheckStatus::not_applicable, "no acceptable probability given (" + pct(p) + ")");
   else if (std::isnan(p))
     set(l, CheckStatus::fail, "cannot be evaluated: no Weibull fit of the simulated sample");
-  else if (p <= *acceptable)
+  else if (at_most(p, *acceptable))
     set(l, CheckStatus::pass, pct(p) + " <= acceptable " + pct(*acceptable));
   else
     set(l, CheckStatus::fail, pct(p) + " > acceptable " + pct(*acceptable));
@@ -222,7 +222,7 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
                            value, d.h_i, "m");
       if (!c.height)
         set(l, CheckStatus::not_applicable, "the candidate declares no height");
-      else if (*c.height >= d.h_i)
+      else if (at_least(*c.height, d.h_i))
         set(l, CheckStatus::pass, "height " + num(*c.height) + " m >= h_i " + num(d.h_i) + " m");
       else
         set(l, CheckStatus::fail, "height " + num(*c.height) + " m < h_i " + num(d.h_i) + " m");

@@ -230,7 +230,7 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
                      num(100 - rules.percentile) + " % of the blocks left the section (" +
                      std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
                      "); extend the section";
-        } else if (value < sr.danger_zone) {
+        } else if (!at_least(value, sr.danger_zone)) {
           l.status = CheckStatus::fail;
           l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
         } else {
@@ -274,7 +274,7 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
           l.status = CheckStatus::not_applicable;
           l.reason = "no runout sample";
         } else {
-          l.status = *sr.bench_retention >= rules.retention_target ? CheckStatus::pass : CheckStatus::fail;
+          l.status = at_least(*sr.bench_retention, rules.retention_target) ? CheckStatus::pass : CheckStatus::fail;
           l.reason = num(l.value, 3) + " % of " + std::to_string(row.thrown) + " blocks retained " +
                      (l.status == CheckStatus::pass ? ">= " : "< ") + num(l.limit, 3) + " %";
         }
@@ -287,8 +287,8 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
         k.value = w;
         k.limit = *sr.ritchie_width;
         k.unit = "m";
-        k.status = w >= k.limit ? CheckStatus::pass : CheckStatus::warn;
-        k.reason = "bench " + num(w) + " m " + (w >= k.limit ? ">= " : "< ") + num(k.limit) +
+        k.status = at_least(w, k.limit) ? CheckStatus::pass : CheckStatus::warn;
+        k.reason = "bench " + num(w) + " m " + (at_least(w, k.limit) ? ">= " : "< ") + num(k.limit) +
                    " m (H = " + num(H) + " m)";
         d.checks.push_back(std::move(k));
       }

@@ -2,6 +2,8 @@
 // rule, status). FAIL makes `pierre check` exit 1; WARN is advisory and never does.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -24,6 +26,15 @@ struct CheckLine {
   CheckStatus status = CheckStatus::not_applicable;
   std::string reason;   // why it passes or fails, in words ("candidate MEL 2000 kJ < required 2241 kJ")
 };
+
+// value >= limit, up to rounding: a limit worked out from decimal inputs (1.3 × 3 m is
+// 3.9000000000000004 m in binary) is met by the value it equals on paper. The slack, 1e-9 of
+// the larger magnitude, is far below anything an engineer could measure or build.
+inline bool at_least(double value, double limit) {
+  return value >= limit - 1e-9 * std::max(std::abs(value), std::abs(limit));
+}
+// value <= limit, up to rounding (as at_least).
+inline bool at_most(double value, double limit) { return at_least(limit, value); }
 
 // True when any line FAILs: the exit code of `pierre check`.
 bool any_failure(const std::vector<CheckLine>& lines);

@@ -147,6 +147,15 @@ TEST(BarrierCheckLines, ElongationPassFailAndNotApplicable) {
   lines = design::barrier_check_lines(d, r);
   EXPECT_DOUBLE_EQ(line(lines, "elongation").limit, 1.5 * 4.0);
   EXPECT_EQ(line(lines, "elongation").status, CheckStatus::pass);
+  // Exactly at the limit on paper: 1.3 × 3 m is 3.9000000000000004 m in binary, and a distance
+  // of 3.9 m meets it (it FAILed on the rounding).
+  r.design_on = design::DesignOn::mel;
+  d.spec.candidate->elongation_mel = 3.0;
+  d.spec.candidate->distance_to_object = 3.9;
+  ASSERT_GT(1.3 * 3.0, 3.9);
+  EXPECT_EQ(status(d, r, "elongation"), CheckStatus::pass);
+  d.spec.candidate->distance_to_object = 3.899;
+  EXPECT_EQ(status(d, r, "elongation"), CheckStatus::fail);
 }
 
 TEST(BarrierCheckLines, ExceedancePassFailAndNotApplicable) {

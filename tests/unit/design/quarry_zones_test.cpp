@@ -213,6 +213,16 @@ TEST(QuarryZones, BenchRetentionAndRitchie) {
   EXPECT_EQ(k2->status, CheckStatus::warn);
   EXPECT_DOUBLE_EQ(k2->limit, 8.5);
   EXPECT_DOUBLE_EQ(*d.sections[1].ritchie_width, 8.5);
+  // Exactly at the Ritchie width on paper: 0.2 × 14 + 4.5 is 7.300000000000001 m in binary.
+  auto edge = section("Edge", one_to(100));
+  edge.geometry.height = 14;
+  edge.spec.bench_width = 7.3;
+  ASSERT_GT(0.2 * 14 + 4.5, 7.3);
+  const auto e = design_quarry({edge}, 1);
+  ASSERT_TRUE(e.design) << e.error;
+  const CheckLine* k3 = find(*e.design, "Edge", "bench.ritchie");
+  ASSERT_TRUE(k3);
+  EXPECT_EQ(k3->status, CheckStatus::pass) << k3->reason;
 }
 
 TEST(QuarryZones, SampleSize) {
