@@ -225,6 +225,9 @@ void check_sheet_name(const TomlTable& t, std::string_view key, const std::strin
             name.back() != '\'';
   if (per_item_sheet(key)) ok = ok || (!name.empty() && name.find("{name}") != std::string::npos);
   t.check(key, ok, expected);
+  t.check(key, !sheet_name_reads_as_reference(name),
+          "a sheet name that does not read as a cell reference (A1, R1C1) or start with a digit "
+          "or a point: charts and print areas would point at the cell, not the sheet");
 }
 
 }  // namespace
@@ -235,6 +238,33 @@ const std::map<std::string, std::vector<std::string>, std::less<>>& report_templ
 }
 
 const std::vector<std::string>& report_template_colours() { return kColours; }
+
+bool sheet_name_reads_as_reference(std::string_view name) {
+  if (name.empty()) return false;
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  if (digit(name[0]) || name[0] == '.') return true;
+  // A1: one to three letters, then digits only (checked as a shape: a little wider than
+  // Excel's XFD1048576 does no harm).
+  std::size_t i = 0;
+  while (i < name.size() && letter(name[i])) ++i;
+  if (i >= 1 && i <= 3 && i < name.size() &&
+      std::all_of(name.begin() + static_cast<std::ptrdiff_t>(i), name.end(), digit))
+    return true;
+  // R1C1: R, C, RC, R5, C7, R5C7 (either part may be left out).
+  std::size_t k = 0;
+  auto part = [&](char upper) {
+    if (k < name.size() && (name[k] == upper || name[k] == upper + ('a' - 'A'))) {
+      ++k;
+      while (k < name.size() && digit(name[k])) ++k;
+      return true;
+    }
+    return false;
+  };
+  const bool r = part('R');
+  const bool c = part('C');
+  return (r || c) && k == name.size();
+}
 
 const std::string& ReportTemplate::get(std::string_view section, std::string_view key) const {
   const auto s = text.find(section);

@@ -596,7 +596,7 @@ std::optional<std::uint32_t> Report::line_index(const std::string& name) const {
 
 // Excel's rules: at most 31 characters, none of []:*?/\, not starting or ending with ', unique
 // regardless of case, not "History". Apostrophes are replaced too, so that chart ranges never
-// need escaping.
+// need escaping, and a name a formula reads as a cell reference gets a word in front.
 std::string Report::item_sheet_name(std::string_view key, const std::string& item,
                                     std::vector<std::string>& used) {
   const std::string fallback = key == "quarry" ? "Quarry" : "Barrier";
@@ -609,6 +609,8 @@ std::string Report::item_sheet_name(std::string_view key, const std::string& ite
     return t.empty() ? fallback : t;
   };
   base = trimmed(utf8_prefix(base, 31));
+  // A barrier called "B1" would make a sheet formulas read as cell B1: "Barrier B1" instead.
+  if (sheet_name_reads_as_reference(base)) base = trimmed(utf8_prefix(fallback + " " + base, 31));
   std::string name = base;
   for (int k = 2; std::find(used.begin(), used.end(), lower(name)) != used.end(); ++k) {
     const std::string suffix = fmt::format(" ({})", k);

@@ -56,6 +56,12 @@ const std::map<std::string, std::vector<std::string>, std::less<>>& report_templ
 // The keys of [colours].
 const std::vector<std::string>& report_template_colours();
 
+// True for a sheet name that a formula would read as something else unless quoted: a cell
+// reference (A1, xfd12, R1C1, R, C5) or a name starting with a digit or a point (2024, 1.5).
+// libxlsxwriter 1.1 quotes only names holding other characters than letters, digits, _ and .,
+// so chart ranges and print areas on such a sheet ("B1!$A$1") make Excel repair the file.
+bool sheet_name_reads_as_reference(std::string_view name);
+
 ReportTemplate load_report_template(const std::filesystem::path& file);
 
 }  // namespace pierre::io

@@ -93,6 +93,8 @@ INSTANTIATE_TEST_SUITE_P(
             "colours.fail_fill", "\"red\""},
         Bad{"bad_sheet_name", "profile = \"Profile\"", "profile = \"Pro[file]\"", 0,
             "profile = \"Pro[file]\"", "sheets.profile", "Pro[file]"},
+        Bad{"sheet_name_a_cell", "profile = \"Profile\"", "profile = \"P1\"", 0,
+            "profile = \"P1\"", "sheets.profile", "P1"},
         Bad{"order_incomplete", "\"crossings\"]", "\"summary\"]", 0, "order =", "sheets.order",
             "an array"},
         Bad{"heading_not_string", "count = \"Crossings\"", "count = 3", 0, "count = 3",

@@ -529,6 +529,11 @@ TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
   f->data.barriers.push_back(b);
   b.spec.name = "History";  // reserved by Excel
   f->data.barriers.push_back(b);
+  // Names a formula reads as a cell (libxlsxwriter leaves them unquoted: "B1!$A$1").
+  for (const char* name : {"B1", "r1c1", "2024", "C"}) {
+    b.spec.name = name;
+    f->data.barriers.push_back(b);
+  }
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, tpl);
   const std::string wb = zip_entry(xlsx, "xl/workbook.xml", dir.path());
@@ -536,10 +541,29 @@ TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
   EXPECT_NE(wb.find("<sheet name=\"History (2)\""), std::string::npos) << wb;
   EXPECT_NE(wb.find("<sheet name=\"A very long barrier name_ with\""), std::string::npos) << wb;
   EXPECT_NE(wb.find("<sheet name=\"A very long barrier name_ w (2)\""), std::string::npos) << wb;
+  for (const char* name : {"Barrier B1", "Barrier r1c1", "Barrier 2024", "Barrier C"})
+    EXPECT_NE(wb.find("<sheet name=\"" + std::string(name) + "\""), std::string::npos) << name;
+  // Every sheet a formula names (chart ranges, print areas) is one no formula reads as a cell.
   std::size_t charts = 0;
+  std::vector<std::string> formulas;
   for (const auto& n : zip_list(xlsx, dir.path()))
-    if (n.rfind("xl/charts/chart", 0) == 0) ++charts;
-  EXPECT_EQ(charts, 5u * 6u + 1u);
+    if (n.rfind("xl/charts/chart", 0) == 0) {
+      ++charts;
+      const std::string x = zip_entry(xlsx, n, dir.path());
+      for (std::size_t k = x.find("<c:f>"); k != std::string::npos; k = x.find("<c:f>", k + 1))
+        formulas.push_back(x.substr(k + 5, x.find("</c:f>", k) - k - 5));
+    }
+  for (std::size_t k = wb.find("<definedName"); k != std::string::npos; k = wb.find("<definedName", k + 1)) {
+    const std::size_t a = wb.find('>', k) + 1;
+    formulas.push_back(wb.substr(a, wb.find("</definedName>", a) - a));
+  }
+  ASSERT_FALSE(formulas.empty());
+  for (const auto& f : formulas) {
+    const std::string sheet = f.substr(0, f.find('!'));
+    if (sheet.front() == '\'') continue;  // quoted
+    EXPECT_FALSE(io::sheet_name_reads_as_reference(sheet)) << f;
+  }
+  EXPECT_EQ(charts, 9u * 6u + 1u);
 }
 
 }  // namespace
