@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/output_folder.hpp"
 
 #ifndef PIERRE_VERSION
 #define PIERRE_VERSION "unknown"
@@ -55,6 +56,11 @@ int main(int argc, char** argv) {
   } catch (const pierre::io::InputError& e) {
     std::fflush(stdout);
     std::fputs((std::string(e.what()) + "\n").c_str(), stderr);  // fputs never throws
+    return kExitInput;
+  } catch (const pierre::io::CommitError& e) {  // a result file held open, or not a file
+    std::fflush(stdout);
+    std::fputs(("error: cannot put the results in place: " + std::string(e.what()) + "\n").c_str(),
+               stderr);
     return kExitInput;
   } catch (const std::exception& e) {
     std::fflush(stdout);

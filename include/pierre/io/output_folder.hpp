@@ -2,15 +2,27 @@
 // (`DIR/.pierre-partial-<pid>/`) and moves each file into DIR only once the run has succeeded
 // (commit). Without a commit — an exception, a failed sink — the destructor removes the
 // staging folder, and DIR too when this object created it and it is left empty, so a failed
-// run leaves nothing behind.
+// run leaves nothing behind. The staging folders of killed runs (their process gone) are taken
+// away by the next run in the same folder.
 #pragma once
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace pierre::io {
+
+// A commit that could not replace a file of DIR; DIR is as it was before it.
+class CommitError : public std::runtime_error {
+ public:
+  CommitError(const std::filesystem::path& file, const std::string& why);
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  std::filesystem::path file_;
+};
 
 class OutputFolder {
  public:
@@ -27,7 +39,9 @@ class OutputFolder {
 
   // Moves every staged file into DIR (replacing files of the same name), removes the files of
   // DIR named in `stale` that this run did not produce (outputs of an earlier run with other
-  // options), removes the staging folder. Returns the final paths, sorted by name.
+  // options), removes the staging folder. Returns the final paths, sorted by name. All or
+  // nothing: when a file cannot be replaced (held open, not a file), DIR is put back as it was
+  // and CommitError names the file.
   std::vector<std::filesystem::path> commit(const std::vector<std::string>& stale = {});
   // Removes the staging folder (and DIR when created here and empty); never throws.
   void discard() noexcept;

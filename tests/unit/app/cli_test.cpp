@@ -193,6 +193,25 @@ TEST_F(Cli, SameSeedSameFiles) {
   EXPECT_NE(slurp(dir_ / "a" / "trajectories.csv"), slurp(dir_ / "c" / "trajectories.csv"));
 }
 
+// A rerun that cannot replace one result (here a folder by its name; a report held open in
+// Excel on Windows fails the same way) exits 2, names the file, and leaves every earlier result
+// as it was. It exited 3 with some files of the new run and some of the old.
+TEST_F(Cli, ARerunThatCannotReplaceAResultLeavesTheEarlierOne) {
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --seed 1 --out " + q(out)).code, 0);
+  const std::string trajectories = slurp(out / "trajectories.csv");
+  const std::string crossings = slurp(out / "crossings.csv");
+  fs::remove(out / "summary.json");
+  fs::create_directory(out / "summary.json");
+  const Result r = pierre("run " + kScenario + " --quiet --seed 2 --out " + q(out));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("summary.json: it is not a file"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(out / "trajectories.csv"), trajectories);
+  EXPECT_EQ(slurp(out / "crossings.csv"), crossings);
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_NE(e.path().filename().string().rfind(".pierre-partial-", 0), 0u) << e.path();
+}
+
 TEST_F(Cli, ThreadCountDoesNotChangeResults) {
   ASSERT_EQ(pierre("run " + kScenario + " --quiet --impacts --threads 1 --out " + q(dir_ / "t1")).code, 0);
   ASSERT_EQ(pierre("run " + kScenario + " --quiet --impacts --threads 2 --out " + q(dir_ / "t2")).code, 0);

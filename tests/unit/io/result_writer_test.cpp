@@ -2,6 +2,8 @@
 // converted (J → kJ), empty first-impact cells, CSV quoting; the samples kept for the
 // statistics; summary.json; the atomic output folder.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -226,6 +228,58 @@ TEST(OutputFolder, WithoutCommitNothingIsLeft) {
   }
   EXPECT_TRUE(std::filesystem::exists(out / "keep.txt"));  // a folder of the user's stays
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), {}), 1);
+}
+
+// A commit that cannot replace one file leaves the folder as it was: here a folder of the user's
+// by a result's name (a file held open by another program fails the same way, later). Before,
+// the files sorted ahead of it were replaced and the others not: half of each run.
+TEST(OutputFolder, CommitIsAllOrNothing) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  std::filesystem::create_directories(out / "b.json");  // in the way of b.json
+  std::ofstream(out / "a.csv") << "old a\n";
+  std::ofstream(out / "c.csv") << "old c\n";
+  std::ofstream(out / "impacts.csv") << "old impacts\n";
+  {
+    io::OutputFolder f(out);
+    for (const char* n : {"a.csv", "b.json", "c.csv"}) std::ofstream(f.staged(n)) << "new\n";
+    try {
+      f.commit({"impacts.csv"});
+      FAIL() << "no CommitError";
+    } catch (const io::CommitError& e) {
+      EXPECT_EQ(e.file(), out / "b.json");
+      EXPECT_NE(std::string(e.what()).find("not a file"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("left as it was"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(read_file(out / "a.csv"), "old a\n");
+  EXPECT_EQ(read_file(out / "c.csv"), "old c\n");
+  EXPECT_EQ(read_file(out / "impacts.csv"), "old impacts\n");  // stale, but not removed either
+  EXPECT_TRUE(std::filesystem::is_directory(out / "b.json"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), {}), 4);  // no staging left
+}
+
+// A run killed outright (kill -9, out of memory) cannot take its staging folder away: the next
+// run in the folder does, when that process is gone. A run still going keeps its own.
+TEST(OutputFolder, TheStagingOfAKilledRunIsTakenAway) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ::waitpid(child, nullptr, 0);  // gone: its process id is free
+  const auto dead = out / (".pierre-partial-" + std::to_string(child));
+  const auto alive = out / (".pierre-partial-" + std::to_string(::getppid()));
+  for (const auto& p : {dead, alive}) {
+    std::filesystem::create_directories(p);
+    std::ofstream(p / "trajectories.csv") << "partial\n";
+  }
+  {
+    io::OutputFolder f(out);
+    f.commit();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dead));
+  EXPECT_TRUE(std::filesystem::exists(alive / "trajectories.csv"));
 }
 
 TEST(OutputFolder, OutputPathThatIsAFileIsRefused) {
