@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "pierre/io/input_error.hpp"
 #include "pierre/io/report_template.hpp"
 #include "pierre/io/xlsx_report.hpp"
 #include "pierre/sim/trajectory.hpp"
@@ -46,33 +47,37 @@ std::vector<std::vector<geometry::Vec2>> sample_paths(const sim::Scenario& scena
 }
 
 namespace {
-std::string today() {
-  const std::time_t now = std::time(nullptr);
+std::string iso_date(std::time_t t) {
   std::tm tm{};
-  gmtime_r(&now, &tm);
+  gmtime_r(&t, &tm);
   char buf[16];
   std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
   return buf;
 }
 }  // namespace
 
+std::string report_date() {
+  // SOURCE_DATE_EPOCH (reproducible-builds.org) pins the date, so a regenerated report is
+  // byte-identical; else today's date. Seconds since 1970 up to the end of year 9999, the last
+  // day a workbook's date holds (milliseconds, a common slip, are 1000 times too many).
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (!epoch || !*epoch) return iso_date(std::time(nullptr));
+  const std::string text = epoch;
+  constexpr long long kLast = 253402300799;  // 9999-12-31T23:59:59Z
+  const bool digits = text.size() <= 12 && text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits || std::stoll(text) > kLast)
+    throw io::InputError("environment", 0, "SOURCE_DATE_EPOCH", "\"" + text + "\"",
+                         "whole seconds since 1970-01-01 UTC, 0 to 253402300799 (the report's "
+                         "date; unset it for today's)");
+  return iso_date(static_cast<std::time_t>(std::stoll(text)));
+}
+
 io::ReportData report_data(const io::LoadedScenario& loaded,
                            const design::RunStatistics& statistics) {
   io::ReportData d;
   d.scenario = &loaded;
   d.pierre_version = PIERRE_VERSION;
-  // SOURCE_DATE_EPOCH (reproducible-builds.org) pins the date, so a regenerated report is
-  // byte-identical; else today's date.
-  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"); epoch && *epoch) {
-    const std::time_t t = static_cast<std::time_t>(std::strtoll(epoch, nullptr, 10));
-    std::tm tm{};
-    gmtime_r(&t, &tm);
-    char buf[16];
-    std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
-    d.date = buf;
-  } else {
-    d.date = today();
-  }
+  d.date = report_date();
   d.seed = loaded.scenario.settings.seed;
   d.throws = loaded.scenario.settings.throws;
   d.statistics = statistics;

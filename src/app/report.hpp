@@ -37,6 +37,10 @@ class FirstRows final : public sim::ResultSink {
 std::vector<std::vector<geometry::Vec2>> sample_paths(const sim::Scenario& scenario,
                                                       std::size_t count);
 
+// The report's date, YYYY-MM-DD: SOURCE_DATE_EPOCH's when set, else today's (UTC). Throws
+// io::InputError for a SOURCE_DATE_EPOCH that is not whole seconds up to the year 9999.
+std::string report_date();
+
 // The report's common part: scenario, version, date (SOURCE_DATE_EPOCH or today), seed, throws,
 // run statistics.
 io::ReportData report_data(const io::LoadedScenario& loaded, const design::RunStatistics& statistics);

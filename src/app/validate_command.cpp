@@ -3,6 +3,7 @@
 
 #include "commands.hpp"
 #include "data_folders.hpp"
+#include "report.hpp"
 #include "pierre/io/scenario_reader.hpp"
 
 namespace pierre::app {
@@ -26,6 +27,7 @@ class ValidateCommand final : public Command {
   int run() override {
     const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
     load_report_layout();  // `run` needs it too: a missing or broken one is said now
+    (void)report_date();   // and the date SOURCE_DATE_EPOCH gives it
     if (!l.quarries.empty()) return print_quarries(l);
     const sim::Scenario& s = l.scenario;
     std::string mats;

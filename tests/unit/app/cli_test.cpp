@@ -212,6 +212,31 @@ TEST_F(Cli, ARerunThatCannotReplaceAResultLeavesTheEarlierOne) {
     EXPECT_NE(e.path().filename().string().rfind(".pierre-partial-", 0), 0u) << e.path();
 }
 
+// SOURCE_DATE_EPOCH fixes the report's date. One in milliseconds (a common slip) or not a
+// number is bad input, said before the run (it was an internal error, exit 3, after it).
+TEST_F(Cli, ABadSourceDateEpochIsRefusedBeforeTheRun) {
+  const fs::path out = dir_ / "out";
+  struct Env {
+    explicit Env(const char* v) { ::setenv("SOURCE_DATE_EPOCH", v, 1); }
+    ~Env() { ::unsetenv("SOURCE_DATE_EPOCH"); }
+  };
+  for (const char* bad : {"1700000000000", "253402300800", "17e8", "-1", "today"}) {
+    Env env(bad);
+    for (const char* cmd : {"run ", "validate "}) {
+      const Result r = pierre(cmd + kScenario +
+                              (std::string(cmd) == "run " ? " --quiet --out " + q(out) : std::string()));
+      EXPECT_EQ(r.code, 2) << cmd << bad << ": " << r.err;
+      EXPECT_NE(r.err.find("SOURCE_DATE_EPOCH: found \"" + std::string(bad) + "\""), std::string::npos)
+          << r.err;
+      EXPECT_FALSE(fs::exists(out));
+    }
+  }
+  Env env("253402300799");  // the last second of 9999: the date a workbook still holds
+  const Result r = pierre("run " + kScenario + " --quiet --out " + q(out));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(slurp(out / "report.xlsx").size(), 0u);
+}
+
 TEST_F(Cli, ThreadCountDoesNotChangeResults) {
   ASSERT_EQ(pierre("run " + kScenario + " --quiet --impacts --threads 1 --out " + q(dir_ / "t1")).code, 0);
   ASSERT_EQ(pierre("run " + kScenario + " --quiet --impacts --threads 2 --out " + q(dir_ / "t2")).code, 0);
