@@ -209,7 +209,7 @@ void read_observed(const TomlTable& q, QuarrySection& out) {
       if (obs->has(key))
         obs->fail(key, "either file (the raw observations) or summary values (runout, "
                        "first_impact, count), not both: with a file the summary follows from it");
-  if (auto f = obs->string("file")) read_observed_csv(relative_to(q.file(), *f), o);
+  if (auto f = obs->file_path("file", "CSV file of observed distances")) read_observed_csv(*f, o);
   read_summary(*obs, "runout", o.rd);
   read_summary(*obs, "first_impact", o.id);
   if (auto n = obs->integer("count")) {

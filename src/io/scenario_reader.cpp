@@ -490,7 +490,7 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
     if (const auto f = t.string("observed")) {
       t.check("observed", !f->empty(), "a CSV file of observed speeds, heights, energies");
       b.observed_file = *f;
-      observed = read_observed(relative_to(top.file(), *f));
+      observed = read_observed(*t.file_path("observed", "CSV file of observed crossings"));
     }
     out.barriers.push_back(std::move(b));
     out.barrier_rules.push_back(rules);
@@ -517,8 +517,8 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
   out.scenario.name = head->required_string("name", "a name for the scenario");
   head->check("name", !out.scenario.name.empty(), "a non-empty name");
   out.description = head->string("description").value_or("");
-  if (auto mf = head->string("materials_file"))
-    out.materials_file = relative_to(scenario_file, *mf);
+  if (auto mf = head->file_path("materials_file", "materials file (TOML)"))
+    out.materials_file = *mf;
   else
     out.materials_file = rules_dir / "materials.toml";
 

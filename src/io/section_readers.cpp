@@ -136,7 +136,7 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
                      has_file ? "both file and points" : "neither file nor points",
                      "exactly one of file (a CSV) or points (inline vertices)");
   std::vector<Vertex> vs =
-      has_file ? read_profile_csv(relative_to(top.file(), *prof->string("file")))
+      has_file ? read_profile_csv(*prof->file_path("file", "CSV file with header x,z,material"))
                : read_inline_points(*prof);
 
   std::vector<geometry::Vec2> pts;
@@ -311,8 +311,8 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
   const ShapeRange shape = read_shape(*b).value_or(ShapeRange{});
 
   std::vector<GroupSource> where;
-  if (auto f = b->string("file"))
-    read_blocks_csv(relative_to(top.file(), *f), density, shape, groups, where);
+  if (auto f = b->file_path("file", "CSV file of blocks"))
+    read_blocks_csv(*f, density, shape, groups, where);
   if (const toml::array* rows = b->array_of_tables("table")) {
     for (std::size_t i = 0; i < rows->size(); ++i) {
       const toml::node& node = *rows->get(i);

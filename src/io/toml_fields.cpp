@@ -65,6 +65,26 @@ void TomlTable::fail(std::string_view key, std::string_view expected) const {
   throw InputError(file_, line_of(*n), field(key), describe(*n), std::string(expected));
 }
 
+std::optional<std::filesystem::path> TomlTable::file_path(std::string_view key,
+                                                          std::string_view what) const {
+  const auto name = string(key);
+  if (!name) return std::nullopt;
+  const std::filesystem::path p(*name);
+  const std::filesystem::path full = p.is_absolute() ? p : file_.parent_path() / p;
+  std::error_code ec;
+  const auto st = std::filesystem::status(full, ec);
+  std::string problem;
+  if (!std::filesystem::exists(st))
+    problem = "no such file: " + full.string();
+  else if (std::filesystem::is_directory(st))
+    problem = "a folder, not a file: " + full.string();
+  if (problem.empty()) return full;
+  throw InputError(file_, line_of(*find(key)), field(key), "\"" + *name + "\" (" + problem + ")",
+                   fmt::format("a readable {} (a path relative to {})", what,
+                               file_.parent_path().empty() ? std::string("the current folder")
+                                                           : file_.parent_path().string()));
+}
+
 void TomlTable::missing(std::string_view key, std::string_view expected) const {
   throw InputError(file_, line_, field(key), "nothing", std::string(expected));
 }

@@ -48,6 +48,10 @@ class TomlTable {
   std::optional<bool> boolean(std::string_view key) const;
   std::optional<std::string> string(std::string_view key) const;
   std::string required_string(std::string_view key, std::string_view expected) const;
+  // The file a string at `key` names, relative to this TOML file's folder (or absolute), or
+  // nullopt when the key is absent. A missing file, or a folder, is an error at this key's
+  // line: "found \"blocks.csv\" (no such file: /abs/blocks.csv), expected a readable <what>".
+  std::optional<std::filesystem::path> file_path(std::string_view key, std::string_view what) const;
   // A nested table, or nullopt when absent; an error when the key holds something else.
   std::optional<TomlTable> subtable(std::string_view key,
                                     std::initializer_list<std::string_view> allowed) const;

@@ -131,7 +131,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"point_nan", {{9, "points = [[0.0, nan, \"rock\"], [10.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "nan"},
         // profile CSV: empty, truncated, non-numeric
         Case{"csv_empty", {{9, kCsvProfile}}, {{"p.csv", ""}}, "p.csv", 0, "header", "an empty file"},
-        Case{"csv_missing", {{9, kCsvProfile}}, {}, "p.csv", 0, "file", "no such file"},
+        // a file the scenario names and that is not there: said at the scenario's line
+        Case{"csv_missing", {{9, kCsvProfile}}, {}, "s.toml", 9, "profile.file", "\"p.csv\" (no such file: "},
+        Case{"blocks_csv_missing", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {}, "s.toml", 17, "blocks.file", "\"b.csv\" (no such file: "},
+        Case{"profile_csv_a_folder", {{9, "file = \".\""}}, {}, "s.toml", 9, "profile.file", "\".\" (a folder, not a file: "},
         Case{"csv_header_only", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n"}}, "p.csv", 1, "profile", "0 vertex rows"},
         Case{"csv_missing_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,0\n20,0,\n"}}, "p.csv", 3, "material", "2 of 3"},
         Case{"csv_extra_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock,1\n20,0,\n"}}, "p.csv", 2, "row", "4 columns"},
