@@ -108,6 +108,15 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
   buf << in.rdbuf();
   std::string text = buf.str();
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
+  // Excel's "Unicode text" export is UTF-16: two bytes a character, half of them zero here.
+  const bool utf16 = text.rfind("\xFF\xFE", 0) == 0 || text.rfind("\xFE\xFF", 0) == 0;
+  if (utf16 || text.find('\0') != std::string::npos)
+    throw InputError(file, 1, "file",
+                     utf16 ? "a UTF-16 text (it starts with the byte-order mark of UTF-16)"
+                           : "zero bytes (a UTF-16 text, or not a text at all)",
+                     fmt::format("a CSV file in UTF-8 with header {} (in Excel: Save As, "
+                                 "\"CSV UTF-8\")",
+                                 expected_header));
 
   CsvTable t;
   t.file = file;
@@ -124,6 +133,8 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
     if (t.header.empty()) {
       t.header_line = line_no;
       for (const std::string& h : cells) {
+        if (auto bad = unwritable_text(h))
+          throw InputError(file, line_no, "header", *bad, std::string(kWritableText));
         if (std::find(allowed.begin(), allowed.end(), h) == allowed.end())
           throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
                            fmt::format("only the columns {}", join(allowed)));

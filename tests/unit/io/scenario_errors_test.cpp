@@ -135,6 +135,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"csv_missing", {{9, kCsvProfile}}, {}, "s.toml", 9, "profile.file", "\"p.csv\" (no such file: "},
         Case{"blocks_csv_missing", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {}, "s.toml", 17, "blocks.file", "\"b.csv\" (no such file: "},
         Case{"profile_csv_a_folder", {{9, "file = \".\""}}, {}, "s.toml", 9, "profile.file", "\".\" (a folder, not a file: "},
+        Case{"csv_utf16", {{9, kCsvProfile}}, {{"p.csv", std::string("\xFF\xFEx\0,\0z\0\n\0", 10)}}, "p.csv", 1, "file", "UTF-16"},
+        Case{"csv_header_latin1", {{9, kCsvProfile}}, {{"p.csv", "x,z,mat\xe9rial\n0,10,rock\n"}}, "p.csv", 1, "header", "not UTF-8"},
         Case{"csv_header_only", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n"}}, "p.csv", 1, "profile", "0 vertex rows"},
         Case{"csv_missing_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,0\n20,0,\n"}}, "p.csv", 3, "material", "2 of 3"},
         Case{"csv_extra_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock,1\n20,0,\n"}}, "p.csv", 2, "row", "4 columns"},
