@@ -194,7 +194,8 @@ sim::SimulationSettings read_simulation(const TomlTable& top) {
   const auto throws = s->integer("throws");
   if (!throws) s->missing("throws", "an integer >= 1");
   s->check("throws", *throws >= 1 && *throws <= std::numeric_limits<std::uint32_t>::max(),
-           "an integer >= 1 (throws per block and source)");
+           fmt::format("an integer from 1 to {} (throws per block and source)",
+                       std::numeric_limits<std::uint32_t>::max()));
   out.throws = static_cast<std::uint32_t>(*throws);
 
   model::RoughnessModel& r = out.roughness;
@@ -553,6 +554,19 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
   out.scenario.profile = detail::read_profile(top, out.scenario.materials, "");
   detail::read_blocks(top, out.block_groups, out.scenario.blocks, "");
   detail::read_sources(top, out.scenario, "");
+  {
+    // Sources × blocks × throws in a 64-bit count (it wrapped): at most 2^53, exact as a double.
+    const auto& sc = out.scenario;
+    const long double n = static_cast<long double>(sc.sources.size()) * sc.blocks.size() *
+                          sc.settings.throws;
+    if (n > 9007199254740992.0L) {
+      const auto s = top.subtable("simulation", {});
+      s->fail("throws", fmt::format("at most 2^53 trajectories in all ({} sources × {} blocks × "
+                                    "{} throws are {:.3g})",
+                                    sc.sources.size(), sc.blocks.size(), sc.settings.throws,
+                                    static_cast<double>(n)));
+    }
+  }
   read_lines(top, out.scenario);
   read_barriers(top, rules_dir, out);
   return out;

@@ -24,6 +24,7 @@ using model::ModelDefaults;
 
 namespace {
 constexpr std::int64_t kMaxCount = 1'000'000;  // blocks per group: a guard against typos
+constexpr std::int64_t kMaxBlocks = 1'000'000;  // blocks in all (each is kept: memory)
 
 // "quarries.profile", or "profile" at the root.
 std::string dotted(std::string_view table_path, std::string_view key) {
@@ -352,6 +353,16 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
     throw InputError(top.file(), b->line(), top.field("blocks"), "no blocks",
                      fmt::format("{0}.file or at least one [[{0}.table]]",
                                  dotted(table_path, "blocks")));
+
+  std::int64_t in_all = 0;
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    if ((in_all += groups[i].count) > kMaxBlocks)
+      throw InputError(where[i].file, where[i].line, where[i].field,
+                       fmt::format("\"{}\" with count {}: {} blocks in all so far", groups[i].id,
+                                   groups[i].count, in_all),
+                       fmt::format("at most {} blocks in all (a guard against typos: each block "
+                                   "is thrown `throws` times from every source)",
+                                   kMaxBlocks));
 
   std::set<std::string> ids;
   std::map<std::string, std::size_t> made_by;  // every block's id (a row's count expanded): its row
