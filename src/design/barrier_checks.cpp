@@ -155,11 +155,10 @@ void sample_line(Builder& b) {
   const Q qs[] = {{"v_k", &d.v_k.interval}, {"h_k", &d.h_k.interval}, {"E_d", &d.E_d_interval},
                   {"h_i", &d.h_i_interval}};
   double worst = kNaN;
-  std::string which;
-  bool missing = false;
+  std::string which, missing;
   for (const Q& q : qs) {
     if (!*q.ci) {
-      missing = true;
+      missing += (missing.empty() ? "" : ", ") + std::string(q.name);
       continue;
     }
     const double ratio = (*q.ci)->half_width() / std::abs((*q.ci)->estimate);
@@ -173,8 +172,15 @@ void sample_line(Builder& b) {
                        "largest half-width of the 90 % bootstrap interval of v_k, h_k, E_d, h_i "
                        "relative to its value" + (which.empty() ? std::string() : " (" + which + ")"),
                        100 * worst, 100 * tol, "%");  // in % as the quarries' sample.size
-  if (std::isnan(worst) || missing) {
-    set(l, CheckStatus::warn, "no bootstrap interval: too few crossings");
+  if (!missing.empty()) {
+    // Why: the design's note on the bootstrap (e.g. a resample of few distinct values that no
+    // Weibull fits), else the sample itself.
+    std::string why = "the resamples gave none";
+    for (const auto& n : d.notes)
+      if (n.rfind("bootstrap: ", 0) == 0) why = n.substr(11);
+    std::string reason = "no bootstrap interval of " + missing + " (" + why + ")";
+    if (!which.empty()) reason += "; the largest half-width of the others is " + pct(worst) + " of " + which;
+    set(l, CheckStatus::warn, reason);
     return;
   }
   if (worst <= tol) {

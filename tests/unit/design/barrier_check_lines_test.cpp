@@ -204,8 +204,17 @@ TEST(BarrierCheckLines, SampleSizeWarnsWithTheThrowsNeeded) {
   EXPECT_NE(l.what.find("E_d"), std::string::npos) << l.what;
   EXPECT_NE(l.reason.find("2000 trajectories"), std::string::npos) << l.reason;  // 500 × 4
   EXPECT_NE(l.reason.find("throws = 20"), std::string::npos) << l.reason;         // 5 × 4
+  // A missing interval is named, with the bootstrap's own reason (it said "too few crossings"
+  // whatever the cause).
   d.h_k.interval.reset();
-  EXPECT_EQ(status(d, rules(), "sample.size"), CheckStatus::warn);
+  d.h_i_interval.reset();
+  d.notes.push_back("bootstrap: a resample gave no fit");
+  const auto missing = design::barrier_check_lines(d, rules());
+  const auto& m = line(missing, "sample.size");
+  EXPECT_EQ(m.status, CheckStatus::warn);
+  EXPECT_NE(m.reason.find("no bootstrap interval of h_k, h_i (a resample gave no fit)"),
+            std::string::npos) << m.reason;
+  EXPECT_NE(m.reason.find("is 10 % of E_d"), std::string::npos) << m.reason;
 }
 
 TEST(BarrierCheckLines, ReachWarnsBelowThirty) {
