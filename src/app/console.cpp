@@ -120,6 +120,18 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
   for (const auto& f : files) fmt::print(out, "  {}\n", f.string());
 }
 
+void print_source_notes(std::FILE* out, const sim::Scenario& scenario) {
+  for (std::size_t i : sim::sources_against_main_direction(scenario)) {
+    const sim::Source& src = scenario.sources[i];
+    fmt::print(out,
+               "Note: the ground under source \"{}\" (x = {} m) falls towards the profile's "
+               "first vertex,\n      so its blocks travel against the vertex order, and "
+               "observation lines count only\n      first crossings in that order. List the "
+               "profile's vertices from the source end.\n",
+               src.name.empty() ? fmt::format("{}", i) : src.name, src.position.x);
+  }
+}
+
 namespace {
 
 std::string g(double v, int width) {

@@ -9,6 +9,7 @@
 
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/result_writer.hpp"
+#include "pierre/sim/scenario.hpp"
 
 namespace pierre::app {
 
@@ -26,6 +27,10 @@ class ProgressBar {
   bool drawn_ = false;
   clock::time_point start_, last_;
 };
+
+// A note for each source whose ground falls towards the profile's first vertex (its blocks
+// travel against the main direction, in which observation lines count first crossings).
+void print_source_notes(std::FILE* out, const sim::Scenario& scenario);
 
 void print_results(std::FILE* out, const design::RunStatistics& stats, double seconds,
                    const std::vector<std::filesystem::path>& files);

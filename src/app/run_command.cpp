@@ -114,6 +114,7 @@ class RunCommand final : public Command {
     sim::Scenario& sc = loaded.scenario;
     if (seed_opt_->count()) sc.settings.seed = static_cast<std::uint64_t>(seed_);
     if (throws_opt_->count()) sc.settings.throws = throws_;
+    if (!quiet_) print_source_notes(stdout, sc);
 
     sim::RunOptions opt;
     opt.threads = threads_;

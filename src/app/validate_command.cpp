@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "console.hpp"
 #include "data_folders.hpp"
 #include "report.hpp"
 #include "pierre/io/scenario_reader.hpp"
@@ -53,6 +54,7 @@ class ValidateCommand final : public Command {
                  l.barrier_rules[i].name, l.barrier_rules_files[i].string(),
                  b.candidate ? "checks a candidate" : "a design (no candidate)");
     }
+    print_source_notes(stdout, s);
     return kExitOk;
   }
 

@@ -31,7 +31,7 @@ inline model::Material make_material(double e_n, double e_t, double roughness,
 
 inline model::Block make_block(double mass, double f_min = 1.0, double f_max = 1.0) {
   model::Block b;
-  b.id = "b";
+  b.id = std::string(1, 'b');  // (not = "b": GCC 12 warns falsely, -Wrestrict, once inlined)
   b.mass = mass;
   b.shape_min = f_min;
   b.shape_max = f_max;

@@ -141,6 +141,26 @@ TEST_F(Cli, ValidatePrintsASummary) {
   EXPECT_NE(r.out.find("5 vertices"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("2 materials"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("600 trajectories"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("Note:"), std::string::npos) << r.out;
+}
+
+// A profile listed from the toe end: valid, but its blocks travel against the vertex order and
+// no line would count them. validate and run say so; --quiet keeps run silent.
+TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
+  std::ofstream(dir_ / "p.csv") << "x,z,material\n0,38,t\n100,40,t\n150,70,t\n200,100,\n";
+  std::ofstream(dir_ / "s.toml")
+      << "[scenario]\nname = \"from the toe\"\n[simulation]\nseed = 1\nthrows = 2\n"
+         "[profile]\nfile = \"p.csv\"\n[materials.t]\npreset = \"talus\"\n[blocks]\n"
+         "[[blocks.table]]\nid = \"a\"\nmass = 1000.0\n[[sources]]\nname = \"crest\"\n"
+         "x = 199.0\nz = 101.0\n";
+  const std::string note = "the ground under source \"crest\" (x = 199 m) falls towards";
+  const Result v = pierre("validate " + q(dir_ / "s.toml"));
+  EXPECT_EQ(v.code, 0) << v.err;
+  EXPECT_NE(v.out.find(note), std::string::npos) << v.out;
+  const Result r = pierre("run " + q(dir_ / "s.toml") + " --out " + q(dir_ / "o"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(note), std::string::npos) << r.out;
+  EXPECT_TRUE(pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o")).out.empty());
 }
 
 TEST_F(Cli, HelpShowsExamplesAndExitsZero) {

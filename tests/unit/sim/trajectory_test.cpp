@@ -239,6 +239,30 @@ TEST(Trajectory, AConcaveVertexIsOneEventAgainstTheImpactLimit) {
   EXPECT_EQ(t.impacts, 1u);
 }
 
+// A profile listed from the toe end (x rising uphill, the source at the top) is simulated the
+// same, but its blocks travel against the vertex order, in which observation lines count first
+// crossings: the sources on ground that falls towards the first vertex are named.
+TEST(Scenario, SourcesAgainstTheMainDirectionAreNamed) {
+  auto from_toe = test::make_profile({{0, 38}, {100, 40}, {150, 70}, {200, 100}});
+  Scenario s = test::make_scenario(std::move(from_toe), test::make_material(5, 50, 0.3),
+                                   {test::make_block(1000)}, {199, 101}, 1);
+  s.sources.push_back(Source{"on the flat", {50, 39}, {0, 0}, 0});  // 1.1°: rises too
+  s.sources.push_back(Source{"in the rock", {160, 10}, {0, 0}, 0});  // under the 31° part
+  EXPECT_EQ(sources_against_main_direction(s), (std::vector<std::size_t>{0, 1, 2}));
+  auto from_top = test::make_profile({{0, 100}, {50, 70}, {100, 40}, {200, 38}, {300, 38}});
+  Scenario t = test::make_scenario(std::move(from_top), test::make_material(5, 50, 0.3),
+                                   {test::make_block(1000)}, {1, 101}, 1);
+  t.sources.push_back(Source{"level", {250, 38}, {0, 0}, 0});
+  EXPECT_TRUE(sources_against_main_direction(t).empty());
+  // Listed from the toe end, its blocks never cross a line in the vertex order.
+  s.lines = {{"L", 140}};
+  s.sources.resize(1);
+  s.settings.throws = 20;
+  const auto r = run(s, 1);
+  EXPECT_TRUE(r.crossings.empty());
+  for (const auto& t2 : r.trajectories) EXPECT_LT(t2.stop.x, 140) << t2.trajectory;
+}
+
 TEST(Trajectory, FlyingOffTheProfileEndsAtTheBoundary) {
   auto prof = test::make_profile({{0, 100}, {10, 0}});
   Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3),
