@@ -98,6 +98,9 @@ double CsvTable::number(const CsvRow& row, std::size_t col) const {
 CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
                   std::string_view expected_header) {
   std::ifstream in(file, std::ios::binary);
+  if (std::error_code dir_ec; std::filesystem::is_directory(file, dir_ec))
+    throw InputError(file, 0, "file", "a folder, not a file",
+                     fmt::format("a readable CSV file with header {}", expected_header));
   if (!in) {
     std::error_code ec;
     const bool exists = std::filesystem::exists(file, ec);

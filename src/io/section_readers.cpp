@@ -34,6 +34,8 @@ std::string dotted(std::string_view table_path, std::string_view key) {
 
 std::string read_text(const fs::path& file, std::string_view what) {
   std::ifstream in(file, std::ios::binary);
+  if (std::error_code ec; fs::is_directory(file, ec))
+    throw InputError(file, 0, "file", "a folder, not a file", fmt::format("a readable {}", what));
   if (!in) {
     std::error_code ec;
     const bool exists = fs::is_regular_file(file, ec);

@@ -181,3 +181,18 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 }  // namespace
+
+// A folder where the scenario file is expected is named as such: reading a folder as a stream
+// gives nothing, which said "found nothing, expected a [scenario] table". (A CSV given by path
+// is checked at the scenario's key: ScenarioError profile_csv_a_folder.)
+TEST(ScenarioReader, AFolderIsNotAFile) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "s.toml");
+  try {
+    (void)load_scenario(dir.path() / "s.toml", kRules);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.found(), "a folder, not a file");
+    EXPECT_EQ(e.file(), dir.path() / "s.toml");
+  }
+}
