@@ -114,7 +114,10 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
       if (l.gov)
         gov = fmt::format("{}_gov {}{} ({})", l.s == &r.rd ? "RD" : "ID",
                           metres(l.gov->value_h * H, 0),
-                          std::isfinite(l.gov->value_h) ? " m" : " the profile", l.gov->how);
+                          std::isfinite(l.gov->value_h)  ? " m"
+                          : std::isinf(l.gov->value_h) ? " the profile"
+                                                        : "",  // "-": no values
+                          l.gov->how);
       if (first)
         fmt::print(out, "{:<18} {:>6} {:>6.1f}  ", r.name, l.s->count, H);
       else if (l.s == &r.id && !l.per_h)
@@ -142,13 +145,20 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
   for (const design::QuarrySectionResult& s : d.sections) {
     const design::QuarryGeometry& g = s.geometry;
     const design::QuarryDistances& q = s.distances;
+    // [0, 12.4] m; [0, beyond the profile]; or none when no block gave a value (e.g. no
+    // first impact when none reached the floor).
+    auto zone = [](double v) {
+      if (std::isnan(v)) return std::string("none (no values)");
+      return fmt::format("[0, {}]{}", metres(v, 0), std::isfinite(v) ? " m" : "");
+    };
     fmt::print(out,
-               "{}: crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); danger zone "
-               "[0, {}] m, first-impact zone [0, {}] m from the toe; {} thrown, {} reached the "
-               "floor, {} stopped above the toe, {} left the section{}\n",
+               "{}: crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); from the "
+               "toe, danger zone {}, first-impact zone {}; {} thrown, {} reached the floor, {} "
+               "stopped above the toe, {} left the section{}\n",
                s.spec.name, g.crest.x, design::to_string(g.crest_origin), g.toe.x,
                design::to_string(g.toe_origin), g.height, design::to_string(g.height_origin),
-               metres(s.danger_zone, 0), metres(s.first_impact_zone, 0), q.thrown,
+               zone(s.danger_zone), zone(s.first_impact_zone),
+               q.thrown,
                q.reached_floor, q.above_toe, q.left_profile,
                q.abnormal ? fmt::format(", {} stopped by a time/impact limit or numerically",
                                         q.abnormal)

@@ -141,6 +141,26 @@ TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
   EXPECT_EQ(check(summary(out2), "North", "zone.crusher")["status"], "FAIL");
 }
 
+// A toe given far out on the floor, past where every block stops: no block reaches the floor,
+// so there is no ID and no first-impact zone. The console says "none", not "[0, -] m", and
+// "ID_gov -", not "- the profile".
+TEST_F(QuarryCli, NoFirstImpactIsSaidAsNone) {
+  std::string text = slurp(kData + "pass.toml");
+  const std::string toe = "toe = 22.0";
+  text.replace(text.find(toe), toe.size(), "toe = 85.0");
+  std::ofstream(dir_ / "far-toe.toml") << text;
+  const Result r = pierre("run '" + (dir_ / "far-toe.toml").string() + "' --out '" +
+                          (dir_ / "out").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = summary(dir_ / "out");
+  ASSERT_EQ(j["quarries"][1]["name"], "South");
+  ASSERT_EQ(j["quarries"][1]["first_impact"]["count"], 0) << "the test needs no first impact";
+  EXPECT_NE(r.out.find("from the toe, danger zone [0, 0.0] m, first-impact zone none (no values)"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ID_gov - (P95: no values)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("- the profile"), std::string::npos) << r.out;
+}
+
 TEST_F(QuarryCli, BadQuarryInputExitsTwoAndWritesNothing) {
   const fs::path out = dir_ / "out";
   const Result r = pierre("check " + kData + "bad.toml --out '" + out.string() + "'");
