@@ -45,11 +45,13 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
   r.title = head->required_string("title", "a title for the rule set");
   r.source = head->required_string("source", "a string citing where the rules come from");
 
-  const auto toe = top.subtable("toe", {"floor_angle", "source"});
-  if (!toe) top.missing("toe", "a [toe] table with floor_angle");
-  r.floor_angle_deg = toe->required_number("floor_angle", "a floor angle in (0, 90) degrees");
-  toe->check("floor_angle", r.floor_angle_deg > 0 && r.floor_angle_deg < 90,
-             "a floor angle in (0, 90) degrees");
+  // [toe], [retention] and [ritchie] may be left out: design-checks.md §2's defaults (a 15°
+  // floor angle, a 90 % retention target, 0.2·H + 4.5 m) are QuarryRuleSet's.
+  if (const auto toe = top.subtable("toe", {"floor_angle", "source"})) {
+    r.floor_angle_deg = toe->number("floor_angle", r.floor_angle_deg);
+    toe->check("floor_angle", r.floor_angle_deg > 0 && r.floor_angle_deg < 90,
+               "a floor angle in (0, 90) degrees");
+  }
 
   const auto gov = top.subtable("governing", {"use", "percentile", "lognormal_percentile", "source"});
   if (!gov) top.missing("governing", "a [governing] table with use = [...]");
@@ -87,17 +89,16 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
                "a percentile in (0, 100)");
   }
 
-  const auto ret = top.subtable("retention", {"target", "source"});
-  if (!ret) top.missing("retention", "a [retention] table with target");
-  r.retention_target = ret->required_number("target", "a share in (0, 1]");
-  ret->check("target", r.retention_target > 0 && r.retention_target <= 1, "a share in (0, 1]");
-
-  const auto rit = top.subtable("ritchie", {"factor", "offset", "source"});
-  if (!rit) top.missing("ritchie", "a [ritchie] table with factor and offset");
-  r.ritchie_factor = rit->required_number("factor", "a factor >= 0 (width = factor·H + offset)");
-  rit->check("factor", r.ritchie_factor >= 0, "a factor >= 0");
-  r.ritchie_offset = rit->required_number("offset", "an offset >= 0 (m)");
-  rit->check("offset", r.ritchie_offset >= 0, "an offset >= 0 (m)");
+  if (const auto ret = top.subtable("retention", {"target", "source"})) {
+    r.retention_target = ret->number("target", r.retention_target);
+    ret->check("target", r.retention_target > 0 && r.retention_target <= 1, "a share in (0, 1]");
+  }
+  if (const auto rit = top.subtable("ritchie", {"factor", "offset", "source"})) {
+    r.ritchie_factor = rit->number("factor", r.ritchie_factor);
+    rit->check("factor", r.ritchie_factor >= 0, "a factor >= 0 (width = factor·H + offset)");
+    r.ritchie_offset = rit->number("offset", r.ritchie_offset);
+    rit->check("offset", r.ritchie_offset >= 0, "an offset >= 0 (m)");
+  }
 
   if (const auto s = top.subtable("sample", {"min_reached", "percentile", "tolerance", "confidence",
                                              "resamples", "source"})) {
@@ -109,10 +110,14 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
     s->check("percentile", r.sample_percentile > 0 && r.sample_percentile <= 100, pct);
     r.sample_tolerance = s->number("tolerance", r.sample_tolerance);
     s->check("tolerance", r.sample_tolerance > 0, "a relative tolerance > 0");
+    // design-checks.md §1 step 8: a 90 % interval from at least 1000 resamples; a rule set may
+    // ask for more, not for less.
     r.sample_confidence = s->number("confidence", r.sample_confidence);
-    s->check("confidence", r.sample_confidence > 0 && r.sample_confidence < 1, "a confidence in (0, 1)");
+    s->check("confidence", r.sample_confidence >= 0.9 && r.sample_confidence < 1,
+             "a confidence from 0.9 to below 1 (design-checks.md §1 step 8: a 90 % interval)");
     if (auto n = s->integer("resamples")) {
-      s->check("resamples", *n >= 2 && *n <= 1'000'000, "an integer from 2 to 1000000");
+      s->check("resamples", *n >= 1000 && *n <= 1'000'000,
+               "an integer from 1000 to 1000000 (design-checks.md §1 step 8: at least 1000)");
       r.sample_resamples = static_cast<std::size_t>(*n);
     }
   }
@@ -271,7 +276,9 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     try {
       s.rules = load_quarry_rules(rules_arg, rules_dir);
     } catch (const InputError& e) {
-      if (e.line() != 0) throw;  // an error inside the rule file: reported there
+      // An error inside the rule file is reported there; only a file that is not there (or
+      // cannot be read) is said at the scenario's rules key.
+      if (e.field() != "file") throw;
       q.fail("rules", fmt::format("a rule set in {} (e.g. \"quarry-thesis-2015\", "
                                   "\"quarry-conservative\") or a path to a .toml file ({}: {})",
                                   rules_dir.string(), e.file().string(), e.found()));

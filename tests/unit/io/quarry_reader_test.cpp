@@ -237,6 +237,21 @@ std::vector<ErrorCase> error_cases() {
 INSTANTIATE_TEST_SUITE_P(All, QuarryReaderErrors, ::testing::ValuesIn(error_cases()),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// An error inside a rule file given by path is said in that file, even a missing table (line 0):
+// it was replaced by "expected a rule set in rules/ or a path to a .toml file".
+TEST(QuarryReader, AnErrorInsideTheRuleFileIsSaidThere) {
+  test::TempDir dir;
+  dir.write("site.toml", "[rule_set]\ntitle = \"Site\"\nsource = \"site manager\"\n");
+  try {
+    read(dir, section_with(4, "rules = \"site.toml\""));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), dir.path() / "site.toml") << e.what();
+    EXPECT_EQ(e.field(), "governing") << e.what();
+    EXPECT_EQ(e.found(), "nothing") << e.what();
+  }
+}
+
 TEST(QuarryReader, GroupWithDifferentRuleSets) {
   const std::string text = kSection + "\n" + section_with(2, "name = \"Preg 2\"\nrules = \"quarry-conservative\"");
   const InputError e = error_of(text);
@@ -308,7 +323,7 @@ factor = 0.25
 offset = 5.0
 [sample]
 min_reached = 50
-resamples = 200
+resamples = 2000
 [fit]
 p_value = 0.01
 [clauses]
@@ -326,7 +341,7 @@ TEST(QuarryRules, FromATempFileByPath) {
   EXPECT_DOUBLE_EQ(r.retention_target, 0.95);
   EXPECT_DOUBLE_EQ(r.ritchie_offset, 5);
   EXPECT_EQ(r.min_reached, 50u);
-  EXPECT_EQ(r.sample_resamples, 200u);
+  EXPECT_EQ(r.sample_resamples, 2000u);
   EXPECT_DOUBLE_EQ(r.fit_p_value, 0.01);
   EXPECT_EQ(r.clauses.at("zone"), "site rule 3.1");
   // And by name from a rules folder.
@@ -358,6 +373,25 @@ TEST(QuarryRules, Errors) {
   std::string angle = kCustom;
   angle.replace(angle.find("10.0"), 4, "95.0");
   EXPECT_EQ(err(angle).field(), "toe.floor_angle");
+  // design-checks.md §1 step 8: at least 1000 resamples and a 90 % interval; more, not fewer.
+  std::string few = kCustom;
+  few.replace(few.find("resamples = 2000"), 16, "resamples = 999");
+  EXPECT_EQ(err(few).field(), "sample.resamples");
+  std::string loose = kCustom;
+  loose.replace(loose.find("min_reached = 50"), 16, "min_reached = 50\nconfidence = 0.5");
+  EXPECT_EQ(err(loose).field(), "sample.confidence");
+  // [toe], [retention] and [ritchie] left out: the spec's defaults (15°, 90 %, 0.2·H + 4.5 m).
+  std::string bare = kCustom;
+  for (const char* t : {"[toe]\nfloor_angle = 10.0\n", "[retention]\ntarget = 0.95\n",
+                        "[ritchie]\nfactor = 0.25\noffset = 5.0\n"}) {
+    ASSERT_NE(bare.find(t), std::string::npos) << t;
+    bare.replace(bare.find(t), std::string(t).size(), "");
+  }
+  const auto d = load_quarry_rules(dir.write("bare.toml", bare).string(), dir.path());
+  EXPECT_DOUBLE_EQ(d.floor_angle_deg, 15);
+  EXPECT_DOUBLE_EQ(d.retention_target, 0.90);
+  EXPECT_DOUBLE_EQ(d.ritchie_factor, 0.2);
+  EXPECT_DOUBLE_EQ(d.ritchie_offset, 4.5);
   const auto missing = [&] {
     try {
       load_quarry_rules("absent", dir.path());
