@@ -128,6 +128,17 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
       fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", l.label, pair(p50, o50, p),
                  pair(p95, o95, p), metres(p99, 0, p), pair(mx, omx, p), gov);
     }
+    // A group's sections, each on its own (design-checks.md §2: per section and pooled).
+    if (r.sections.size() > 1)
+      for (std::size_t i : r.sections) {
+        const design::QuarrySectionResult& sec = d.sections[i];
+        for (const auto* st : {&sec.rd, &sec.id})
+          fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n",
+                     st == &sec.rd ? "  " + sec.spec.name : "", st->count,
+                     st == &sec.rd ? fmt::format("{:.1f}", sec.geometry.height) : "",
+                     st == &sec.rd ? "RD m" : "ID m", metres(st->p50, 0), metres(st->p95, 0),
+                     metres(st->p99, 0), metres(st->max, 0));
+      }
   }
   const design::QuarryAverage& a = d.average;
   auto avg = [&](double calc, double obs) {

@@ -150,6 +150,13 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
       h_sum += H;
       row.id_sample.add(q.id, H, q.censor_distance);
       row.rd_sample.add(q.rd, H, q.censor_distance);
+      if (row.sections.size() > 1) {  // a group: each section's own statistics too
+        DistanceSample own_id, own_rd;
+        own_id.add(q.id, H, q.censor_distance);
+        own_rd.add(q.rd, H, q.censor_distance);
+        d.sections[i].id = distance_statistics(own_id);
+        d.sections[i].rd = distance_statistics(own_rd);
+      }
       d.all_id.add(q.id, H, q.censor_distance);
       d.all_rd.add(q.rd, H, q.censor_distance);
       durations.insert(durations.end(), q.duration.begin(), q.duration.end());
@@ -175,6 +182,10 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
     row.height = h_sum / static_cast<double>(row.sections.size());
     row.id = distance_statistics(row.id_sample);
     row.rd = distance_statistics(row.rd_sample);
+    if (row.sections.size() == 1) {
+      d.sections[row.sections.front()].id = row.id;
+      d.sections[row.sections.front()].rd = row.rd;
+    }
     row.duration = duration_statistics(durations);
     for (double q : first.spec.exceedance) {
       ExceedanceDistance e;

@@ -425,8 +425,10 @@ ojson quarry_section_json(const design::QuarrySectionResult& s, std::uint64_t se
   ojson areas = ojson::array();
   for (const auto& w : s.spec.work_areas)
     areas.push_back({{"name", w.name}, {"distance_m", w.distance},
-                     {"inside_zone", !(w.distance >= s.danger_zone)}});
+                     {"inside_zone", !design::at_least(w.distance, s.danger_zone)}});
   j["work_areas"] = areas;
+  j["runout"] = distance_statistics_json(s.rd);  // its own, beside its row's pooled ones
+  j["first_impact"] = distance_statistics_json(s.id);
   j["bench_width_m"] = s.spec.bench_width ? ojson(*s.spec.bench_width) : ojson(nullptr);
   j["bench_retention"] = s.bench_retention ? ojson(*s.bench_retention) : ojson(nullptr);
   j["ritchie_width_m"] = s.ritchie_width ? ojson(*s.ritchie_width) : ojson(nullptr);

@@ -1645,10 +1645,10 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     const std::optional<design::ObservedComparison>* obs;
   };
   const Dist dists[] = {{"rd", &row.rd, &row.observed_rd}, {"id", &row.id, &row.observed_id}};
-  for (const auto& dd : dists) {
-    const auto& st = *dd.st;
-    text(ws, r, 0, t_.get("labels", dd.key), bold());
-    text(ws, r, 1, t_.get("labels", "calculated"), centred());
+  auto calculated = [&](std::string_view key, const std::string& source,
+                        const design::DistanceStatistics& st) {
+    text(ws, r, 0, t_.get("labels", key), bold());
+    text(ws, r, 1, source, centred());
     count(ws, r, 2, st.count);
     count(ws, r, 3, st.zeros);
     count(ws, r, 4, st.censored);
@@ -1656,6 +1656,9 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     for (double v : {st.p50, st.p95, st.p99, st.max}) distance(ws, r, c++, v, lf);
     for (double v : {st.p50_h, st.p95_h, st.p99_h, st.max_h}) distance(ws, r, c++, v, hf);
     ++r;
+  };
+  for (const auto& dd : dists) {
+    calculated(dd.key, t_.get("labels", "calculated"), *dd.st);
     if (*dd.obs) {
       const auto& o = **dd.obs;
       text(ws, r, 0, t_.get("labels", dd.key), bold());
@@ -1669,6 +1672,11 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
       num(ws, r, 12, o.max_h, hf);
       ++r;
     }
+    // A group's sections on their own (design-checks.md §2: per section and pooled), the
+    // section's name in the source column.
+    if (secs.size() > 1)
+      for (const design::QuarrySectionResult* sec : secs)
+        calculated(dd.key, sec->spec.name, dd.key == "rd" ? sec->rd : sec->id);
   }
 
   // The log-normal mixture fits and the comparison with the observed values.

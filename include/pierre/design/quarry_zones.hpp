@@ -99,6 +99,9 @@ struct QuarrySectionResult {
   QuarryGeometry geometry;
   QuarryDistances distances;  // per-trajectory ID/RD (histograms, CDFs)
   std::size_t row = 0;        // index into QuarryDesign::rows
+  // Its own statistics (design-checks.md §2: "per section and for sections pooled"); for a
+  // lone section the same as its row's.
+  DistanceStatistics rd, id;
   double danger_zone = 0;       // m: [0, RD_gov] from the toe (+infinity: beyond the profile)
   double first_impact_zone = 0;  // m: [0, ID_gov]
   std::optional<double> bench_retention;  // share of the row's blocks with RD <= bench width

@@ -225,6 +225,16 @@ TEST_F(QuarryCli, TheAustrianExampleValidatesAndRuns) {
   EXPECT_EQ(j["quarries"][0]["thrown"], 97 * 2);
   EXPECT_EQ(j["quarry_average"]["rows"], 6);
   EXPECT_TRUE(j["quarries"][0]["observed"]["runout"]["p95_m"].is_number());
+  // Per section and pooled (design-checks.md §2): each section's own counts add up to the row's,
+  // and its maximum is at most the pooled one.
+  const auto& pooled = j["quarries"][1];
+  int n = 0;
+  for (const auto& sec : pooled["sections"]) {
+    n += sec["runout"]["count"].get<int>();
+    EXPECT_LE(sec["runout"]["max_m"].get<double>(), pooled["runout"]["max_m"].get<double>());
+  }
+  EXPECT_EQ(n, pooled["runout"]["count"].get<int>());
+  EXPECT_EQ(j["quarries"][0]["sections"][0]["runout"], j["quarries"][0]["runout"]);  // alone
 }
 
 }  // namespace

@@ -305,6 +305,13 @@ TEST(QuarryZones, GroupsPoolSectionsAndAveragesTakeRows) {
   EXPECT_EQ(d.rows[0].thrown, 100u);
   EXPECT_EQ(d.rows[0].sections, (std::vector<std::size_t>{0, 1}));
   EXPECT_DOUBLE_EQ(d.rows[0].rd.p95, 48.0);  // P95 of 1..50 twice
+  // Each section's own statistics beside the pooled ones (design-checks.md §2): of 1..50,
+  // P95 = 1 + 49 · 0.95 = 47.55 m, not the pooled 48 m; the lone section's are its row's.
+  EXPECT_DOUBLE_EQ(d.sections[0].rd.p95, 47.55);
+  EXPECT_DOUBLE_EQ(d.sections[0].rd.max, 50.0);
+  EXPECT_EQ(d.sections[0].rd.count, 50u);
+  EXPECT_EQ(d.sections[1].rd.count, 50u);
+  EXPECT_DOUBLE_EQ(d.sections[2].rd.p95, d.rows[1].rd.p95);
   EXPECT_DOUBLE_EQ(d.sections[0].danger_zone, 48.0);
   EXPECT_DOUBLE_EQ(d.sections[1].danger_zone, 48.0);
   EXPECT_EQ(d.sections[2].row, 1u);

@@ -265,6 +265,21 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     expect_number(s, *id, 6, row.id.p95);
     expect_number(s, *id, 10, row.id.p95_h);
     expect_number(s, *id, 8, row.id.max);
+    // A group's sections on their own, named in the source column (per section and pooled).
+    for (std::size_t k : row.sections) {
+      const auto& sec = q.sections[k];
+      const auto own = find_row2(s, "RD, runout distance", sec.spec.name);
+      if (row.sections.size() == 1) {
+        EXPECT_FALSE(own) << sec.spec.name;  // a lone section is its row
+        continue;
+      }
+      ASSERT_TRUE(own) << sec.spec.name;
+      expect_number(s, *own, 2, static_cast<double>(sec.rd.count));
+      expect_number(s, *own, 6, sec.rd.p95);
+      const auto own_id = find_row2(s, "ID, first-impact distance", sec.spec.name);
+      ASSERT_TRUE(own_id) << sec.spec.name;
+      expect_number(s, *own_id, 6, sec.id.p95);
+    }
     // The governing distances, / H and in m.
     const auto gov = find_row(s, 0, "RD_gov (danger zone)");
     ASSERT_TRUE(gov);
