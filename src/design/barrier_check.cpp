@@ -228,6 +228,8 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   ex.h_max_sim = d.h_max_sim;
   ex.simulated_energy = d.energy.weibull;
   ex.simulated_height = d.height.weibull;
+  ex.simulated_energy_point = d.energy.point_mass;
+  ex.simulated_height_point = d.height.point_mass;
   ex.simulated_energy_kJ = energy_kJ;
   ex.simulated_height_m = sample.height;
   if (d.observed_energy) ex.observed_energy = d.observed_energy->weibull;
@@ -240,21 +242,37 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   const auto rh = characteristic_replicates(sample.height, rules.percentile, rules.governing,
                                             splitmix64(seed ^ 2));
   const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
-  if (rv) {
+  // A point mass resamples to itself: its interval has no width (no refit can show that).
+  auto point_interval = [](double v) {
+    stats::BootstrapInterval ci;
+    ci.confidence = 0.90;
+    ci.resamples = kBarrierBootstrapResamples;
+    ci.estimate = ci.lower = ci.upper = v;
+    return ci;
+  };
+  if (d.speed.point_mass) {
+    d.v_k.interval = point_interval(d.v_k.value);
+    d.E_d_interval = point_interval(d.E_d_kJ);
+  } else if (rv) {
     d.v_k.interval = interval(rv->values, d.v_k.value, [](double v) { return v; });
     d.E_d_interval = interval(rv->values, d.v_k.value,
                               [gF, md](double v) { return 0.5 * md * (v * gF) * (v * gF) / 1000.0; });
     if (rv->weibull && rv->weibull->method == stats::WeibullBootstrapMethod::binned)
       d.notes.push_back(binned_note("v_k", *rv->weibull));
   }
-  if (rh) {
+  if (d.height.point_mass) {
+    d.h_k.interval = point_interval(d.h_k.value);
+    d.h_i_interval = point_interval(d.h_i);
+  } else if (rh) {
     d.h_k.interval = interval(rh->values, d.h_k.value, [](double h) { return h; });
     d.h_i_interval = interval(rh->values, d.h_k.value, [gh, f](double h) { return h * gh + f; });
     if (rh->weibull && rh->weibull->method == stats::WeibullBootstrapMethod::binned)
       d.notes.push_back(binned_note("h_k", *rh->weibull));
   }
-  if (!rv || !rh || !d.v_k.interval || !d.h_k.interval)
-    d.notes.push_back("bootstrap: " + (!rv ? rv.error : !rh ? rh.error : std::string("a resample gave no fit")));
+  if (!d.v_k.interval || !d.h_k.interval)
+    d.notes.push_back("bootstrap: " + (!d.v_k.interval && !rv   ? rv.error
+                                       : !d.h_k.interval && !rh ? rh.error
+                                                                : std::string("a resample gave no fit")));
 
   // Candidate capacities and residual height category.
   d.candidate_mel_kJ = d.candidate_sel_kJ = kNaN;

@@ -78,6 +78,11 @@ struct QuantityFit {  // one quantity's sample statistics and fits
   std::optional<stats::LognormalFit> lognormal;
   std::optional<stats::KolmogorovSmirnovTest> lognormal_ks;
   std::string error;  // why a fit is missing
+  // When no Weibull fits because the positive values are all one value, or there are none
+  // (every block sliding across the line: all heights 0): the sample is a point mass there,
+  // the limit of a Weibull whose shape grows without bound. Its quantiles are that value and
+  // P(X > x) is 1 below it, 0 from it on.
+  std::optional<double> point_mass;
 };
 
 struct Characteristic {  // v_k or h_k
@@ -161,6 +166,7 @@ Characteristic characteristic_value(const QuantityFit& fit, std::span<const doub
 struct ExceedanceInputs {
   double SEL_req_kJ = 0, MEL_req_kJ = 0, h_i = 0, h_max_sim = 0;
   std::optional<stats::WeibullFit> simulated_energy, simulated_height;  // kJ, m
+  std::optional<double> simulated_energy_point, simulated_height_point;  // QuantityFit::point_mass
   std::span<const double> simulated_energy_kJ, simulated_height_m;
   std::optional<stats::WeibullFit> observed_energy, observed_height;    // kJ, m
 };

@@ -206,15 +206,53 @@ TEST(BarrierProcedure, NoDesignWithoutCrossingsOrWithAMissingAnswer) {
   EXPECT_FALSE(out.design);
   EXPECT_NE(out.error.find("trajectory"), std::string::npos) << out.error;
   EXPECT_EQ(out.failed_check, "design");  // enough crossings: the design itself failed
-  // Every block crossing alike: no Weibull fit, no characteristic value. Not a `reach` failure
-  // (there are 50 crossings), which said "50 >= 30 crossings: FAIL".
+}
+
+// Every block crossing alike (one speed, one height), or every block sliding across the line
+// (all heights 0): no Weibull fits, and the sample is a point mass, the Weibull's limit as its
+// shape grows. Its quantiles are that value, its interval has no width, and P(X > x) is 1
+// below it and 0 from it on. (There was no design at all: a FAIL for a line every block
+// slides across.)
+TEST(BarrierProcedure, APointMassSampleIsDesignedOn) {
   auto same = sample();
   std::fill(same.speed.begin(), same.speed.end(), 20.0);
   std::fill(same.height.begin(), same.height.end(), 1.5);
-  out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), same, std::nullopt, 0, 1);
-  EXPECT_FALSE(out.design);
-  EXPECT_EQ(out.failed_check, "design");
-  EXPECT_NE(out.error.find("no characteristic value"), std::string::npos) << out.error;
+  const auto rules = test::thesis_2015();
+  auto out = design::design_barrier(spec(), rules, test::etag027(), same, std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const auto& d = *out.design;
+  EXPECT_EQ(d.v_k.value, 20.0);
+  EXPECT_EQ(d.h_k.value, 1.5);
+  ASSERT_TRUE(d.v_k.interval && d.h_k.interval && d.E_d_interval && d.h_i_interval);
+  EXPECT_EQ(d.v_k.interval->lower, 20.0);
+  EXPECT_EQ(d.v_k.interval->upper, 20.0);
+  EXPECT_DOUBLE_EQ(d.h_i, 1.5 * d.gamma_h.value + d.free_board);
+  EXPECT_DOUBLE_EQ(d.h_i_interval->upper, d.h_i);
+  EXPECT_DOUBLE_EQ(d.E_d_kJ, 0.5 * d.m_d * std::pow(20.0 * d.gamma_F.value, 2) / 1000.0);
+  EXPECT_DOUBLE_EQ(d.E_d_interval->lower, d.E_d_kJ);
+  bool said = false;
+  for (const auto& l : d.checks)
+    if (l.id == "fit.v") said = l.status == design::CheckStatus::warn &&
+                                l.reason.find("point mass") != std::string::npos;
+  EXPECT_TRUE(said);
+
+  auto sliding = sample();
+  std::fill(sliding.height.begin(), sliding.height.end(), 0.0);
+  auto with_candidate = spec();
+  with_candidate.candidate = design::CandidateBarrier{};
+  with_candidate.candidate->height = 1.0;
+  with_candidate.acceptable_height_exceedance = 0.01;
+  out = design::design_barrier(with_candidate, rules, test::etag027(), sliding, std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  EXPECT_EQ(out.design->h_k.value, 0.0);
+  EXPECT_DOUBLE_EQ(out.design->h_i, out.design->free_board);
+  ASSERT_GE(out.design->exceedance.size(), 3u);
+  EXPECT_EQ(out.design->exceedance[2].simulated_weibull, 0.0);  // P(h > h_i): none above
+  for (const auto& l : out.design->checks) {
+    if (l.id == "exceedance.height") {
+      EXPECT_EQ(l.status, design::CheckStatus::pass) << l.reason;
+    }
+  }
 }
 
 TEST(BarrierProcedure, BootstrapIsDeterministicPerSeedAndCoversTheEstimate) {
