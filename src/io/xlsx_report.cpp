@@ -203,6 +203,23 @@ class Report {
   void width(lxw_worksheet* ws, Col c0, Col c1, double w) {
     check(worksheet_set_column(ws, c0, c1, w, nullptr), "worksheet_set_column");
   }
+  // Columns c0 … c1 at `base`, some of them wider: one <col> entry per run of equal width.
+  // (Overlapping entries, a range set and then one column in it again, are what libxlsxwriter
+  // writes as it is told; LibreOffice then ignores the wider one and Excel may repair.)
+  void widths(lxw_worksheet* ws, Col c0, Col c1, double base,
+              std::initializer_list<std::pair<Col, double>> wider) {
+    auto at = [&](Col c) {
+      for (const auto& [col, w] : wider)
+        if (col == c) return w;
+      return base;
+    };
+    for (Col a = c0; a <= c1;) {
+      Col b = a;
+      while (b < c1 && at(b + 1) == at(a)) ++b;
+      width(ws, a, b, at(a));
+      a = b + 1;
+    }
+  }
   const std::string& h(std::string_view table, std::string_view key) const {
     return t_.get("headings." + std::string(table), key);
   }
@@ -2053,18 +2070,16 @@ Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t 
 
 void Report::trajectories(lxw_worksheet* ws) {
   page_setup(ws);
-  width(ws, 0, 17, 11);
-  width(ws, 1, 1, 20);
-  width(ws, 2, 2, 12);
-  width(ws, 10, 10, 14);
+  // A quarry run leads with the section of each row; its names come from that section.
+  const bool by_section = !d_.trajectory_sections.empty();
+  const Col c0 = by_section ? 1 : 0;
+  widths(ws, 0, 17 + c0, 11,
+         {{0, by_section ? 16 : 11}, {1 + c0, 20}, {2 + c0, 12}, {10 + c0, 14}});
   text(ws, 0, 0, t_.get("titles", "trajectories"), title());
   const std::size_t shown = std::min(d_.trajectories.size(), t_.trajectory_rows);
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_trajectories, d_.trajectories.size());
   Row r = cap_note(ws, 1, shown, total, "trajectories.csv");
   const Row head = r;
-  // A quarry run leads with the section of each row; its names come from that section.
-  const bool by_section = !d_.trajectory_sections.empty();
-  const Col c0 = by_section ? 1 : 0;
   if (by_section) headings(ws, r, 0, "trajectories", {"section"}, 45);
   headings(ws, r++, c0, "trajectories",
            {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x",
@@ -2109,16 +2124,14 @@ void Report::trajectories(lxw_worksheet* ws) {
 
 void Report::crossings(lxw_worksheet* ws) {
   page_setup(ws);
-  width(ws, 0, 14, 11);
-  width(ws, 1, 1, 16);
-  width(ws, 3, 3, 14);
+  const bool by_section = !d_.crossing_sections.empty();
+  const Col c0 = by_section ? 1 : 0;
+  widths(ws, 0, 14 + c0, 11, {{0, by_section ? 16 : 11}, {1 + c0, 16}, {3 + c0, 14}});
   text(ws, 0, 0, t_.get("titles", "crossings"), title());
   const std::size_t shown = std::min(d_.crossings.size(), t_.crossing_rows);
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_crossings, d_.crossings.size());
   Row r = cap_note(ws, 1, shown, total, "crossings.csv");
   const Row head = r;
-  const bool by_section = !d_.crossing_sections.empty();
-  const Col c0 = by_section ? 1 : 0;
   if (by_section) headings(ws, r, 0, "crossings", {"section"}, 45);
   headings(ws, r++, c0, "crossings",
            {"trajectory", "line", "chainage", "block", "mass", "time", "direction", "vx", "vz",

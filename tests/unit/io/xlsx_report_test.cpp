@@ -10,6 +10,8 @@
 // are skipped with a message (the others still run).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <map>
 #include <memory>
@@ -514,6 +516,37 @@ TEST(XlsxReport, FailedWriteLeavesNothingBehind) {
   // A folder that does not exist: libxlsxwriter cannot create the file.
   EXPECT_THROW(io::write_report(dir.path() / "no" / "such" / "report.xlsx", g->data, tpl),
                std::runtime_error);
+}
+
+// Column widths: one <col> entry per column at most. A range set and then one column in it
+// again gave overlapping entries, of which LibreOffice ignored the wider one (data sheets'
+// text ran into the next column) and which OOXML does not allow.
+TEST(XlsxReport, ColumnWidthEntriesDoNotOverlap) {
+  if (!have("unzip")) GTEST_SKIP() << "unzip not installed";
+  TempDir dir;
+  auto f = make_fixture(50, 5);
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  int sheets = 0;
+  for (const auto& n : zip_list(xlsx, dir.path())) {
+    if (n.rfind("xl/worksheets/sheet", 0) != 0) continue;
+    ++sheets;
+    const std::string x = zip_entry(xlsx, n, dir.path());
+    std::vector<std::pair<long, long>> cols;
+    for (std::size_t k = x.find("<col "); k != std::string::npos; k = x.find("<col ", k + 1)) {
+      const auto attr = [&](const char* a) {
+        const std::size_t p = x.find(std::string(a) + "=\"", k) + std::string(a).size() + 2;
+        return std::stol(x.substr(p, x.find('"', p) - p));
+      };
+      cols.emplace_back(attr("min"), attr("max"));
+    }
+    std::sort(cols.begin(), cols.end());
+    for (std::size_t i = 1; i < cols.size(); ++i)
+      EXPECT_GT(cols[i].first, cols[i - 1].second) << n << ": columns " << cols[i - 1].first << "-"
+                                                   << cols[i - 1].second << " and " << cols[i].first
+                                                   << "-" << cols[i].second << " overlap";
+  }
+  EXPECT_GE(sheets, 5);
 }
 
 TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
