@@ -53,7 +53,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
                  "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
                  "id",            "beyond_profile", "pooled",    "observed_source", "total",
-                 "quarry_profile"};
+                 "quarry_profile", "verdict", "no_checks"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};

@@ -816,6 +816,14 @@ void Report::summary(lxw_worksheet* ws) {
         lines.push_back(l);
   ++r;
   text(ws, r++, 0, t_.get("titles", "checks"), section());
+  // The verdict first: how many lines FAIL, as `pierre check` counts them.
+  std::size_t n[4] = {0, 0, 0, 0};  // pass, fail, warn, N/A
+  for (const auto& l : lines) ++n[static_cast<int>(l.status)];
+  std::string verdict = lines.empty() ? t_.get("labels", "no_checks") : t_.get("labels", "verdict");
+  for (auto [key, v] : {std::pair{"{lines}", lines.size()}, {"{fail}", n[1]}, {"{warn}", n[2]},
+                        {"{pass}", n[0]}, {"{na}", n[3]}})
+    verdict = replace_all(verdict, key, std::to_string(v));
+  text(ws, r++, 0, verdict, bold());
   const Row head = r;
   r = check_table(ws, r, lines, true);
   check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : 9),

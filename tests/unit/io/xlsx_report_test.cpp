@@ -384,6 +384,15 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto fit = find_row(sum, 1, "fit.h", *hdr);
   ASSERT_TRUE(fit);
   EXPECT_EQ(cell(sum, *fit, 7)->text, "WARN");
+  // The verdict above the table counts the lines by status, as `pierre check` does.
+  std::size_t counts[4] = {0, 0, 0, 0};
+  for (const auto& l : f->data.checks) ++counts[static_cast<int>(l.status)];
+  ASSERT_GT(counts[1], 0u);
+  EXPECT_EQ(cell(sum, *hdr - 1, 0)->text,
+            std::to_string(f->data.checks.size()) + " check lines: " + std::to_string(counts[1]) +
+                " FAIL, " + std::to_string(counts[2]) + " WARN, " + std::to_string(counts[0]) +
+                " PASS, " + std::to_string(counts[3]) +
+                " N/A (a FAIL makes `pierre check` exit 1; a WARN is advisory)");
   const auto seed = find_row(sum, 0, "Seed");
   ASSERT_TRUE(seed);
   EXPECT_EQ(number(sum, *seed, 2), 12345.0);
