@@ -248,7 +248,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     ASSERT_FALSE(s.empty());
     EXPECT_EQ(cell(s, 0, 0)->text, "Quarry danger zones: " + row.name);
     // Tables 6.2 / 6.3: RD and ID, calculated, in m (P50 col 5 … max col 8) and / H (9 … 12).
-    const auto rd = find_row2(s, "RD, runout distance", "Calculated");
+    const auto rd = find_row2(s, "RD, runout distance from the toe", "Calculated");
     ASSERT_TRUE(rd);
     expect_number(s, *rd, 2, static_cast<double>(row.rd.count));
     expect_number(s, *rd, 3, static_cast<double>(row.rd.zeros));
@@ -260,7 +260,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     expect_number(s, *rd, 10, row.rd.p95_h);
     // The maximum is beyond the profile (two blocks left it): said in words.
     EXPECT_EQ(cell(s, *rd, 8)->text, "beyond the profile");
-    const auto id = find_row2(s, "ID, first-impact distance", "Calculated");
+    const auto id = find_row2(s, "ID, first-impact distance from the toe", "Calculated");
     ASSERT_TRUE(id);
     expect_number(s, *id, 6, row.id.p95);
     expect_number(s, *id, 10, row.id.p95_h);
@@ -268,7 +268,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     // A group's sections on their own, named in the source column (per section and pooled).
     for (std::size_t k : row.sections) {
       const auto& sec = q.sections[k];
-      const auto own = find_row2(s, "RD, runout distance", sec.spec.name);
+      const auto own = find_row2(s, "RD, runout distance from the toe", sec.spec.name);
       if (row.sections.size() == 1) {
         EXPECT_FALSE(own) << sec.spec.name;  // a lone section is its row
         continue;
@@ -276,7 +276,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
       ASSERT_TRUE(own) << sec.spec.name;
       expect_number(s, *own, 2, static_cast<double>(sec.rd.count));
       expect_number(s, *own, 6, sec.rd.p95);
-      const auto own_id = find_row2(s, "ID, first-impact distance", sec.spec.name);
+      const auto own_id = find_row2(s, "ID, first-impact distance from the toe", sec.spec.name);
       ASSERT_TRUE(own_id) << sec.spec.name;
       expect_number(s, *own_id, 6, sec.id.p95);
     }
@@ -307,7 +307,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     const Sheet& s = sheets["Quarry Face A"];
     const auto& row = q.rows[0];
     ASSERT_TRUE(row.observed_rd);
-    const auto obs = find_row2(s, "RD, runout distance", "Observed");
+    const auto obs = find_row2(s, "RD, runout distance from the toe", "Observed");
     ASSERT_TRUE(obs);
     expect_number(s, *obs, 2, 25);
     expect_number(s, *obs, 6, row.observed_rd->p95);
