@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 
@@ -99,6 +100,58 @@ std::optional<stats::BootstrapInterval> interval(const std::vector<double>& repl
 std::optional<QuantityFit> observed_fit(const std::vector<double>& v) {
   if (v.empty()) return std::nullopt;
   return fit_quantity(v);
+}
+
+std::string num4(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// BarrierDesign::how: where each quantity of the factors table comes from, with the rule
+// set's citations, so that the report traces every number to a formula or a source.
+void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
+                          const EnergyClassTable& classes) {
+  const std::string p = "P" + num4(rules.percentile);
+  const std::string weibull = p + " of the Weibull fit", empirical = p + " of the crossings";
+  const std::string governing =
+      rules.governing == Governing::weibull     ? weibull
+      : rules.governing == Governing::empirical ? empirical
+                                                : "the larger of the " + weibull + " and the " + empirical;
+  d.how["v_k_weibull"] = d.how["h_k_weibull"] = weibull;
+  d.how["v_k_empirical"] = d.how["h_k_empirical"] = empirical;
+  d.how["v_k"] = d.how["h_k"] = governing + " (" + rules.name + ")";
+  auto cited = [&](const char* key, const char* symbol, double v) {
+    const auto s = rules.sources.find(key);
+    return std::string(symbol) + " = " + num4(v) + " (given" +
+           (s == rules.sources.end() ? std::string() : ": " + s->second) + ")";
+  };
+  d.how["gamma_E_MEL"] = cited("gamma_E_MEL", "γE,MEL", d.gamma_E_MEL);
+  d.how["gamma_E_SEL"] = cited("gamma_E_SEL", "γE,SEL", d.gamma_E_SEL);
+  const DesignBlock& b = d.spec.design_block;
+  switch (b.kind) {
+    case DesignBlock::Kind::given:
+      d.how["volume"] = "the design block, given";
+      break;
+    case DesignBlock::Kind::largest:
+      d.how["volume"] = "the largest block thrown";
+      break;
+    case DesignBlock::Kind::percentile:
+      d.how["volume"] = "P" + num4(b.percentile) + " of the volumes of the blocks thrown";
+      break;
+  }
+  d.how["density"] = b.density > 0 ? "given with the design block"
+                     : b.kind == DesignBlock::Kind::largest ? "the largest block's"
+                                                            : "the mean of the blocks'";
+  d.how["free_board_diameter"] = d.spec.free_board_diameter ? "given"
+                                                            : "the mean equivalent diameter of the blocks thrown";
+  d.how["free_board"] = "f = max(" + num4(rules.free_board_abs) + " m, " +
+                        num4(rules.free_board_rel) + " · D_f) (" + rules.name + ")";
+  d.how["h_d"] = "h_k · γh";
+  d.how["h_i"] = "h_d + f";
+  d.how["h_max_sim"] = "the largest simulated passing height";
+  d.how["energy_class"] = "the smallest class of " + classes.name + " meeting the required capacity" +
+                          (classes.source.empty() ? std::string() : " (" + classes.source + ")");
 }
 
 }  // namespace
@@ -293,6 +346,7 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
           residual_height_category(*classes.residual_height, *c.residual_height, *c.height);
   }
 
+  describe_derivations(d, rules, classes);
   d.checks = barrier_check_lines(d, rules);
   out.design = std::move(d);
   return out;

@@ -2,6 +2,7 @@
 // residual height category, the `rule` column of a check line.
 #include "pierre/design/barrier_rules.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -61,7 +62,8 @@ stats::Outcome<ResolvedFactor> resolve_factor(const FactorDefinition& f,
   ResolvedFactor r;
   if (f.value) {
     r.value = *f.value;
-    r.how = f.symbol + " = " + number(*f.value) + " (given)";
+    r.how = f.symbol + " = " + number(*f.value) + " (given" +
+            (f.source.empty() ? std::string() : ": " + f.source) + ")";
     return Out::success(r);
   }
   if (f.parts.empty()) return Out::failure(f.symbol + " has neither a value nor parts");
@@ -94,6 +96,14 @@ stats::Outcome<ResolvedFactor> resolve_factor(const FactorDefinition& f,
   r.how = f.symbol + " = " + join(symbols, " · ") + " = " + join(values, " × ") + " = " +
           number(product);
   if (!chosen.empty()) r.how += " (" + join(chosen, ", ") + ")";
+  // Where each value comes from: the factor's own citation, else its parts'.
+  std::vector<std::string> cited;
+  if (!f.source.empty()) cited.push_back(f.source);
+  for (const FactorPart& p : f.parts)
+    if (f.source.empty() && !p.source.empty() &&
+        std::find(cited.begin(), cited.end(), p.source) == cited.end())
+      cited.push_back(p.symbol + ": " + p.source);
+  if (!cited.empty()) r.how += "; " + join(cited, "; ");
   return Out::success(r);
 }
 

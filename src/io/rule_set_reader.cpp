@@ -175,6 +175,7 @@ design::BarrierRuleSet load_rule_set_file(const fs::path& file) {
   if (const auto s = top.subtable("sources", {"gamma_F", "gamma_M", "gamma_h", "gamma_E_MEL",
                                               "gamma_E_SEL", "gamma_d_MEL", "gamma_d_SEL"}))
     for (auto&& [k, v] : s->table()) sources[std::string(k.str())] = *s->string(k.str());
+  r.sources = sources;
 
   const auto parts = top.subtable("parts", {});
   const auto f = top.subtable("factors", {"gamma_F", "gamma_M", "gamma_h", "gamma_E_MEL",

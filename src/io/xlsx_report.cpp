@@ -1166,37 +1166,39 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
   check(worksheet_merge_range(ws, r, 3, r, 8, h("factors", "how").c_str(), heading()),
         "worksheet_merge_range");
   ++r;
+  // How each was obtained: the design's own words (BarrierDesign::how), else the formula.
   auto fr = [&](std::string_view key, double v, std::string_view kind, std::string_view unit,
-                const std::string& how) {
+                const std::string& formula = {}) {
     text(ws, r, 0, h("factors", key), bold());
     num(ws, r, 1, v, number(kind));
     text(ws, r, 2, std::string(unit));
-    text(ws, r, 3, how);
+    const auto it = b.how.find(std::string(key));
+    text(ws, r, 3, it != b.how.end() ? it->second : formula);
     ++r;
   };
-  fr("v_k_weibull", b.v_k.weibull, "speed", "m/s", "");
-  fr("v_k_empirical", b.v_k.empirical, "speed", "m/s", "");
-  fr("v_k", b.v_k.value, "speed", "m/s", "");
+  fr("v_k_weibull", b.v_k.weibull, "speed", "m/s");
+  fr("v_k_empirical", b.v_k.empirical, "speed", "m/s");
+  fr("v_k", b.v_k.value, "speed", "m/s");
   fr("gamma_F", b.gamma_F.value, "factor", "", b.gamma_F.how);
   fr("v_d", b.v_d, "speed", "m/s", "v_k · γF");
-  fr("density", b.design_density, "density", "kg/m³", "");
-  fr("volume", b.design_volume, "volume", "m³", "");
+  fr("density", b.design_density, "density", "kg/m³");
+  fr("volume", b.design_volume, "volume", "m³");
   fr("gamma_M", b.gamma_M.value, "factor", "", b.gamma_M.how);
   fr("m_d", b.m_d, "mass", "kg", "ρ · Vol · γM");
   fr("E_d", b.E_d_kJ, "energy", "kJ", "½ m_d v_d²");
-  fr("gamma_E_SEL", b.gamma_E_SEL, "factor", "", "");
+  fr("gamma_E_SEL", b.gamma_E_SEL, "factor", "");
   fr("sel_req", b.SEL_req_kJ, "energy", "kJ", "γE,SEL · E_d");
-  fr("gamma_E_MEL", b.gamma_E_MEL, "factor", "", "");
+  fr("gamma_E_MEL", b.gamma_E_MEL, "factor", "");
   fr("mel_req", b.MEL_req_kJ, "energy", "kJ", "γE,MEL · E_d");
-  fr("h_k_weibull", b.h_k.weibull, "length", "m", "");
-  fr("h_k_empirical", b.h_k.empirical, "length", "m", "");
-  fr("h_k", b.h_k.value, "length", "m", "");
+  fr("h_k_weibull", b.h_k.weibull, "length", "m");
+  fr("h_k_empirical", b.h_k.empirical, "length", "m");
+  fr("h_k", b.h_k.value, "length", "m");
   fr("gamma_h", b.gamma_h.value, "factor", "", b.gamma_h.how);
-  fr("h_d", b.h_d, "length", "m", "");
-  fr("free_board_diameter", b.free_board_diameter, "length", "m", "");
-  fr("free_board", b.free_board, "length", "m", "");
-  fr("h_i", b.h_i, "length", "m", "");
-  fr("h_max_sim", b.h_max_sim, "length", "m", "");
+  fr("h_d", b.h_d, "length", "m");
+  fr("free_board_diameter", b.free_board_diameter, "length", "m");
+  fr("free_board", b.free_board, "length", "m");
+  fr("h_i", b.h_i, "length", "m");
+  fr("h_max_sim", b.h_max_sim, "length", "m");
   if (std::isfinite(b.candidate_mel_kJ)) fr("candidate_mel", b.candidate_mel_kJ, "energy", "kJ", "");
   if (std::isfinite(b.candidate_sel_kJ)) fr("candidate_sel", b.candidate_sel_kJ, "energy", "kJ", "");
   if (!b.residual_height_category.empty()) {

@@ -101,6 +101,10 @@ struct ExceedanceRow {  // one column of Table 4.2
 struct BarrierDesign {
   BarrierSpec spec;
   std::string rules_title, rules_source;
+  // How each design quantity was obtained, in words, for the report (keys as the factors
+  // table: v_k, h_k, gamma_E_MEL, gamma_E_SEL, density, volume, free_board_diameter,
+  // free_board, h_d, h_i, energy_class); the partial factors carry their own (ResolvedFactor).
+  std::map<std::string, std::string> how;
   double chainage = 0;  // m
   std::uint64_t crossings = 0, not_reached = 0;
   QuantityFit speed, height, energy;  // energy in kJ

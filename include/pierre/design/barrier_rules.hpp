@@ -78,6 +78,7 @@ struct BarrierRuleSet {
   double min_crossings = 30;       // crossings below which reach WARNs
   std::string classes = "etag027-classes";  // energy class table (rules/<name>.toml)
   std::map<std::string, std::string> clauses;  // check id -> clause text for the `rule` column
+  std::map<std::string, std::string> sources;  // factor key (gamma_E_MEL, …) -> its citation
 };
 
 // The data-quality questions a rule set asks (choice -> its answers), from every factor part

@@ -89,6 +89,43 @@ TEST(BarrierProcedure, FitsRecoverKnownWeibullsWithinSamplingError) {
   EXPECT_NEAR(d.rotational_energy.mean, 1.0, 1e-12);  // kJ
 }
 
+// Every quantity of the report's factors table says where it comes from: the rule set's
+// citations for the given factors (which were printed as a bare "(given)"), the percentile and
+// the governing rule for v_k and h_k, the free-board rule, the class table.
+TEST(BarrierProcedure, EachDesignQuantitySaysWhereItComesFrom) {
+  auto rules = test::thesis_2015();
+  rules.gamma_F.source = "Mitchell (2015) §4.7";
+  rules.sources["gamma_E_MEL"] = "Mitchell (2015) Table 4.1";
+  auto classes = test::etag027();
+  classes.name = "etag027-classes";
+  classes.source = "ETAG 027 (2008) Table 2.3";
+  const auto out = design::design_barrier(spec(), rules, classes, sample(), std::nullopt, 100.0, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const auto& d = *out.design;
+  EXPECT_EQ(d.gamma_F.how, "γF = 1.16 (given: Mitchell (2015) §4.7)");
+  EXPECT_EQ(d.gamma_M.how, "γM = 1.05 (given)");  // no citation in this rule set
+  EXPECT_EQ(d.how.at("gamma_E_MEL"), "γE,MEL = 1.3 (given: Mitchell (2015) Table 4.1)");
+  EXPECT_EQ(d.how.at("gamma_E_SEL"), "γE,SEL = 1 (given)");
+  EXPECT_EQ(d.how.at("v_k"), "P95 of the Weibull fit (thesis-2015)");
+  EXPECT_EQ(d.how.at("v_k_empirical"), "P95 of the crossings");
+  EXPECT_EQ(d.how.at("free_board"), "f = max(0 m, 0.5 · D_f) (thesis-2015)");
+  EXPECT_EQ(d.how.at("volume"), "the design block, given");
+  EXPECT_EQ(d.how.at("free_board_diameter"), "given");
+  EXPECT_NE(d.how.at("energy_class").find("ETAG 027 (2008) Table 2.3"), std::string::npos);
+  // A factor made of parts cites its parts.
+  auto pr = test::peila_ronco_2009();
+  pr.gamma_F.parts[0].source = "Peila & Ronco (2009): trajectory";
+  auto answered = spec();
+  answered.data_quality = {{"trajectory", "back-analysed"}, {"topography", "low"},
+                           {"block_volume", "surveyed"}};
+  const auto o2 = design::design_barrier(answered, pr, classes, sample(), std::nullopt, 100.0, 1);
+  ASSERT_TRUE(o2.design) << o2.error;
+  EXPECT_NE(o2.design->gamma_F.how.find("; γTr: Peila & Ronco (2009): trajectory"),
+            std::string::npos) << o2.design->gamma_F.how;
+  EXPECT_EQ(o2.design->how.at("v_k"),
+            "the larger of the P95 of the Weibull fit and the P95 of the crossings (peila-ronco-2009)");
+}
+
 TEST(BarrierProcedure, DesignFollowsFromTheCharacteristicValues) {
   const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(),
                                           std::nullopt, 100.0, 1);
