@@ -3,6 +3,8 @@
 // Shared by the xlsx report tests.
 #pragma once
 
+#include "support/tools.hpp"
+
 #include <sys/wait.h>
 
 #include <cstddef>
@@ -33,9 +35,6 @@ inline Exec run(const std::string& command, const std::filesystem::path& log) {
   return r;
 }
 
-inline bool have(const char* program) {
-  return std::system(("command -v " + std::string(program) + " > /dev/null 2>&1").c_str()) == 0;
-}
 
 // soffice with a private profile (parallel tests must not share one) and a time limit.
 inline Exec soffice(const std::string& args, const std::filesystem::path& work) {

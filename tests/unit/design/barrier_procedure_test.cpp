@@ -10,6 +10,7 @@
 
 #include "barrier_fixtures.hpp"
 #include "pierre/design/barrier_check.hpp"
+#include "pierre/stats/bootstrap_weibull.hpp"
 #include "pierre/stats/percentile.hpp"
 
 namespace {
@@ -69,8 +70,11 @@ TEST(BarrierProcedure, FitsRecoverKnownWeibullsWithinSamplingError) {
   EXPECT_NEAR(d.height.weibull->shape, kHeightK, rel_k * kHeightK);
   // E = ½ m v² of a Weibull(k, λ) speed is Weibull(k/2, ½ m λ²).
   EXPECT_NEAR(d.energy.weibull->shape, kSpeedK / 2, rel_k * kSpeedK / 2);
-  EXPECT_NEAR(d.energy.weibull->scale, 0.5 * 2500 * kSpeedLambda * kSpeedLambda / 1000,
-              4 * 0.05 * 0.5 * 2500 * kSpeedLambda * kSpeedLambda / 1000);
+  // Its scale is the quantile at p = 1 − 1/e (w = 0): sd(ln λ̂) = sqrt(1.1087/n) / k_E, 1.9 %
+  // here; within 4 sd. (A 20 % band let an energy sample 15 % too high pass.)
+  EXPECT_NEAR(std::log(d.energy.weibull->scale),
+              std::log(0.5 * 2500 * kSpeedLambda * kSpeedLambda / 1000),
+              4 * log_quantile_sd(kSpeedK / 2, 1 - std::exp(-1.0), kN));
   // v_k, h_k: the Weibull P95 within 4 sd of the truth.
   const double vq = quantile(kSpeedK, kSpeedLambda, 0.95), hq = quantile(kHeightK, kHeightLambda, 0.95);
   EXPECT_NEAR(std::log(d.v_k.weibull), std::log(vq), 4 * log_quantile_sd(kSpeedK, 0.95, kN));
@@ -148,6 +152,14 @@ TEST(BarrierProcedure, DesignFollowsFromTheCharacteristicValues) {
   ASSERT_EQ(d.exceedance.size(), 4u);
   EXPECT_DOUBLE_EQ(d.exceedance[2].simulated_weibull,
                    std::exp(-std::pow(d.h_i / d.height.weibull->scale, d.height.weibull->shape)));
+  // The energy rows: P(E > SEL_req) and P(E > MEL_req) from the energy's Weibull (kJ).
+  const auto& fe = *d.energy.weibull;
+  EXPECT_DOUBLE_EQ(d.exceedance[0].threshold, d.SEL_req_kJ);
+  EXPECT_DOUBLE_EQ(d.exceedance[0].simulated_weibull,
+                   std::exp(-std::pow(d.SEL_req_kJ / fe.scale, fe.shape)));
+  EXPECT_DOUBLE_EQ(d.exceedance[1].threshold, d.MEL_req_kJ);
+  EXPECT_DOUBLE_EQ(d.exceedance[1].simulated_weibull,
+                   std::exp(-std::pow(d.MEL_req_kJ / fe.scale, fe.shape)));
   const auto s = sample();
   const double above = static_cast<double>(std::count_if(s.height.begin(), s.height.end(),
                                                           [&](double h) { return h > d.h_i; }));
@@ -318,6 +330,32 @@ TEST(BarrierProcedure, BootstrapIsDeterministicPerSeedAndCoversTheEstimate) {
   EXPECT_NE(design::barrier_bootstrap_seed(5, 0), design::barrier_bootstrap_seed(5, 1));
   EXPECT_EQ(design::barrier_bootstrap_seed(5, 1), design::barrier_bootstrap_seed(5, 1));
   EXPECT_NE(design::barrier_bootstrap_seed(5, 0), design::barrier_bootstrap_seed(6, 0));
+}
+
+// Step 8's 90 % interval of v_k: the type-7 P5 and P95 of the Weibull P95 of 1000 resamples,
+// drawn from splitmix64(seed ^ 1) as barrier_check.hpp documents. Rebuilt here from the stats
+// layer: a 95 % interval, or another stream, would not match.
+TEST(BarrierProcedure, TheVkIntervalIsThe90PercentIntervalOfItsReplicates) {
+  const auto s = sample(400);
+  const std::uint64_t seed = 42;
+  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s,
+                                          std::nullopt, 0, seed);
+  ASSERT_TRUE(out.design && out.design->v_k.interval);
+  std::uint64_t x = seed ^ 1;  // splitmix64 (Steele, Lea & Flood 2014)
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  x ^= x >> 31;
+  stats::WeibullBootstrapOptions o;
+  o.resamples = design::kBarrierBootstrapResamples;
+  o.empirical = false;
+  const auto r = stats::bootstrap_weibull_quantile_replicates(s.speed, 95, x, o);
+  ASSERT_TRUE(r) << r.error;
+  const double ps[] = {5.0, 95.0};
+  const auto q = stats::percentiles(r.value->weibull, ps);
+  EXPECT_EQ(out.design->v_k.interval->lower, q[0]);
+  EXPECT_EQ(out.design->v_k.interval->upper, q[1]);
+  EXPECT_EQ(out.design->v_k.interval->confidence, 0.90);
 }
 
 TEST(BarrierProcedure, SmallSampleWarnsOnSampleSizeAndReach) {

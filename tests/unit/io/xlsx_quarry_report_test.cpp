@@ -175,7 +175,7 @@ const std::vector<std::string> kOrder = {"Summary",      "Quarry Face A", "Quarr
                                          "Crossings"};
 
 TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
-  if (!have("unzip")) GTEST_SKIP() << "unzip not installed (bash tools/bootstrap test installs it)";
+  PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
   const auto f = make_fixture();
   const auto tpl = io::load_report_template(kTemplate);
@@ -212,9 +212,7 @@ TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
 }
 
 TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
-  if (!have("soffice"))
-    GTEST_SKIP() << "soffice (LibreOffice) not installed: bash tools/bootstrap test installs "
-                    "libreoffice-calc; the workbook was not opened for real";
+  PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
   const auto f = make_fixture();
   const auto& q = *f->data.quarry;

@@ -212,7 +212,7 @@ std::unique_ptr<Fixture> make_fixture(int crossings = 400, int trajectories = 30
 // ---- tests -----------------------------------------------------------------------------
 
 TEST(XlsxReport, WorkbookStructureChartsAndConditionalFormats) {
-  if (!have("unzip")) GTEST_SKIP() << "unzip not installed (bash tools/bootstrap test installs it)";
+  PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
   const auto f = make_fixture();
   const auto tpl = io::load_report_template(kTemplate);
@@ -275,7 +275,7 @@ TEST(XlsxReport, SameInputsSameBytes) {
 // most 2 000 evenly spaced: the flight before the bouncing keeps its points, and the first and
 // last point stay.
 TEST(XlsxReport, LongPathsAreThinnedToFitTheSheet) {
-  if (!have("unzip")) GTEST_SKIP() << "unzip not installed (bash tools/bootstrap test installs it)";
+  PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
   auto f = make_fixture();
   f->data.sample_paths.clear();
@@ -340,9 +340,7 @@ TEST(XlsxReport, LongPathsAreThinnedToFitTheSheet) {
 }
 
 TEST(XlsxReport, LibreOfficeReadsEverySheet) {
-  if (!have("soffice"))
-    GTEST_SKIP() << "soffice (LibreOffice) not installed: bash tools/bootstrap test installs "
-                    "libreoffice-calc; the workbook was not opened for real";
+  PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
   const auto f = make_fixture();
   auto tpl = io::load_report_template(kTemplate);
@@ -476,9 +474,7 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
 }
 
 TEST(XlsxReport, LibreOfficePrintsToPdf) {
-  if (!have("soffice"))
-    GTEST_SKIP() << "soffice (LibreOffice) not installed: bash tools/bootstrap test installs "
-                    "libreoffice-calc";
+  PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
   const auto f = make_fixture();
   const auto tpl = io::load_report_template(kTemplate);
@@ -531,7 +527,7 @@ TEST(XlsxReport, FailedWriteLeavesNothingBehind) {
 // again gave overlapping entries, of which LibreOffice ignored the wider one (data sheets'
 // text ran into the next column) and which OOXML does not allow.
 TEST(XlsxReport, ColumnWidthEntriesDoNotOverlap) {
-  if (!have("unzip")) GTEST_SKIP() << "unzip not installed";
+  PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
   auto f = make_fixture(50, 5);
   const fs::path xlsx = dir.path() / "report.xlsx";
@@ -559,7 +555,7 @@ TEST(XlsxReport, ColumnWidthEntriesDoNotOverlap) {
 }
 
 TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
-  if (!have("unzip")) GTEST_SKIP() << "unzip not installed";
+  PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
   auto f = make_fixture(50, 5);
   const auto tpl = io::load_report_template(kTemplate);

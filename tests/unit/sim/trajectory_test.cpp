@@ -263,6 +263,27 @@ TEST(Scenario, SourcesAgainstTheMainDirectionAreNamed) {
   for (const auto& t2 : r.trajectories) EXPECT_LT(t2.stop.x, 140) << t2.trajectory;
 }
 
+// What a line records of each crossing (model-2d.md §5; design-checks.md §1 step 1): the speed
+// is the norm of the velocity, the translational energy ½ m v², the rotational ½ I ω² with
+// I = 2/5 m R² of the block's own mass and radius. (Doubling either energy passed every test.)
+TEST(Trajectory, CrossingEnergiesAreHalfMVSquaredAndHalfIOmegaSquared) {
+  const Scenario s = slope_scenario();
+  const auto r = run(s, 1);
+  ASSERT_GT(r.crossings.size(), 100u);
+  int spinning = 0;
+  for (const auto& c : r.crossings) {
+    const model::Block& b = s.blocks.at(c.block);
+    EXPECT_EQ(c.mass, b.mass);
+    EXPECT_NEAR(c.speed, std::hypot(c.velocity.x, c.velocity.z), 1e-12 * c.speed);
+    EXPECT_NEAR(c.translational_energy, 0.5 * b.mass * c.speed * c.speed,
+                1e-12 * c.translational_energy);
+    const double inertia = 0.4 * b.mass * b.radius() * b.radius();
+    EXPECT_NEAR(c.rotational_energy, 0.5 * inertia * c.omega * c.omega, 1e-12 * c.rotational_energy + 1e-300);
+    spinning += c.omega != 0;
+  }
+  EXPECT_GT(spinning, 100);  // the rotational energies were really exercised
+}
+
 TEST(Trajectory, FlyingOffTheProfileEndsAtTheBoundary) {
   auto prof = test::make_profile({{0, 100}, {10, 0}});
   Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3),
