@@ -20,9 +20,8 @@ TEST(ProfileContact, FreeFallOntoLevelGroundMatchesClosedForm) {
     const auto c = p.first_contact({0.3, h}, {0, 0}, g, 1e9, Departure{});
     ASSERT_TRUE(c);
     const double t = std::sqrt(2 * h / g);
-    EXPECT_NEAR(c->t, t, 1e-12 * t);
-    const double speed = g * c->t;  // vz at contact
-    EXPECT_NEAR(speed, std::sqrt(2 * g * h), 1e-12 * std::sqrt(2 * g * h));
+    EXPECT_NEAR(c->t, t, 1e-12 * t);  // (the contact speed g t follows; the simulator's own
+                                      // incident speed is checked in trajectory_test.cpp)
   }
 }
 

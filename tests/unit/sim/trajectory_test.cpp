@@ -284,6 +284,25 @@ TEST(Trajectory, CrossingEnergiesAreHalfMVSquaredAndHalfIOmegaSquared) {
   EXPECT_GT(spinning, 100);  // the rotational energies were really exercised
 }
 
+// model-2d.md §7 test 1 through the whole simulator: a block dropped from rest h above level
+// ground meets it after √(2h/g) at √(2gh), straight down; the impact record says so.
+TEST(Trajectory, FreeFallMeetsTheGroundAtRootTwoGH) {
+  for (double h : {0.5, 12.5, 250.0}) {
+    auto level = test::make_profile({{0, 0}, {100, 0}});
+    Scenario s = test::make_scenario(std::move(level), test::make_material(15, 50, 0.5),
+                                     {test::make_block(1000)}, {50, h + 0.0}, 1);
+    const auto r = run(s, 1, true);
+    ASSERT_FALSE(r.impacts.empty());
+    const auto& first = r.impacts.front();
+    const double v = std::sqrt(2 * 9.81 * h);
+    EXPECT_NEAR(first.time, std::sqrt(2 * h / 9.81), 1e-12 * std::sqrt(h));
+    EXPECT_NEAR(first.detail.vn_in, -v, 1e-12 * v);  // into the ground
+    EXPECT_NEAR(first.detail.vt_in, 0.0, 1e-12 * v);
+    EXPECT_NEAR(first.position.x, 50.0, 1e-12);
+    EXPECT_NEAR(r.trajectories.at(0).max_speed, v, 1e-12 * v);
+  }
+}
+
 TEST(Trajectory, FlyingOffTheProfileEndsAtTheBoundary) {
   auto prof = test::make_profile({{0, 100}, {10, 0}});
   Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3),
@@ -419,7 +438,9 @@ TEST(Trajectory, SubdividingSegmentsIntoCollinearPiecesChangesNothing) {
     same += ta.impacts == tb.impacts && std::abs(ta.stop.x - tb.stop.x) < 1e-6 &&
             std::abs(ta.max_jump_height - tb.max_jump_height) < 1e-6;
   }
-  // Round-off can tip a rare decision (a stop criterion met by 1e-15); all but a few agree.
-  EXPECT_GE(same, 395) << same << " of 400 identical";
+  // The pieces' vertices are rounded off the line by ~1e-15 m, which can tip a decision met by
+  // a hair (a stop criterion, a grazing contact); none did with this seed (400 of 400). Two in
+  // 400 are allowed for that; a bug in the vertex handling would change far more.
+  EXPECT_GE(same, 398) << same << " of 400 identical";
   RecordProperty("identical", same);
 }
