@@ -397,13 +397,23 @@ void check_agreement(const RunPair& r, const char* name) {
   EXPECT_EQ(bad_first, 0u) << name;
 }
 
-// Two-sample KS of oracle against core. Tolerance p > 0.01: were the two independent samples of
-// one distribution, the test would fail once in a hundred runs. They are not independent: they
-// share every random draw, so D is at most about the share of diverging trajectories and the
-// p-value is conservative (near 1 for a correct core). What the test adds to the per-trajectory
-// comparison: the diverging trajectories must not all diverge one way (a bias in a decision would
-// shift the distribution while each trajectory on its own could be explained).
+// Two-sample KS of oracle against core (the issue asks for it). Tolerance p > 0.01: were the two
+// independent samples of one distribution, the test would fail once in a hundred runs. They are
+// not independent: they share every random draw, so D is at most about the share of diverging
+// trajectories, and with 90 % or more agreeing (the test above) D stays near or below the
+// critical value at these sizes: on its own it adds little. What would slip past both — the
+// diverging trajectories all diverging one way, a bias in a decision — is the sign test's below.
 constexpr double kMinP = 0.01;
+
+// Two-sided exact binomial test of `up` successes in `n` trials at p = 1/2.
+double sign_test_p(std::size_t up, std::size_t n) {
+  const std::size_t k = std::min(up, n - up);
+  double tail = 0;
+  for (std::size_t i = 0; i <= k; ++i)
+    tail += std::exp(std::lgamma(n + 1.0) - std::lgamma(i + 1.0) - std::lgamma(n - i + 1.0) -
+                     static_cast<double>(n) * std::log(2.0));
+  return std::min(1.0, 2 * tail);
+}
 
 void expect_same_distribution(const std::vector<double>& core, const std::vector<double>& oracle,
                               const std::string& what) {
@@ -416,6 +426,25 @@ void expect_same_distribution(const std::vector<double>& core, const std::vector
 
 void check_distributions(const RunPair& r) {
   const std::string name = r.scenario.name;
+  // The diverging trajectories' runouts: the core's longer as often as the oracle's (sign test,
+  // two-sided, p > 0.01). Its power grows with the divergences: below 8 of them no split can
+  // reach p = 0.01, so on these cases (a few divergences) it guards a future change that makes
+  // many, as the KS does.
+  std::size_t longer = 0, diverging = 0;
+  for (std::size_t i = 0; i < r.oracle.size(); ++i) {
+    if (compare(r, i).agree()) {
+      continue;
+    }
+    const double dc = r.core.trajectories[i].runout(),
+                 dor = std::abs(r.oracle[i].stop.x - r.oracle[i].start.x);
+    if (dc == dor) continue;
+    ++diverging;
+    longer += dc > dor;
+  }
+  const double p_sign = diverging ? sign_test_p(longer, diverging) : 1.0;
+  std::cout << "[oracle] " << name << ": of " << diverging << " diverging runouts the core's is longer in "
+            << longer << " (sign test p " << p_sign << ")\n";
+  EXPECT_GT(p_sign, kMinP) << name;
   std::vector<double> run_c, run_o;
   for (const auto& t : r.core.trajectories) run_c.push_back(t.runout());
   for (const auto& t : r.oracle) run_o.push_back(std::abs(t.stop.x - t.start.x));
