@@ -36,7 +36,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   std::map<std::string, Keys, std::less<>> s;
   s["sheets"] = kSheetKeys;
   s["formats"] = {"count",   "speed",     "length",   "coordinate",  "energy",  "mass",
-                  "volume",  "density",   "factor",   "parameter",   "scientific", "probability",
+                  "volume",  "density",   "factor",   "parameter",   "p_value", "scientific", "probability",
                   "percent", "time",      "angle",    "material",    "general", "date"};
   s["titles"] = {"summary",      "run",          "barriers",       "lines",
                  "checks",       "inputs",       "simulation",     "materials",
@@ -53,7 +53,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
                  "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
                  "id",            "beyond_profile", "pooled",    "observed_source", "total",
-                 "quarry_profile", "verdict", "no_checks"};
+                 "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};

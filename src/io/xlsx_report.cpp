@@ -1103,11 +1103,11 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
       } else if (s == "weibull_k" && q.fit->weibull) num(ws, r, c, q.fit->weibull->shape, number("parameter"));
       else if (s == "weibull_lambda" && q.fit->weibull) num(ws, r, c, q.fit->weibull->scale, qf);
       else if (s == "weibull_ks_d" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->statistic, number("parameter"));
-      else if (s == "weibull_ks_p" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->p_value_stephens, number("parameter"));
+      else if (s == "weibull_ks_p" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->p_value_stephens, number("p_value"));
       else if (s == "lognormal_mu" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->mu, number("parameter"));
       else if (s == "lognormal_sigma" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->sigma, number("parameter"));
       else if (s == "lognormal_ks_d" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->statistic, number("parameter"));
-      else if (s == "lognormal_ks_p" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->p_value_stephens, number("parameter"));
+      else if (s == "lognormal_ks_p" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->p_value_stephens, number("p_value"));
     }
     ++r;
   }
@@ -1725,7 +1725,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     }
     if (st.ks) {
       num(ws, r, 6, st.ks->statistic, pf);
-      num(ws, r, 7, st.ks->p_value, pf);
+      num(ws, r, 7, st.ks->p_value, number("p_value"));
       num(ws, r, 8, st.ks->below, hf);
     }
     if (*dd.obs) {
@@ -1733,7 +1733,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
       if (o.cdf_rmse) num(ws, r, 9, *o.cdf_rmse, pf);
       if (o.ks) {
         num(ws, r, 10, o.ks->statistic, pf);
-        num(ws, r, 11, o.ks->p_value, pf);
+        num(ws, r, 11, o.ks->p_value, number("p_value"));
       }
     }
     text(ws, r, 12, st.fit_error, wrap());
@@ -1760,6 +1760,28 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
       distance(ws, r, 8, e.id_empirical, lf);
       ++r;
     }
+    // Say when the fitted columns should not be read as distances: a fit the KS doubts (its
+    // fit.* line WARNs), or a distance past the end of the floor that was simulated.
+    for (const auto& [what, id, st] : {std::tuple{"RD", "fit.RD", &row.rd}, std::tuple{"ID", "fit.ID", &row.id}}) {
+      const bool doubtful = std::any_of(d_.quarry->checks.begin(), d_.quarry->checks.end(),
+                                        [&](const design::CheckLine& l) {
+                                          return l.subject == row.name && l.id == id &&
+                                                 l.status == design::CheckStatus::warn;
+                                        });
+      if (doubtful && st->ks)
+        text(ws, r++, 0,
+             replace_all(replace_all(t_.get("labels", "fit_doubtful"), "{what}", what), "{p}",
+                         fmt::format("{:.3g}", st->ks->p_value)),
+             note());
+    }
+    double floor_end = 0;
+    for (const auto* sec : secs) floor_end = std::max(floor_end, sec->geometry.floor_length);
+    if (std::any_of(row.exceedance.begin(), row.exceedance.end(), [&](const auto& e) {
+          return e.rd_fit > floor_end || e.id_fit > floor_end;
+        }))
+      text(ws, r++, 0,
+           replace_all(t_.get("labels", "fit_past_floor"), "{floor}", fmt::format("{:.1f}", floor_end)),
+           note());
   }
 
   // Governing distances.
