@@ -186,6 +186,7 @@ void add_quarry_report_data(io::ReportData& data, const io::LoadedScenario& load
     v.name = s.spec.name;
     v.profile = &s.scenario.profile;
     v.paths = sample_paths(s.scenario, paths_per_section);
+    v.seed = s.scenario.settings.seed;
     data.quarry_sections.push_back(std::move(v));
   }
   for (const io::QuarrySection& s : loaded.quarries) {

@@ -116,7 +116,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   s["headings.quarry_geometry"] = {"section", "crest_x",  "crest_z", "crest_origin",
                                    "toe_x",   "toe_z",    "toe_origin", "height",
                                    "height_derived", "height_origin", "floor_angle",
-                                   "floor_length"};
+                                   "floor_length", "seed"};
   s["headings.quarry_counts"] = {"section",   "thrown",       "reached_floor", "not_reached_floor",
                                  "above_toe", "left_profile", "left_upslope",  "abnormal"};
   s["headings.quarry_zones"] = {"section",   "danger_zone", "first_impact_zone", "bench_width",

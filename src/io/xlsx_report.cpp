@@ -1616,10 +1616,12 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
   text(ws, r++, 0, t_.get("titles", "quarry_geometry"), section());
   headings(ws, r++, 0, "quarry_geometry",
            {"section", "crest_x", "crest_z", "crest_origin", "toe_x", "toe_z", "toe_origin",
-            "height", "height_derived", "height_origin", "floor_angle", "floor_length"},
+            "height", "height_derived", "height_origin", "floor_angle", "floor_length", "seed"},
            45);
   for (const auto* s : secs) {
     const auto& g = s->geometry;
+    for (const auto& v : d_.quarry_sections)
+      if (v.name == s->spec.name) count(ws, r, 12, v.seed);
     text(ws, r, 0, s->spec.name, wrap());
     num(ws, r, 1, g.crest.x, xf);
     num(ws, r, 2, g.crest.z, xf);

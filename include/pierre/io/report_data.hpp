@@ -34,6 +34,7 @@ struct ReportData {
     std::string name;
     const geometry::Profile* profile = nullptr;
     std::vector<std::vector<geometry::Vec2>> paths;
+    std::uint64_t seed = 0;  // of the section's own run: with it the run can be repeated
   };
   std::vector<QuarrySectionView> quarry_sections;
   std::vector<std::vector<geometry::Vec2>> sample_paths;  // a few trajectories, for drawing

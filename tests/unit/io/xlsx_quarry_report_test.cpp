@@ -155,6 +155,7 @@ std::unique_ptr<Fixture> make_fixture() {
     io::ReportData::QuarrySectionView v;
     v.name = f->names[i];
     v.profile = &f->profiles[i];
+    v.seed = 20150601 + i;
     for (int p = 0; p < 4; ++p) {
       std::vector<geometry::Vec2> path;
       const double H = heights[i], reach = 10.0 + 12 * p;
@@ -309,6 +310,8 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
       expect_number(s, *g, 4, sec.geometry.toe.x);
       expect_number(s, *g, 7, sec.geometry.height);
       EXPECT_EQ(cell(s, *g, 6)->text, "found");
+      for (const auto& v : f->data.quarry_sections)  // the section's own seed: its run repeats
+        if (v.name == sec.spec.name) expect_number(s, *g, 12, static_cast<double>(v.seed));
     }
   }
   // Face A: observed beside calculated, the zones and the work-area checks.
