@@ -2098,6 +2098,7 @@ Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t 
   const std::string key = shown < total ? "capped" : "complete";
   std::string s = replace_all(t_.get("titles", key), "{shown}", std::to_string(shown));
   s = replace_all(replace_all(s, "{total}", std::to_string(total)), "{file}", csv);
+  s = replace_all(s, "{printed}", std::to_string(std::min<std::size_t>(shown, t_.print_rows)));
   text(ws, r++, 0, s, note());
   return r;
 }
