@@ -207,7 +207,7 @@ sim::SimulationSettings read_simulation(const TomlTable& top) {
     else
       s->fail("roughness_distribution", "\"truncated-normal\" or \"uniform\"");
   }
-  r.size_reduction = s->boolean("size_reduction").value_or(true);
+  r.size_reduction = s->boolean("size_reduction").value_or(ModelDefaults::size_reduction);
   r.mean = s->number("roughness_mean", ModelDefaults::roughness_mean);
   r.sd = s->number("roughness_sd", ModelDefaults::roughness_sd);
   s->check("roughness_sd", r.sd > 0, "a standard deviation > 0");
@@ -230,7 +230,9 @@ sim::SimulationSettings read_simulation(const TomlTable& top) {
   out.max_time = s->number("max_time", ModelDefaults::max_time);
   s->check("max_time", out.max_time > 0, "a time > 0 (s)");
   if (auto n = s->integer("max_impacts")) {
-    s->check("max_impacts", *n >= 1 && *n <= std::numeric_limits<long>::max(), "an integer >= 1");
+    // Counted per trajectory in 32 bits (TrajectorySummary::impacts).
+    s->check("max_impacts", *n >= 1 && *n <= std::numeric_limits<std::uint32_t>::max(),
+             fmt::format("an integer from 1 to {}", std::numeric_limits<std::uint32_t>::max()));
     out.max_impacts = static_cast<long>(*n);
   }
   out.gravity = s->number("gravity", ModelDefaults::gravity);

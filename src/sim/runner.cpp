@@ -5,6 +5,7 @@
 #include <exception>
 #include <map>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include "pierre/sim/trajectory.hpp"
@@ -95,10 +96,34 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
     }
   };
 
+  // No exception may leave a thread (std::terminate): a worker's failure (out of memory with
+  // --impacts, a throwing progress callback) stops the others and is reported like a sink's.
+  auto guarded = [&] {
+    try {
+      worker();
+    } catch (const std::exception& e) {
+      const std::lock_guard lock(mu);
+      if (!failed) error = e.what();
+      failed = true;
+      cv.notify_all();
+    } catch (...) {
+      const std::lock_guard lock(mu);
+      if (!failed) error = "a worker thread failed";
+      failed = true;
+      cv.notify_all();
+    }
+  };
+
   sink.expect(total);
   std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
-  worker();
+  for (unsigned i = 1; i < threads; ++i) {
+    try {
+      pool.emplace_back(guarded);
+    } catch (const std::system_error&) {
+      break;  // no more threads to be had: the ones running share the chunks
+    }
+  }
+  guarded();
   for (auto& t : pool) t.join();
 
   RunReport rep;

@@ -9,21 +9,23 @@ struct ModelDefaults {
   static constexpr double density = 2650.0;               // kg/m³ (thesis §4.2.1)
   static constexpr double normal_energy_k = 0.5;          // k_n,ref at E_n (Eq 6.4)
   static constexpr double tangential_energy_k = 0.95;     // k_t,ref at E_t (model-2d.md §1: why 0.95)
-  static constexpr double friction_angle_deg = 30.0;      // φ (§4.4.1, Bourrier et al. 2012)
+  static constexpr double friction_angle_deg = 30.0;      // φ (§3.4.2 defines it, no value: model-2d.md §1)
   static constexpr double shape_factor_min = 1.0;         // f range [1, 1]: shape factor off
   static constexpr double shape_factor_max = 1.0;
   static constexpr double shape_factor_lower_bound = 0.7;  // validated range (model-2d.md §3)
   static constexpr double shape_factor_upper_bound = 2.0;
+  static constexpr bool truncated_normal_roughness = true;  // Eq 3.5 (else uniform, Eq 3.4)
+  static constexpr bool size_reduction = true;            // Eq 6.6 on
   static constexpr double roughness_mean = 0.5;           // μ of Eq 3.5 (§4.4.1)
   static constexpr double roughness_sd = 0.5;             // σ of Eq 3.5
   static constexpr double size_reduction_b = 1.36;        // Eq 6.6 / Eq 4.5
   static constexpr double size_reduction_m = 0.3;         // 1/m
   static constexpr double size_reduction_floor = 0.3;     // §3.4.1
-  static constexpr double stop_head_factor = 0.25;        // H_stop = c·R (Eq 3.13, appendix B)
+  static constexpr double stop_head_factor = 0.25;        // H_stop = c·R (Eq 3.13, appendix B; §6.3's "of the block diameter" is not followed: model-2d.md §1)
   static constexpr double max_sliding_speed = 5.0;        // m/s (§3.2.2)
   static constexpr double max_time = 600.0;               // s of simulated time
   static constexpr long max_impacts = 100000;             // impacts (and vertex events)
-  static constexpr double rebound_sliding_threshold = 1e-6;  // m/s: v⁺·n at or below → slide (§3 step 7)
+  static constexpr double rebound_sliding_threshold = 1e-6;  // m/s: v⁺·n at or below → slide (model-2d.md §3 step 7; a numerical tolerance, not a scenario setting)
 };
 
 }  // namespace pierre::model

@@ -5,18 +5,22 @@
 
 #include <cstdint>
 
+#include "pierre/model/model_defaults.hpp"
+
 namespace pierre::model {
 
 enum class RoughnessDistribution : std::uint8_t { truncated_normal, uniform };
 
 struct RoughnessModel {
-  RoughnessDistribution distribution = RoughnessDistribution::truncated_normal;
-  double mean = 0.5;  // μ
-  double sd = 0.5;    // σ
-  bool size_reduction = true;
-  double b = 1.36;
-  double m = 0.3;  // 1/m
-  double floor = 0.3;
+  RoughnessDistribution distribution = ModelDefaults::truncated_normal_roughness
+                                           ? RoughnessDistribution::truncated_normal
+                                           : RoughnessDistribution::uniform;
+  double mean = ModelDefaults::roughness_mean;  // μ
+  double sd = ModelDefaults::roughness_sd;      // σ
+  bool size_reduction = ModelDefaults::size_reduction;
+  double b = ModelDefaults::size_reduction_b;
+  double m = ModelDefaults::size_reduction_m;  // 1/m
+  double floor = ModelDefaults::size_reduction_floor;
 
   // f_size for a block of diameter D (m).
   double size_factor(double diameter) const;

@@ -123,6 +123,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"seed_negative", {{5, "seed = -1"}}, {}, "s.toml", 5, "simulation.seed", "-1"},
         Case{"roughness_mean_far_below_zero", {{6, "throws = 2\nroughness_mean = -16.0"}}, {}, "s.toml", 7, "simulation.roughness_mean", "-16.0"},
         Case{"max_time_zero", {{6, "throws = 2\nmax_time = 0.0"}}, {}, "s.toml", 7, "simulation.max_time", "0.0"},
+        Case{"max_impacts_too_large", {{6, "throws = 2\nmax_impacts = 4294967296"}}, {}, "s.toml", 7, "simulation.max_impacts", "4294967296"},
         Case{"throws_too_large", {{6, "throws = 4294967296"}}, {}, "s.toml", 6, "simulation.throws", "4294967296"},
         Case{"blocks_in_all", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,mass,count\na,100,1000000\nb,100,1\n"}}, "b.csv", 3, "id", "1000001 blocks in all"},
         Case{"count_zero", {{18, "mass = 100.0\ncount = 0"}}, {}, "s.toml", 19, "blocks.table[0].count", "0"},

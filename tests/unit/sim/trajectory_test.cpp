@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "pierre/sim/runner.hpp"
 #include "pierre/sim/trajectory.hpp"
@@ -70,6 +71,26 @@ TEST(Runner, IdenticalResultsForOneTwoAndEightThreads) {
   for (std::size_t i = 0; i < other.trajectories.size(); ++i)
     differ += other.trajectories[i].stop.x != r1.trajectories[i].stop.x;
   EXPECT_GT(differ, 300);
+}
+
+// A failure inside a worker thread (here the progress callback; out of memory with --impacts
+// is the real case) is reported in RunReport::error and stops the run; it used to leave the
+// thread and end the program through std::terminate (exit 134).
+TEST(Runner, AWorkerThreadsFailureIsReportedNotFatal) {
+  for (unsigned threads : {1u, 2u, 4u}) {
+    ResultCollector c;
+    RunOptions o;
+    o.threads = threads;
+    o.chunk_size = 16;
+    int calls = 0;
+    const auto rep = run_simulation(slope_scenario(), o, c, [&](std::uint64_t, std::uint64_t) {
+      if (++calls == 3) throw std::runtime_error("the disk is full");
+    });
+    ASSERT_TRUE(rep.error) << threads;
+    EXPECT_EQ(*rep.error, "the disk is full");
+    EXPECT_FALSE(rep.interrupted);
+    EXPECT_LT(c.trajectories.size(), slope_scenario().trajectory_count());
+  }
 }
 
 TEST(Trajectory, EveryTrajectoryEndsFiniteOnTheSlope) {
