@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numeric>
 
+#include "pierre/design/number_text.hpp"
 #include "pierre/stats/bootstrap_weibull.hpp"
 #include "pierre/stats/percentile.hpp"
 
@@ -102,17 +102,11 @@ std::optional<QuantityFit> observed_fit(const std::vector<double>& v) {
   return fit_quantity(v);
 }
 
-std::string num4(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
-
 // BarrierDesign::how: where each quantity of the factors table comes from, with the rule
 // set's citations, so that the report traces every number to a formula or a source.
 void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
                           const EnergyClassTable& classes) {
-  const std::string p = "P" + num4(rules.percentile);
+  const std::string p = "P" + number_text(rules.percentile);
   const std::string weibull = p + " of the Weibull fit", empirical = p + " of the crossings";
   const std::string governing =
       rules.governing == Governing::weibull     ? weibull
@@ -123,7 +117,7 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
   d.how["v_k"] = d.how["h_k"] = governing + " (" + rules.name + ")";
   auto cited = [&](const char* key, const char* symbol, double v) {
     const auto s = rules.sources.find(key);
-    return std::string(symbol) + " = " + num4(v) + " (given" +
+    return std::string(symbol) + " = " + number_text(v) + " (given" +
            (s == rules.sources.end() ? std::string() : ": " + s->second) + ")";
   };
   d.how["gamma_E_MEL"] = cited("gamma_E_MEL", "γE,MEL", d.gamma_E_MEL);
@@ -137,7 +131,7 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
       d.how["volume"] = "the largest block thrown";
       break;
     case DesignBlock::Kind::percentile:
-      d.how["volume"] = "P" + num4(b.percentile) + " of the volumes of the blocks thrown";
+      d.how["volume"] = "P" + number_text(b.percentile) + " of the volumes of the blocks thrown";
       break;
   }
   d.how["density"] = b.density > 0 ? "given with the design block"
@@ -145,8 +139,8 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
                                                             : "the mean of the blocks'";
   d.how["free_board_diameter"] = d.spec.free_board_diameter ? "given"
                                                             : "the mean equivalent diameter of the blocks thrown";
-  d.how["free_board"] = "f = max(" + num4(rules.free_board_abs) + " m, " +
-                        num4(rules.free_board_rel) + " · D_f) (" + rules.name + ")";
+  d.how["free_board"] = "f = max(" + number_text(rules.free_board_abs) + " m, " +
+                        number_text(rules.free_board_rel) + " · D_f) (" + rules.name + ")";
   d.how["h_d"] = "h_k · γh";
   d.how["h_i"] = "h_d + f";
   d.how["h_max_sim"] = "the largest simulated passing height";

@@ -1,23 +1,19 @@
 // The check lines of a barrier (design-checks.md §1, "Check lines"), from a computed design.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 
 #include "pierre/design/barrier_check.hpp"
+
+#include "pierre/design/number_text.hpp"
 
 namespace pierre::design {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string num(double v, int sig = 4) {
-  if (std::isnan(v)) return "n/a";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", sig, v);
-  return buf;
-}
+std::string num(double v, int sig = 4) { return std::isnan(v) ? "n/a" : number_text(v, sig); }
 std::string pct(double p) { return std::isnan(p) ? "n/a" : num(100 * p, 3) + " %"; }
 
 struct Builder {

@@ -4,16 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "pierre/design/number_text.hpp"
 
 namespace pierre::design {
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
   std::string s;
@@ -62,7 +57,7 @@ stats::Outcome<ResolvedFactor> resolve_factor(const FactorDefinition& f,
   ResolvedFactor r;
   if (f.value) {
     r.value = *f.value;
-    r.how = f.symbol + " = " + number(*f.value) + " (given" +
+    r.how = f.symbol + " = " + number_text(*f.value) + " (given" +
             (f.source.empty() ? std::string() : ": " + f.source) + ")";
     return Out::success(r);
   }
@@ -90,11 +85,11 @@ stats::Outcome<ResolvedFactor> resolve_factor(const FactorDefinition& f,
     }
     product *= v;
     symbols.push_back(p.symbol);
-    values.push_back(number(v));
+    values.push_back(number_text(v));
   }
   r.value = product;
   r.how = f.symbol + " = " + join(symbols, " · ") + " = " + join(values, " × ") + " = " +
-          number(product);
+          number_text(product);
   if (!chosen.empty()) r.how += " (" + join(chosen, ", ") + ")";
   // Where each value comes from: the factor's own citation, else its parts'.
   std::vector<std::string> cited;

@@ -5,19 +5,14 @@
 #include <numbers>
 #include <vector>
 
-#include <sstream>
+#include "pierre/design/number_text.hpp"
 
 namespace pierre::design {
 namespace {
 
 using geometry::Vec2;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return number_text(v, 6); }
 
 // A point of the section at a given chainage: a vertex, or inside a segment.
 struct PointAt {

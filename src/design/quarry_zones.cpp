@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <sstream>
 
+#include "pierre/design/number_text.hpp"
 #include "pierre/stats/percentile.hpp"
 
 namespace pierre::design {
@@ -16,10 +16,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string num(double v, int precision = 4) {
   if (std::isinf(v)) return v > 0 ? "beyond the profile" : "-inf";
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
+  return number_text(v, precision);
 }
 
 std::string rule_of(const QuarryRuleSet& r, const std::string& id) {

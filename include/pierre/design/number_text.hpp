@@ -1,0 +1,16 @@
+// Numbers written into check reasons and report texts: printf's %.<n>g, which does not follow
+// the global locale (an ostringstream would write "1,5" in a program that set one).
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+namespace pierre::design {
+
+inline std::string number_text(double v, int significant = 4) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+  return buf;
+}
+
+}  // namespace pierre::design
