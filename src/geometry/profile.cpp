@@ -476,47 +476,14 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
   return result();
 }
 
-std::optional<GroundPoint> Profile::ground_below(double x, double z) const {
-  GroundPoint best{-kInf, -1};
+template <class Prune, class Visit>
+void Profile::segments_at(double x, Prune prune, Visit visit) const {
   int stack[128];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& nd = nodes_[stack[--top]];
-    if (x < nd.x_lo - kEps || x > nd.x_hi + kEps || nd.z_lo > z + kEps || nd.z_hi < best.z)
-      continue;
-    if (nd.left >= 0) {
-      stack[top++] = nd.left;
-      stack[top++] = nd.right;
-      continue;
-    }
-    for (int j = nd.first; j < nd.last; ++j) {
-      const Segment& s = segments_[j];
-      // A vertical face's top is its neighbour's end; the underside of a ledge (its air below,
-      // n.z < 0) is a ceiling, never the ground below a block.
-      if (s.d.x == 0.0 || s.n.z < 0.0) continue;
-      const double lo = std::min(s.a.x, s.b.x), hi = std::max(s.a.x, s.b.x);
-      if (x < lo - kEps || x > hi + kEps) continue;
-      const double u = std::clamp((x - s.a.x) / (s.b.x - s.a.x), 0.0, 1.0);
-      const double zs = s.a.z + u * (s.b.z - s.a.z);
-      if (zs <= z + kEps && zs > best.z) best = {zs, j};
-    }
-  }
-  if (best.segment < 0) return std::nullopt;
-  return best;
-}
-
-std::optional<GroundPoint> Profile::top_ground(double x) const { return ground_below(x, kInf); }
-
-std::optional<Profile::LineAbove> Profile::line_above(double x, double z) const {
-  LineAbove best{kInf, -1, false};
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& nd = nodes_[stack[--top]];
-    if (x < nd.x_lo - kEps || x > nd.x_hi + kEps || nd.z_hi <= z + kEps || nd.z_lo > best.z)
-      continue;
+    if (x < nd.x_lo - kEps || x > nd.x_hi + kEps || prune(nd)) continue;
     if (nd.left >= 0) {
       stack[top++] = nd.left;
       stack[top++] = nd.right;
@@ -528,13 +495,36 @@ std::optional<Profile::LineAbove> Profile::line_above(double x, double z) const 
       const double lo = std::min(s.a.x, s.b.x), hi = std::max(s.a.x, s.b.x);
       if (x < lo - kEps || x > hi + kEps) continue;
       const double u = std::clamp((x - s.a.x) / (s.b.x - s.a.x), 0.0, 1.0);
-      const double zs = s.a.z + u * (s.b.z - s.a.z);
-      // At the lip of an overhang a ground line and a ceiling meet at one height: the ceiling
-      // decides, as just beside the lip the point is below the underside, in the air.
-      if (zs > z + kEps && (zs < best.z || (zs == best.z && s.n.z < 0.0)))
-        best = {zs, j, s.n.z > 0.0};
+      visit(s, j, s.a.z + u * (s.b.z - s.a.z));
     }
   }
+}
+
+std::optional<GroundPoint> Profile::ground_below(double x, double z) const {
+  GroundPoint best{-kInf, -1};
+  segments_at(
+      x, [&](const Node& nd) { return nd.z_lo > z + kEps || nd.z_hi < best.z; },
+      [&](const Segment& s, int j, double zs) {
+        // A vertical face's top is its neighbour's end; the underside of a ledge (its air
+        // below, n.z < 0) is a ceiling, never the ground below a block.
+        if (s.n.z >= 0.0 && zs <= z + kEps && zs > best.z) best = {zs, j};
+      });
+  if (best.segment < 0) return std::nullopt;
+  return best;
+}
+
+std::optional<GroundPoint> Profile::top_ground(double x) const { return ground_below(x, kInf); }
+
+std::optional<Profile::LineAbove> Profile::line_above(double x, double z) const {
+  LineAbove best{kInf, -1, false};
+  segments_at(
+      x, [&](const Node& nd) { return nd.z_hi <= z + kEps || nd.z_lo > best.z; },
+      [&](const Segment& s, int j, double zs) {
+        // At the lip of an overhang a ground line and a ceiling meet at one height: the ceiling
+        // decides, as just beside the lip the point is below the underside, in the air.
+        if (zs > z + kEps && (zs < best.z || (zs == best.z && s.n.z < 0.0)))
+          best = {zs, j, s.n.z > 0.0};
+      });
   if (best.segment < 0) return std::nullopt;
   return best;
 }

@@ -111,6 +111,10 @@ class Profile {
     int left = -1, right = -1;
   };
   int build_node(int first, int last);
+  // The segments a vertical line at x crosses (vertical faces left out), each with its z there,
+  // from the leaves of the tree that `prune(node)` does not cut off (defined in profile.cpp).
+  template <class Prune, class Visit>
+  void segments_at(double x, Prune prune, Visit visit) const;
   // The general searches behind the closed-form fast paths of the two queries above (kept
   // out of line so that the fast paths stay small).
   std::optional<Contact> first_contact_search(Vec2 p0, Vec2 v0, double g, double t_max,
