@@ -264,6 +264,11 @@ class Report {
                bool line_too);
   void insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale = 1,
                     double y_scale = 1);
+  // Axis bounds that draw a section at one scale in x and z (a 32° slope looks 32°): the
+  // longer extent for its axis fixes metres per pixel of the plot area, the other axis gets
+  // as many metres as its pixels hold. The plot area is taken as its usual share of the chart.
+  void equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin, double zmax,
+                   double x_scale, double y_scale);
   // Writes the drawn points of `paths` in columns 2 (x) and 3 (z) from row r0, an empty row
   // after each path; returns the row after the last one written.
   Row path_rows(lxw_worksheet* ws, Row r0, const std::vector<std::vector<geometry::Vec2>>& paths,
@@ -558,6 +563,22 @@ void Report::markers(lxw_chart_series* s, std::uint8_t type, std::uint8_t size,
   lxw_chart_line edge{};
   edge.color = colour;
   chart_series_set_marker_line(s, &edge);
+}
+
+void Report::equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin, double zmax,
+                         double x_scale, double y_scale) {
+  if (!(xmax > xmin) || !(zmax >= zmin)) return;
+  const double w = t_.chart_width * x_scale * 0.85, h = t_.chart_height * y_scale * 0.68;
+  const double margin = 0.05 * std::max(zmax - zmin, 1e-9);
+  const double per_px = std::max((xmax - xmin) / w, (zmax - zmin + 2 * margin) / h);
+  // Bounds on round numbers (Excel labels the ticks from them), widening only.
+  auto round_step = [](double range) { return std::pow(10.0, std::floor(std::log10(range))) / 2; };
+  const double xs = round_step(per_px * w), zs = round_step(per_px * h);
+  const double x0 = std::floor(xmin / xs) * xs, z0 = std::floor((zmin - margin) / zs) * zs;
+  chart_axis_set_min(chart->x_axis, x0);
+  chart_axis_set_max(chart->x_axis, std::ceil((x0 + per_px * w) / xs) * xs);
+  chart_axis_set_min(chart->y_axis, z0);
+  chart_axis_set_max(chart->y_axis, std::ceil((z0 + per_px * h) / zs) * zs);
 }
 
 void Report::insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale,
@@ -1433,10 +1454,6 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
     // Lines drawn at least 6 % of the profile's height, so that they show on a tall slope.
     const double line_height =
         std::max(t_.profile_line_height, std::isfinite(zmax - zmin) ? 0.06 * (zmax - zmin) : 0.0);
-    if (zmax > zmin) {  // the slope fills the chart: the vertical axis starts below its foot
-      const double step = std::pow(10.0, std::floor(std::log10(zmax - zmin))) / 2;
-      chart_axis_set_min(chart->y_axis, std::floor((zmin - 0.05 * (zmax - zmin)) / step) * step);
-    }
     Row vr = r0;
     for (const auto& p : v) {
       num(ws, vr, 0, p.x, xf);
@@ -1486,10 +1503,13 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
     }
   }
   if (any) {
-    if (xmax > xmin) {
-      chart_axis_set_min(chart->x_axis, xmin);
-      chart_axis_set_max(chart->x_axis, xmax);
-    }
+    double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
+    if (d_.scenario)
+      for (const auto& p : d_.scenario->scenario.profile.vertices()) {
+        zmin = std::min(zmin, p.z);
+        zmax = std::max(zmax, p.z);
+      }
+    equal_scale(chart, xmin, xmax, zmin, zmax, 1.6, 1.6);
     insert_chart(ws, {chart_row, 0}, chart, 1.6, 1.6);
   }
 }
@@ -2078,14 +2098,7 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
     markers(sr, LXW_CHART_MARKER_TRIANGLE, 9, t_.colour("work_areas"), false);
     last = std::max(last, wr);
   }
-  if (xmax > xmin) {
-    chart_axis_set_min(chart->x_axis, xmin);
-    chart_axis_set_max(chart->x_axis, xmax);
-  }
-  if (zmax > zmin) {
-    const double step = std::pow(10.0, std::floor(std::log10(zmax - zmin))) / 2;
-    chart_axis_set_min(chart->y_axis, std::floor((zmin - 0.05 * (zmax - zmin)) / step) * step);
-  }
+  equal_scale(chart, xmin, xmax, zmin, zmax, 2.0, 1.4);
   chart_axis_set_num_format(chart->x_axis, keep(t_.get("formats", "general")));
   insert_chart(ws, at, chart, 2.0, 1.4);
   return last + 1;
