@@ -554,6 +554,42 @@ TEST(XlsxReport, ColumnWidthEntriesDoNotOverlap) {
   EXPECT_GE(sheets, 5);
 }
 
+// The profile is drawn at one scale: metres per pixel of the plot area (taken as 85 % of the
+// chart's width and 68 % of its height) equal across and up, up to the round numbers the axis
+// bounds are put on (a half-decade step: at most a factor 1.5 either way), and the axes hold
+// the whole section. (The vertical axis used to fill the height: a 32° slope looked 15°.)
+TEST(XlsxReport, TheProfileIsDrawnAtOneScale) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture(50, 5);
+  const auto tpl = io::load_report_template(kTemplate);
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, tpl);
+  std::string chart;
+  for (const auto& n : zip_list(xlsx, dir.path()))
+    if (n.rfind("xl/charts/chart", 0) == 0) {
+      const std::string x = zip_entry(xlsx, n, dir.path());
+      if (x.find(tpl.get("chart.profile", "title")) != std::string::npos) chart = x;
+    }
+  ASSERT_FALSE(chart.empty());
+  auto bound = [&](const char* pos, const char* which) {  // pos "b" (x) or "l" (z)
+    const std::size_t ax = chart.find(std::string("<c:axPos val=\"") + pos + "\"/>");
+    const std::size_t start = chart.rfind("<c:valAx>", ax);
+    const std::size_t k = chart.find(std::string("<c:") + which + " val=\"", start) + std::string(which).size() + 9;
+    return std::stod(chart.substr(k, chart.find('"', k) - k));
+  };
+  const double x0 = bound("b", "min"), x1 = bound("b", "max"), z0 = bound("l", "min"), z1 = bound("l", "max");
+  const auto& prof = f->scenario.scenario.profile;
+  for (const auto& v : prof.vertices()) {
+    EXPECT_GE(v.x, x0);
+    EXPECT_LE(v.x, x1);
+    EXPECT_GE(v.z, z0);
+    EXPECT_LE(v.z, z1);
+  }
+  const double across = (x1 - x0) / (tpl.chart_width * 0.85), up = (z1 - z0) / (tpl.chart_height * 0.68);
+  EXPECT_LT(std::max(across, up) / std::min(across, up), 1.5) << across << " m/px across, " << up << " m/px up";
+}
+
 TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
   PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
