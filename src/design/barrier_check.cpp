@@ -144,8 +144,11 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
   d.how["h_d"] = "h_k · γh";
   d.how["h_i"] = "h_d + f";
   d.how["h_max_sim"] = "the largest simulated passing height";
-  d.how["energy_class"] = "the smallest class of " + classes.name + " meeting the required capacity" +
-                          (classes.source.empty() ? std::string() : " (" + classes.source + ")");
+  const std::string needed = rules.design_on == DesignOn::mel   ? "MEL_req (the rule set designs on MEL; SEL_req is for information)"
+                            : rules.design_on == DesignOn::sel ? "SEL_req (the rule set designs on SEL; MEL_req is for information)"
+                                                               : "MEL_req and SEL_req";
+  d.how["energy_class"] = "the smallest class of " + classes.name + " meeting " + needed +
+                          (classes.source.empty() ? std::string() : "; " + classes.source);
 }
 
 }  // namespace

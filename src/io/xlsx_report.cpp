@@ -799,6 +799,11 @@ void Report::summary(lxw_worksheet* ws) {
       fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
       ++r;
     }
+    // How each class was chosen: on which capacity, from which table (its source).
+    for (const auto& b : d_.barriers)
+      if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
+        text(ws, r++, 0, b.spec.name + ": class " + std::to_string(b.energy_class->number) + ", " +
+                             it->second, note());
   }
 
   // Observation lines.

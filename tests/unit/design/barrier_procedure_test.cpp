@@ -115,7 +115,8 @@ TEST(BarrierProcedure, EachDesignQuantitySaysWhereItComesFrom) {
   EXPECT_EQ(d.how.at("free_board"), "f = max(0 m, 0.5 · D_f) (thesis-2015)");
   EXPECT_EQ(d.how.at("volume"), "the design block, given");
   EXPECT_EQ(d.how.at("free_board_diameter"), "given");
-  EXPECT_NE(d.how.at("energy_class").find("ETAG 027 (2008) Table 2.3"), std::string::npos);
+  EXPECT_EQ(d.how.at("energy_class"),
+            "the smallest class of etag027-classes meeting MEL_req and SEL_req; ETAG 027 (2008) Table 2.3");
   // A factor made of parts cites its parts.
   auto pr = test::peila_ronco_2009();
   pr.gamma_F.parts[0].source = "Peila & Ronco (2009): trajectory";
@@ -128,6 +129,10 @@ TEST(BarrierProcedure, EachDesignQuantitySaysWhereItComesFrom) {
             std::string::npos) << o2.design->gamma_F.how;
   EXPECT_EQ(o2.design->how.at("v_k"),
             "the larger of the P95 of the Weibull fit and the P95 of the crossings (peila-ronco-2009)");
+  // A MEL-only rule set says its class is chosen on MEL_req (the Summary showed a class SEL below
+  // SEL_req with nothing to say it does not matter).
+  EXPECT_NE(o2.design->how.at("energy_class").find("meeting MEL_req (the rule set designs on MEL"),
+            std::string::npos) << o2.design->how.at("energy_class");
 }
 
 TEST(BarrierProcedure, DesignFollowsFromTheCharacteristicValues) {
