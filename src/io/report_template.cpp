@@ -40,7 +40,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                   "percent", "time",      "angle",    "material",    "general", "date"};
   s["titles"] = {"summary",      "run",          "barriers",       "lines",
                  "checks",       "inputs",       "simulation",     "materials",
-                 "blocks",       "sources",      "observation_lines", "barrier_inputs",
+                 "blocks",       "sources",      "profile_vertices", "observation_lines", "barrier_inputs",
                  "scenario_text", "barrier",     "statistics",     "bootstrap",
                  "design",       "factors",      "exceedance",     "barrier_checks",
                  "notes",        "chart_data",   "profile",        "trajectories",
@@ -68,6 +68,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                              "friction_angle"};
   s["headings.blocks"] = {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"};
   s["headings.sources"] = {"name", "x", "z", "vx", "vz", "omega"};
+  s["headings.profile_vertices"] = {"x", "z", "material"};
   s["headings.observation_lines"] = {"name", "x"};
   s["headings.barrier_inputs"] = {
       "field",          "name",           "line",          "rules",

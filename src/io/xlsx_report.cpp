@@ -942,6 +942,34 @@ void Report::inputs(lxw_worksheet* ws) {
       }
     });
 
+    // The section as read: every vertex with the material of the segment that starts there
+    // (the last vertex ends the profile).
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "profile_vertices"), section());
+    headings(ws, r++, 0, "profile_vertices", {"x", "z", "material"});
+    auto vertices = [&](const sim::Scenario& sec) {
+      const auto& segs = sec.profile.segments();
+      for (std::size_t k = 0; k < segs.size(); ++k) {
+        num(ws, r, 0, segs[k].a.x, number("coordinate"));
+        num(ws, r, 1, segs[k].a.z, number("coordinate"));
+        const auto m = static_cast<std::size_t>(segs[k].material);
+        if (m < sec.materials.size()) text(ws, r, 2, sec.materials[m].name);
+        ++r;
+      }
+      if (!segs.empty()) {
+        num(ws, r, 0, segs.back().b.x, number("coordinate"));
+        num(ws, r++, 1, segs.back().b.z, number("coordinate"));
+      }
+    };
+    if (sc->quarries.empty()) {
+      vertices(s);
+    } else {
+      for (const auto& q : sc->quarries) {
+        text(ws, r++, 0, q.spec.name, bold());
+        vertices(q.scenario);
+      }
+    }
+
     ++r;
     text(ws, r++, 0, t_.get("titles", "observation_lines"), section());
     headings(ws, r++, 0, "observation_lines", {"name", "x"});

@@ -465,6 +465,21 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto talus = find_row(in, 0, "talus");
   ASSERT_TRUE(talus);
   EXPECT_TRUE(number(in, *talus, 2));
+  // The profile as read: every vertex (tests/data/small/profile.csv) with the material of the
+  // segment that starts there; the last vertex has none.
+  const auto pv = find_row(in, 0, "Profile vertices (each row's material is the segment that starts there)");
+  ASSERT_TRUE(pv);
+  const struct {
+    double x, z;
+    const char* material;
+  } rows[] = {{0, 70, "talus"}, {50, 35, "talus"}, {100, 0, "road"}, {110, 0, "talus"}, {200, -2, ""}};
+  for (std::size_t k = 0; k < std::size(rows); ++k) {
+    const std::size_t row = *pv + 2 + k;  // under the title and the headings
+    EXPECT_EQ(number(in, row, 0), rows[k].x) << k;
+    EXPECT_EQ(number(in, row, 1), rows[k].z) << k;
+    const auto m = cell(in, row, 2);
+    EXPECT_EQ(m ? m->text : std::string(), rows[k].material) << k;
+  }
   // Profile: the vertices as numbers.
   const Sheet& pr = sheets["Profile"];
   const auto ph = find_row(pr, 0, "x (m)");
