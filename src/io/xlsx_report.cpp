@@ -269,6 +269,8 @@ class Report {
   // as many metres as its pixels hold. The plot area is taken as its usual share of the chart.
   void equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin, double zmax,
                    double x_scale, double y_scale);
+  // A label per point of a series, by name; an empty name hides that point's label.
+  void point_labels(lxw_chart_series* s, const std::vector<std::string>& names);
   // Writes the drawn points of `paths` in columns 2 (x) and 3 (z) from row r0, an empty row
   // after each path; returns the row after the last one written.
   Row path_rows(lxw_worksheet* ws, Row r0, const std::vector<std::vector<geometry::Vec2>>& paths,
@@ -579,6 +581,22 @@ void Report::equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin
   chart_axis_set_max(chart->x_axis, std::ceil((x0 + per_px * w) / xs) * xs);
   chart_axis_set_min(chart->y_axis, z0);
   chart_axis_set_max(chart->y_axis, std::ceil((z0 + per_px * h) / zs) * zs);
+}
+
+void Report::point_labels(lxw_chart_series* s, const std::vector<std::string>& names) {
+  std::vector<lxw_chart_data_label> labels(names.size());
+  std::vector<lxw_chart_data_label*> list;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i].empty())
+      labels[i].hide = LXW_TRUE;
+    else
+      labels[i].value = const_cast<char*>(keep(names[i]));
+    list.push_back(&labels[i]);
+  }
+  list.push_back(nullptr);
+  chart_series_set_labels(s);
+  chart_series_set_labels_position(s, LXW_CHART_LABEL_POSITION_RIGHT);
+  check(chart_series_set_labels_custom(s, list.data()), "chart_series_set_labels_custom");
 }
 
 void Report::insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale,
@@ -1501,6 +1519,7 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
     }
     // Observation lines: vertical segments from the ground up.
     Row lr = r0;
+    std::vector<std::string> line_names;  // per point: the top of each line is named
     for (const auto& l : d_.scenario->scenario.lines) {
       const auto g = prof.top_ground(l.x);
       if (!g) continue;
@@ -1509,13 +1528,17 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
       num(ws, lr, 4, l.x, xf);
       num(ws, lr++, 5, g->z + line_height, xf);
       ++lr;
+      line_names.insert(line_names.end(), {"", l.name, ""});
     }
     if (lr > r0) {
-      xy_series(chart, sheet, r0, lr - 2, 4, 5, h("profile", "lines"), t_.colour("lines"), 1.25f,
-                LXW_CHART_LINE_DASH_DASH);
+      lxw_chart_series* ls = xy_series(chart, sheet, r0, lr - 2, 4, 5, h("profile", "lines"),
+                                       t_.colour("lines"), 1.25f, LXW_CHART_LINE_DASH_DASH);
+      line_names.pop_back();  // the range ends before the last gap row
+      point_labels(ls, line_names);
     }
     // Barriers: the candidate's height when known, else h_i.
     Row br = r0;
+    std::vector<std::string> barrier_names;
     for (const auto& b : d_.barriers) {
       const auto g = prof.top_ground(b.chainage);
       if (!g) continue;
@@ -1527,12 +1550,15 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
       num(ws, br, 6, b.chainage, xf);
       num(ws, br++, 7, g->z + hb, xf);
       ++br;
+      barrier_names.insert(barrier_names.end(), {"", b.spec.name, ""});
     }
     if (br > r0) {
       lxw_chart_series* s = xy_series(chart, sheet, r0, br - 2, 6, 7, h("profile", "barriers"),
                                       t_.colour("barriers"), 3.5f);
       // Markers at the foot and the top, so that a barrier shows beside a tall slope.
       markers(s, LXW_CHART_MARKER_DIAMOND, 7, t_.colour("barriers"), true);
+      barrier_names.pop_back();
+      point_labels(s, barrier_names);
     }
   }
   if (any) {
@@ -2129,6 +2155,9 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
     lxw_chart_series* sr = xy_series(chart, sheet, r0, wr - 1, 10, 11, h("quarry_chart", "work_areas"),
                                      t_.colour("work_areas"), 1.0f);
     markers(sr, LXW_CHART_MARKER_TRIANGLE, 9, t_.colour("work_areas"), false);
+    std::vector<std::string> names;
+    for (const auto& w : s.spec.work_areas) names.push_back(w.name);
+    point_labels(sr, names);  // two work areas are two like triangles otherwise
     last = std::max(last, wr);
   }
   equal_scale(chart, xmin, xmax, zmin, zmax, 2.0, 1.4);

@@ -198,7 +198,12 @@ TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
     EXPECT_GE(series, 2u);
     EXPECT_EQ(occurrences(xml, "<c:xVal>"), series);
     EXPECT_EQ(occurrences(xml, "<c:yVal>"), series);
-    if (xml.find("<c:symbol val=\"triangle\"/>") != std::string::npos) ++with_markers;
+    if (xml.find("<c:symbol val=\"triangle\"/>") != std::string::npos) {
+      ++with_markers;
+      // Each named, so that two work areas are not two like triangles.
+      EXPECT_NE(xml.find("<a:t>crusher</a:t>"), std::string::npos);
+      EXPECT_NE(xml.find("<a:t>office</a:t>"), std::string::npos);
+    }
   }
   EXPECT_EQ(with_markers, 1u);  // the work areas of Face A, as points
 

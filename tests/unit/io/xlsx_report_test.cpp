@@ -603,6 +603,14 @@ TEST(XlsxReport, TheProfileIsDrawnAtOneScale) {
   }
   const double across = (x1 - x0) / (tpl.chart_width * 0.85), up = (z1 - z0) / (tpl.chart_height * 0.68);
   EXPECT_LT(std::max(across, up) / std::min(across, up), 1.5) << across << " m/px across, " << up << " m/px up";
+  // The barriers and the observation lines are named on the chart, at their tops: the label of
+  // point 1 (a line's top, after its foot) carries the name, the foot's is deleted.
+  for (const auto& b : f->data.barriers)
+    EXPECT_NE(chart.find("<a:t>" + b.spec.name + "</a:t>"), std::string::npos) << b.spec.name;
+  for (const auto& l : f->scenario.scenario.lines)
+    EXPECT_NE(chart.find("<a:t>" + l.name + "</a:t>"), std::string::npos) << l.name;
+  EXPECT_NE(chart.find("<c:dLbl><c:idx val=\"0\"/><c:delete val=\"1\"/></c:dLbl><c:dLbl><c:idx val=\"1\"/>"),
+            std::string::npos);
 }
 
 TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
