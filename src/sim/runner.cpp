@@ -42,7 +42,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   std::condition_variable cv;
   std::map<std::uint64_t, ChunkResult> pending;
   std::uint64_t next_claim = 0, next_deliver = 0, impacts = 0;
-  bool failed = false;
+  bool failed = false, delivering = false;
   std::optional<std::string> error;
 
   auto stopped = [&] { return options.stop && options.stop->load(std::memory_order_relaxed); };
@@ -81,16 +81,30 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
       std::unique_lock lock(mu);
       impacts += n_imp;
       pending.emplace(c, std::move(res));
-      while (!failed && !pending.empty() && pending.begin()->first == next_deliver) {
-        try {
-          sink.consume(std::move(pending.begin()->second));
-        } catch (const std::exception& e) {
-          failed = true;
-          error = e.what();
+      // One worker at a time delivers, in chunk order, and does it without the lock: the sink
+      // writes files, and the others go on simulating meanwhile instead of waiting for it.
+      if (!delivering) {
+        delivering = true;
+        while (!failed && !pending.empty() && pending.begin()->first == next_deliver) {
+          ChunkResult ready = std::move(pending.begin()->second);
+          pending.erase(pending.begin());
+          lock.unlock();
+          std::optional<std::string> failure;
+          try {
+            sink.consume(std::move(ready));
+          } catch (const std::exception& e) {
+            failure = e.what();
+          }
+          lock.lock();
+          if (failure) {
+            failed = true;
+            error = failure;
+          }
+          ++next_deliver;
+          if (progress && !failed) progress(std::min(total, next_deliver * chunk), total);
+          cv.notify_all();  // the window moved on
         }
-        pending.erase(pending.begin());
-        ++next_deliver;
-        if (progress && !failed) progress(std::min(total, next_deliver * chunk), total);
+        delivering = false;
       }
       cv.notify_all();
     }
