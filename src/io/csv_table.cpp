@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "pierre/io/input_error.hpp"
 #include "text_check.hpp"
+#include "text_file.hpp"
 
 namespace pierre::io::detail {
 namespace {
@@ -97,19 +96,7 @@ double CsvTable::number(const CsvRow& row, std::size_t col) const {
 
 CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
                   std::string_view expected_header) {
-  std::ifstream in(file, std::ios::binary);
-  if (std::error_code dir_ec; std::filesystem::is_directory(file, dir_ec))
-    throw InputError(file, 0, "file", "a folder, not a file",
-                     fmt::format("a readable CSV file with header {}", expected_header));
-  if (!in) {
-    std::error_code ec;
-    const bool exists = std::filesystem::exists(file, ec);
-    throw InputError(file, 0, "file", exists ? "a file that cannot be read" : "no such file",
-                     fmt::format("a readable CSV file with header {}", expected_header));
-  }
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string text = buf.str();
+  std::string text = read_text(file, fmt::format("CSV file with header {}", expected_header));
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
   // Excel's "Unicode text" export is UTF-16: two bytes a character, half of them zero here.
   const bool utf16 = text.rfind("\xFF\xFE", 0) == 0 || text.rfind("\xFE\xFF", 0) == 0;

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "text_file.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io {
@@ -148,19 +147,6 @@ const Keys kColours = {"heading_font", "heading_fill", "title_font", "note_font"
                        "weibull",      "lognormal",    "empirical",  "observed",  "toe",
                        "danger_zone",  "first_impact_zone", "work_areas"};
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    std::error_code ec;
-    const bool exists = fs::is_regular_file(file, ec);
-    throw InputError(file, 0, "file", exists ? "a file that cannot be read" : "no such file",
-                     "a readable report template (templates/report.toml)");
-  }
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
-}
-
 std::string joined(const Keys& keys) {
   std::string s;
   for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
@@ -284,15 +270,8 @@ std::uint32_t ReportTemplate::colour(std::string_view key) const {
 }
 
 ReportTemplate load_report_template(const std::filesystem::path& file) {
-  const std::string text = read_text(file);
-  toml::table root;
-  try {
-    root = toml::parse(text, file.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
-                     fmt::format("{} (column {})", e.description(), e.source().begin.column),
-                     "valid TOML (https://toml.io)");
-  }
+  const std::string text = detail::read_text(file, "report template (templates/report.toml)");
+  const toml::table root = detail::parse_toml(file, text);
   const TomlTable top(file, root, "", 0,
                       {"sheets", "rows", "page", "charts", "colours", "formats", "titles",
                        "labels", "headings", "chart"});

@@ -5,11 +5,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -32,35 +30,6 @@ std::string dotted(std::string_view table_path, std::string_view key) {
 }
 }  // namespace
 
-std::string read_text(const fs::path& file, std::string_view what) {
-  std::ifstream in(file, std::ios::binary);
-  if (std::error_code ec; fs::is_directory(file, ec))
-    throw InputError(file, 0, "file", "a folder, not a file", fmt::format("a readable {}", what));
-  if (!in) {
-    std::error_code ec;
-    const bool exists = fs::is_regular_file(file, ec);
-    throw InputError(file, 0, "file", exists ? "a file that cannot be read" : "no such file",
-                     fmt::format("a readable {}", what));
-  }
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
-}
-
-toml::table parse_toml(const fs::path& file, const std::string& text) {
-  try {
-    return toml::parse(text, file.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
-                     fmt::format("{} (column {})", e.description(), e.source().begin.column),
-                     "valid TOML (https://toml.io)");
-  }
-}
-
-fs::path relative_to(const fs::path& base_file, const std::string& p) {
-  const fs::path q(p);
-  return q.is_absolute() ? q : base_file.parent_path() / q;
-}
 
 
 // ---- profile ----

@@ -15,17 +15,10 @@
 #include "pierre/model/block.hpp"
 #include "pierre/model/material.hpp"
 #include "pierre/sim/scenario.hpp"
+#include "text_file.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io::detail {
-
-// The whole text of a file; InputError (line 0) when it cannot be read. `what` names it in the
-// message ("scenario file (TOML)").
-std::string read_text(const std::filesystem::path& file, std::string_view what);
-// TOML text parsed; InputError at the syntax error's line.
-toml::table parse_toml(const std::filesystem::path& file, const std::string& text);
-// `p` relative to the folder of `base_file` (absolute paths as they are).
-std::filesystem::path relative_to(const std::filesystem::path& base_file, const std::string& p);
 
 // In the readers below `parent` is the table holding the part (the root, or one [[quarries]]
 // entry) and `table_path` its path as a TOML header names it ("" for the root, "quarries"),

@@ -7,6 +7,7 @@
 
 #include "pierre/io/input_error.hpp"
 #include "text_check.hpp"
+#include "text_file.hpp"
 
 namespace pierre::io::detail {
 
@@ -69,8 +70,7 @@ std::optional<std::filesystem::path> TomlTable::file_path(std::string_view key,
                                                           std::string_view what) const {
   const auto name = string(key);
   if (!name) return std::nullopt;
-  const std::filesystem::path p(*name);
-  const std::filesystem::path full = p.is_absolute() ? p : file_.parent_path() / p;
+  const std::filesystem::path full = relative_to(file_, *name);
   std::error_code ec;
   const auto st = std::filesystem::status(full, ec);
   std::string problem;
@@ -169,6 +169,16 @@ const toml::array* TomlTable::array(std::string_view key) const {
   const auto* a = n->as_array();
   if (!a) fail(key, "an array");
   return a;
+}
+
+toml::table parse_toml(const std::filesystem::path& file, const std::string& text) {
+  try {
+    return toml::parse(text, file.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
+                     fmt::format("{} (column {})", e.description(), e.source().begin.column),
+                     "valid TOML (https://toml.io)");
+  }
 }
 
 }  // namespace pierre::io::detail

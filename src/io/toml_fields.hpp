@@ -71,4 +71,7 @@ class TomlTable {
   long line_;
 };
 
+// TOML text parsed; InputError at the syntax error's line.
+toml::table parse_toml(const std::filesystem::path& file, const std::string& text);
+
 }  // namespace pierre::io::detail

@@ -1,0 +1,17 @@
+// Input files as text, and paths given relative to the file that names them.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace pierre::io::detail {
+
+// The whole text of a file; InputError (line 0, field "file") when it is missing, a folder, or
+// cannot be read. `what` names it in the message ("scenario file (TOML)").
+std::string read_text(const std::filesystem::path& file, std::string_view what);
+
+// `p` relative to the folder of `base_file` (absolute paths as they are).
+std::filesystem::path relative_to(const std::filesystem::path& base_file, const std::string& p);
+
+}  // namespace pierre::io::detail
