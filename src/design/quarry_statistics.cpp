@@ -28,9 +28,9 @@ void DistanceSample::add(std::span<const double> values_m, double height, double
   }
 }
 
-double censored_percentile(std::span<const double> values, std::span<const double> censored_at,
-                           double p) {
-  if (!(p >= 0 && p <= 100)) return kNaN;
+std::vector<double> censored_percentiles(std::span<const double> values,
+                                         std::span<const double> censored_at,
+                                         std::span<const double> ps) {
   std::vector<double> bounded;
   bounded.reserve(values.size());
   std::size_t k = 0;
@@ -43,12 +43,28 @@ double censored_percentile(std::span<const double> values, std::span<const doubl
       bounded.push_back(v);
     }
   }
+  std::sort(bounded.begin(), bounded.end());  // once for every p
   const double n = static_cast<double>(bounded.size());
-  if (bounded.empty()) return kNaN;
-  // "More than (1 − p) of all blocks leave": k > (1 − p/100) n, with a hair of slack for the
-  // rounding of 100 − p (p = 99.9 and k = 1 of 1000 is exactly the limit, not beyond it).
-  if (static_cast<double>(k) * 100.0 > (100.0 - p) * n * (1.0 + 1e-9)) return kInf;
-  return stats::percentile(bounded, p);
+  std::vector<double> out;
+  out.reserve(ps.size());
+  for (double p : ps) {
+    if (!(p >= 0 && p <= 100) || bounded.empty()) {
+      out.push_back(kNaN);
+    } else if (static_cast<double>(k) * 100.0 > (100.0 - p) * n * (1.0 + 1e-9)) {
+      // "More than (1 − p) of all blocks leave": k > (1 − p/100) n, with a hair of slack for
+      // the rounding of 100 − p (p = 99.9 and k = 1 of 1000 is exactly the limit, not beyond it).
+      out.push_back(kInf);
+    } else {
+      out.push_back(stats::percentile_of_sorted(bounded, p));
+    }
+  }
+  return out;
+}
+
+double censored_percentile(std::span<const double> values, std::span<const double> censored_at,
+                           double p) {
+  const double ps[] = {p};
+  return censored_percentiles(values, censored_at, ps).front();
 }
 
 stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
@@ -93,10 +109,11 @@ DistanceStatistics distance_statistics(const DistanceSample& s) {
     if (v == 0) ++out.zeros;
     if (std::isinf(v)) ++out.censored;
   }
-  auto m = [&](double p) { return censored_percentile(s.metres, s.censored_at_m, p); };
-  auto h = [&](double p) { return censored_percentile(s.normalized, s.censored_at, p); };
-  out.p50 = m(50), out.p95 = m(95), out.p99 = m(99), out.max = m(100);
-  out.p50_h = h(50), out.p95_h = h(95), out.p99_h = h(99), out.max_h = h(100);
+  const double ps[] = {50, 95, 99, 100};
+  const auto m = censored_percentiles(s.metres, s.censored_at_m, ps);
+  const auto h = censored_percentiles(s.normalized, s.censored_at, ps);
+  out.p50 = m[0], out.p95 = m[1], out.p99 = m[2], out.max = m[3];
+  out.p50_h = h[0], out.p95_h = h[1], out.p99_h = h[2], out.max_h = h[3];
   if (out.count == 0) {
     out.fit_error = "no values";
     return out;

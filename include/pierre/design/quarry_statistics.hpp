@@ -69,6 +69,10 @@ stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
 // threshold. NaN for an empty sample or a p outside [0, 100].
 double censored_percentile(std::span<const double> values, std::span<const double> censored_at,
                            double p);
+// The same for several p, sorting the sample once.
+std::vector<double> censored_percentiles(std::span<const double> values,
+                                         std::span<const double> censored_at,
+                                         std::span<const double> ps);
 
 // The empirical distance (/H) exceeded with probability q: censored_percentile at 100 (1 − q)
 // of the normalized sample; NaN for q outside [0, 1].
