@@ -286,11 +286,15 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   if (d.observed_height) ex.observed_height = d.observed_height->weibull;
   d.exceedance = exceedance_rows(ex);
 
-  // Step 8: bootstrap intervals of v_k, h_k and, through them, E_d and h_i.
-  const auto rv = characteristic_replicates(sample.speed, rules.percentile, rules.governing,
-                                            splitmix64(seed ^ 1));
-  const auto rh = characteristic_replicates(sample.height, rules.percentile, rules.governing,
-                                            splitmix64(seed ^ 2));
+  // Step 8: bootstrap intervals of v_k, h_k and, through them, E_d and h_i. (Not of a point
+  // mass: every resample is the sample, and no Weibull refits it.)
+  using Reps = stats::Outcome<Replicates>;
+  auto replicates = [&](const QuantityFit& fit, std::span<const double> values, std::uint64_t s) {
+    return fit.point_mass ? Reps::failure("a point mass")
+                          : characteristic_replicates(values, rules.percentile, rules.governing, s);
+  };
+  const auto rv = replicates(d.speed, sample.speed, splitmix64(seed ^ 1));
+  const auto rh = replicates(d.height, sample.height, splitmix64(seed ^ 2));
   const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
   // A point mass resamples to itself: its interval has no width (no refit can show that).
   auto point_interval = [](double v) {

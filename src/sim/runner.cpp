@@ -113,19 +113,19 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   // No exception may leave a thread (std::terminate): a worker's failure (out of memory with
   // --impacts, a throwing progress callback) stops the others and is reported like a sink's.
   auto guarded = [&] {
+    std::string what;
     try {
       worker();
+      return;
     } catch (const std::exception& e) {
-      const std::lock_guard lock(mu);
-      if (!failed) error = e.what();
-      failed = true;
-      cv.notify_all();
+      what = e.what();
     } catch (...) {
-      const std::lock_guard lock(mu);
-      if (!failed) error = "a worker thread failed";
-      failed = true;
-      cv.notify_all();
+      what = "a worker thread failed";
     }
+    const std::lock_guard lock(mu);
+    if (!failed) error = std::move(what);
+    failed = true;
+    cv.notify_all();
   };
 
   sink.expect(total);
