@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "pierre/sim/trajectory.hpp"
+
 namespace pierre::app {
 
 ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), start_(clock::now()), last_(start_) {}

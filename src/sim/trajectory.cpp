@@ -414,7 +414,7 @@ TrajectoryModel::TrajectoryModel(const Scenario& scenario)
     }
     const auto below = profile.ground_below(p.x, p.z);
     if (below && p.z > below->z) {
-      starts_.push_back({SourceStart::Kind::flight, 0.0, -1});
+      starts_.push_back({SourceStart::Kind::flight, 0.0, below->segment});
       continue;
     }
     const auto top = below ? below : profile.top_ground(p.x);
@@ -423,6 +423,18 @@ TrajectoryModel::TrajectoryModel(const Scenario& scenario)
     else
       starts_.push_back({SourceStart::Kind::ground, top->z, top->segment});
   }
+}
+
+std::vector<std::size_t> sources_against_main_direction(const Scenario& s) {
+  const TrajectoryModel model(s);
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < s.sources.size(); ++i) {
+    const int segment = model.source_start(i).segment;
+    // Rising along the vertex order: it falls towards the first vertex. (Level ground says
+    // nothing; a vertical face is never the ground under a point.)
+    if (segment >= 0 && s.profile.segment(segment).d.z > 0.0) out.push_back(i);
+  }
+  return out;
 }
 
 TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_t index,

@@ -50,12 +50,6 @@ struct Scenario {
   }
 };
 
-// The sources whose ground falls towards the profile's first vertex: their blocks travel against
-// the main direction (the vertex order), and observation lines count first crossings in the
-// main direction only. Mostly a profile listed from the toe end (model-2d.md §1: from the
-// source end). The ground is the line under the source (or over it, when inside the rock).
-std::vector<std::size_t> sources_against_main_direction(const Scenario& s);
-
 // Which source, block and throw a global trajectory index stands for: source-major, then block,
 // then throw.
 struct TrajectoryKey {

@@ -28,7 +28,7 @@ class TrajectoryModel {
   struct SourceStart {
     enum class Kind { flight, ground, outside } kind;
     double z;     // ground: the elevation the block is placed at
-    int segment;  // ground: the segment it is placed on
+    int segment;  // ground: the segment it is placed on; flight: the ground below; outside: -1
   };
   const SourceStart& source_start(std::size_t source) const { return starts_[source]; }
 
@@ -40,6 +40,13 @@ class TrajectoryModel {
   std::vector<model::BlockConstants> blocks_;
   std::vector<SourceStart> starts_;
 };
+
+// The sources whose ground falls towards the profile's first vertex: their blocks travel against
+// the main direction (the vertex order), and observation lines count first crossings in the
+// main direction only. Mostly a profile listed from the toe end (model-2d.md §1: from the
+// source end). The ground is the segment TrajectoryModel starts the source's blocks on (or
+// above).
+std::vector<std::size_t> sources_against_main_direction(const Scenario& s);
 
 // Runs trajectory `index` of the scenario. Crossings go to the tally (which appends to its
 // output), impact records to `impacts` when it is not null, and the path of the block centre
