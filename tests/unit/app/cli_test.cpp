@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_fixture.hpp"
@@ -36,6 +37,22 @@ std::size_t count_lines(const std::string& s) {
 }
 
 std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+// A scenario of one block (seed 1) from one source, with the parts the tests vary: the
+// [profile] table's body, the material's name and body, the block's mass and the source's body.
+struct OneBlock {
+  std::string name;
+  int throws;
+  std::string profile, material, material_body;
+  double mass;
+  std::string source;
+};
+std::string one_block_scenario(const OneBlock& b) {
+  return fmt::format(
+      "[scenario]\nname = \"{}\"\n[simulation]\nseed = 1\nthrows = {}\n[profile]\n{}\n"
+      "[materials.{}]\n{}\n[blocks]\n[[blocks.table]]\nmass = {:.1f}\n[[sources]]\n{}\n",
+      b.name, b.throws, b.profile, b.material, b.material_body, b.mass, b.source);
+}
 
 TEST_F(Cli, RunWritesTheResults) {
   const fs::path out = dir_ / "out";
@@ -148,11 +165,9 @@ TEST_F(Cli, ValidatePrintsASummary) {
 // no line would count them. validate and run say so; --quiet keeps run silent.
 TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   std::ofstream(dir_ / "p.csv") << "x,z,material\n0,38,t\n100,40,t\n150,70,t\n200,100,\n";
-  std::ofstream(dir_ / "s.toml")
-      << "[scenario]\nname = \"from the toe\"\n[simulation]\nseed = 1\nthrows = 2\n"
-         "[profile]\nfile = \"p.csv\"\n[materials.t]\npreset = \"talus\"\n[blocks]\n"
-         "[[blocks.table]]\nid = \"a\"\nmass = 1000.0\n[[sources]]\nname = \"crest\"\n"
-         "x = 199.0\nz = 101.0\n";
+  std::ofstream(dir_ / "s.toml") << one_block_scenario(
+      {"from the toe", 2, "file = \"p.csv\"", "t", "preset = \"talus\"", 1000,
+       "name = \"crest\"\nx = 199.0\nz = 101.0"});
   const std::string note = "the ground under source \"crest\" (x = 199 m) falls towards";
   const Result v = pierre("validate " + q(dir_ / "s.toml"));
   EXPECT_EQ(v.code, 0) << v.err;
@@ -271,9 +286,6 @@ TEST_F(Cli, ThreadCountDoesNotChangeResults) {
   EXPECT_EQ(j1, j2);
 }
 
-}  // namespace
-
-namespace {
 
 // A block on a smooth slope reaches the maximum sliding speed (5 m/s) and is launched, but a
 // roughness of 1e-9 tilts the plane too little to lift it: it slides on at the same instant
@@ -286,25 +298,12 @@ namespace {
 // exit 3 after the simulation.
 TEST_F(Cli, BlocksCutOffByTheImpactLimitAreReportedAndDrawn) {
   const fs::path scenario = dir_ / "smooth.toml";
-  std::ofstream(scenario) << R"([scenario]
-name = "smooth slope"
-[simulation]
-seed = 1
-throws = 20
-[profile]
-points = [[0.0, 100.0, "smooth"], [100.0, 40.0, "smooth"], [200.0, 30.0, ""]]
-[materials.smooth]
-normal_energy = 15.0
-tangential_energy = 50.0
-roughness = 1e-9
-friction_angle = 30.0
-[blocks]
-[[blocks.table]]
-mass = 1500.0
-[[sources]]
-x = 1.0
-z = 99.4
-)";
+  std::ofstream(scenario) << one_block_scenario(
+      {"smooth slope", 20,
+       R"(points = [[0.0, 100.0, "smooth"], [100.0, 40.0, "smooth"], [200.0, 30.0, ""]])",
+       "smooth",
+       "normal_energy = 15.0\ntangential_energy = 50.0\nroughness = 1e-9\nfriction_angle = 30.0",
+       1500, "x = 1.0\nz = 99.4"});
   const fs::path out = dir_ / "out";
   const Result r = pierre("run " + q(scenario) + " --out " + q(out));
   ASSERT_EQ(r.code, 0) << r.err;
@@ -331,9 +330,6 @@ z = 99.4
       << one.out;
 }
 
-}  // namespace
-
-namespace {
 
 // rules/ and templates/ are found the same way: a binary copied out of the build tree finds
 // both (before, it found the rules through the source path compiled in and not the template,
@@ -372,32 +368,15 @@ TEST_F(Cli, RulesAndTemplatesAreFoundTheSameWayAndCheckedFirst) {
       << slurp(err);
 }
 
-}  // namespace
-
-namespace {
 
 // Blocks that run off a profile too short for them: their runouts (where they left it) bias the
 // percentiles low, and the summary says so with the count from the stop reasons.
 TEST_F(Cli, BlocksLeavingTheProfileAreNoted) {
   const fs::path scenario = dir_ / "short.toml";
-  std::ofstream(scenario) << R"([scenario]
-name = "short slope"
-[simulation]
-seed = 1
-throws = 20
-[profile]
-points = [[0.0, 100.0, "t"], [60.0, 60.0, ""]]
-[materials.t]
-normal_energy = 15.0
-tangential_energy = 50.0
-roughness = 0.65
-[blocks]
-[[blocks.table]]
-mass = 1000.0
-[[sources]]
-x = 1.0
-z = 101.0
-)";
+  std::ofstream(scenario) << one_block_scenario(
+      {"short slope", 20, R"(points = [[0.0, 100.0, "t"], [60.0, 60.0, ""]])", "t",
+       "normal_energy = 15.0\ntangential_energy = 50.0\nroughness = 0.65", 1000,
+       "x = 1.0\nz = 101.0"});
   const Result r = pierre("run " + q(scenario) + " --out " + q(dir_ / "out"));
   ASSERT_EQ(r.code, 0) << r.err;
   const int left = summary(dir_ / "out")["stop_reasons"]["boundary"].get<int>();

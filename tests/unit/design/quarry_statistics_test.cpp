@@ -43,6 +43,13 @@ std::vector<double> one_to(int n) {
   return v;
 }
 
+// 1, 2, … n metres, then `out` blocks that left the profile (+inf).
+std::vector<double> one_to_and_out(int n, int out) {
+  auto v = one_to(n);
+  v.insert(v.end(), static_cast<std::size_t>(out), kInf);
+  return v;
+}
+
 TEST(QuarryStatistics, PercentilesInMetresAndPerH) {
   DistanceSample s;
   const auto v = one_to(100);
@@ -62,8 +69,7 @@ TEST(QuarryStatistics, PercentilesInMetresAndPerH) {
 
 TEST(QuarryStatistics, BeyondTheProfile) {
   // 6 of 100 left the profile: more than 5 %, so P95 is beyond it; P50 is not.
-  auto v = one_to(94);
-  for (int i = 0; i < 6; ++i) v.push_back(kInf);
+  const auto v = one_to_and_out(94, 6);
   DistanceSample s;
   s.add(v, 20, 120);
   const auto st = distance_statistics(s);
@@ -74,8 +80,7 @@ TEST(QuarryStatistics, BeyondTheProfile) {
   ASSERT_EQ(s.censored_at.size(), 6u);
   EXPECT_DOUBLE_EQ(s.censored_at[0], 6.0);
   // 4 of 100: P95 is finite.
-  auto w = one_to(96);
-  for (int i = 0; i < 4; ++i) w.push_back(kInf);
+  const auto w = one_to_and_out(96, 4);
   DistanceSample t;
   t.add(w, 20, 120);
   EXPECT_TRUE(std::isfinite(distance_statistics(t).p95));
@@ -88,8 +93,7 @@ TEST(QuarryStatistics, BeyondTheProfile) {
 // profile, and every work area FAILed.) One more block out and it is beyond; the maximum is
 // beyond with a single block out.
 TEST(QuarryStatistics, ExactlyOneMinusPLeftIsNotBeyondTheProfile) {
-  auto v = one_to(95);
-  for (int i = 0; i < 5; ++i) v.push_back(kInf);
+  const auto v = one_to_and_out(95, 5);
   DistanceSample s;
   s.add(v, 20, 120);
   const auto st = distance_statistics(s);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "test_files.hpp"
 
@@ -361,25 +362,23 @@ TEST(QuarryRules, Errors) {
     ADD_FAILURE() << "no error";
     return InputError("", 0, "", "", "");
   };
-  std::string bad_use = kCustom;
-  bad_use.replace(bad_use.find("\"maximum\""), 9, "\"median\"");
-  const auto a = err(bad_use);
+  // kCustom with its first `from` made `to`.
+  auto edited = [](const std::string& from, const std::string& to) {
+    std::string t = kCustom;
+    const auto at = t.find(from);
+    if (at == std::string::npos) throw std::logic_error("kCustom has no " + from);
+    return t.replace(at, from.size(), to);
+  };
+  const auto a = err(edited("\"maximum\"", "\"median\""));
   EXPECT_EQ(a.line(), 7);
   EXPECT_EQ(a.field(), "governing.use[1]");
   EXPECT_EQ(a.found(), "\"median\"");
-  std::string no_pct = kCustom;
-  no_pct.replace(no_pct.find("percentile = 98.0"), 17, "");
-  EXPECT_EQ(err(no_pct).field(), "governing.percentile");
-  std::string angle = kCustom;
-  angle.replace(angle.find("10.0"), 4, "95.0");
-  EXPECT_EQ(err(angle).field(), "toe.floor_angle");
+  EXPECT_EQ(err(edited("percentile = 98.0", "")).field(), "governing.percentile");
+  EXPECT_EQ(err(edited("10.0", "95.0")).field(), "toe.floor_angle");
   // design-checks.md §1 step 8: at least 1000 resamples and a 90 % interval; more, not fewer.
-  std::string few = kCustom;
-  few.replace(few.find("resamples = 2000"), 16, "resamples = 999");
-  EXPECT_EQ(err(few).field(), "sample.resamples");
-  std::string loose = kCustom;
-  loose.replace(loose.find("min_reached = 50"), 16, "min_reached = 50\nconfidence = 0.5");
-  EXPECT_EQ(err(loose).field(), "sample.confidence");
+  EXPECT_EQ(err(edited("resamples = 2000", "resamples = 999")).field(), "sample.resamples");
+  EXPECT_EQ(err(edited("min_reached = 50", "min_reached = 50\nconfidence = 0.5")).field(),
+            "sample.confidence");
   // [toe], [retention] and [ritchie] left out: the spec's defaults (15°, 90 %, 0.2·H + 4.5 m).
   std::string bare = kCustom;
   for (const char* t : {"[toe]\nfloor_angle = 10.0\n", "[retention]\ntarget = 0.95\n",
