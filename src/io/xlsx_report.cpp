@@ -269,6 +269,12 @@ class Report {
   // as many metres as its pixels hold. The plot area is taken as its usual share of the chart.
   void equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin, double zmax,
                    double x_scale, double y_scale);
+  // The drawing data of the quarry section of that name (nullptr when none was passed).
+  const ReportData::QuarrySectionView* section_view(const std::string& name) const {
+    for (const auto& v : d_.quarry_sections)
+      if (v.name == name) return &v;
+    return nullptr;
+  }
   // A label per point of a series, by name; an empty name hides that point's label.
   void point_labels(lxw_chart_series* s, const std::vector<std::string>& names);
   // Writes the drawn points of `paths` in columns 2 (x) and 3 (z) from row r0, an empty row
@@ -1699,8 +1705,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
            45);
   for (const auto* s : secs) {
     const auto& g = s->geometry;
-    for (const auto& v : d_.quarry_sections)
-      if (v.name == s->spec.name) count(ws, r, 12, v.seed);
+    if (const auto* v = section_view(s->spec.name)) count(ws, r, 12, v->seed);
     text(ws, r, 0, s->spec.name, wrap());
     num(ws, r, 1, g.crest.x, xf);
     num(ws, r, 2, g.crest.z, xf);
@@ -2081,9 +2086,7 @@ Row Report::quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, 
 
 Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row,
                                  Cell at, const design::QuarrySectionResult& s) {
-  const ReportData::QuarrySectionView* view = nullptr;
-  for (const auto& v : d_.quarry_sections)
-    if (v.name == s.spec.name) view = &v;
+  const ReportData::QuarrySectionView* view = section_view(s.spec.name);
   if (!view || !view->profile || view->profile->vertices().empty()) return data_row;
   const geometry::Profile& prof = *view->profile;
   const auto& g = s.geometry;
