@@ -41,15 +41,16 @@ struct Replicates {
   std::optional<stats::WeibullQuantileReplicates> weibull;  // the Weibull bootstrap's details
 };
 stats::Outcome<Replicates> characteristic_replicates(std::span<const double> sample, double p,
-                                                     Governing g, std::uint64_t seed) {
+                                                     Governing g, std::size_t resamples,
+                                                     std::uint64_t seed) {
   using Out = stats::Outcome<Replicates>;
   if (g == Governing::empirical) {
-    auto r = stats::bootstrap_percentile_replicates(sample, p, seed, kBarrierBootstrapResamples);
+    auto r = stats::bootstrap_percentile_replicates(sample, p, seed, resamples);
     if (!r) return Out::failure(r.error);
     return Out::success(Replicates{std::move(*r.value), std::nullopt});
   }
   stats::WeibullBootstrapOptions o;
-  o.resamples = kBarrierBootstrapResamples;
+  o.resamples = resamples;
   o.empirical = g == Governing::larger;
   auto r = stats::bootstrap_weibull_quantile_replicates(sample, p, seed, o);
   if (!r) return Out::failure(r.error);
@@ -76,10 +77,11 @@ std::string binned_note(const char* what, const stats::WeibullQuantileReplicates
          "error is far below the interval's Monte Carlo error";
 }
 
-// The 90 % percentile interval of f(replicate), with f(estimate) as its estimate.
+// The percentile interval of f(replicate) at `confidence` (e.g. 90 %: the 5th to the 95th
+// percentile), with f(estimate) as its estimate.
 template <class F>
 std::optional<stats::BootstrapInterval> interval(const std::vector<double>& replicates,
-                                                 double estimate, F f) {
+                                                 double confidence, double estimate, F f) {
   std::vector<double> r;
   r.reserve(replicates.size());
   for (double x : replicates) {
@@ -87,10 +89,11 @@ std::optional<stats::BootstrapInterval> interval(const std::vector<double>& repl
     r.push_back(f(x));
   }
   stats::BootstrapInterval ci;
-  ci.confidence = 0.90;
+  ci.confidence = confidence;
   ci.resamples = r.size();
   ci.estimate = f(estimate);
-  const double ps[] = {5.0, 95.0};
+  const double c = 100.0 * confidence;  // 90 exactly for 0.9, so the ends are 5 and 95 exactly
+  const double ps[] = {0.5 * (100.0 - c), 0.5 * (100.0 + c)};
   const auto q = stats::percentiles(r, ps);
   ci.lower = q[0];
   ci.upper = q[1];
@@ -291,16 +294,18 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   using Reps = stats::Outcome<Replicates>;
   auto replicates = [&](const QuantityFit& fit, std::span<const double> values, std::uint64_t s) {
     return fit.point_mass ? Reps::failure("a point mass")
-                          : characteristic_replicates(values, rules.percentile, rules.governing, s);
+                          : characteristic_replicates(values, rules.percentile, rules.governing,
+                                                      rules.sample_resamples, s);
   };
   const auto rv = replicates(d.speed, sample.speed, splitmix64(seed ^ 1));
   const auto rh = replicates(d.height, sample.height, splitmix64(seed ^ 2));
   const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
+  const double conf = rules.sample_confidence;
   // A point mass resamples to itself: its interval has no width (no refit can show that).
-  auto point_interval = [](double v) {
+  auto point_interval = [&rules](double v) {
     stats::BootstrapInterval ci;
-    ci.confidence = 0.90;
-    ci.resamples = kBarrierBootstrapResamples;
+    ci.confidence = rules.sample_confidence;
+    ci.resamples = rules.sample_resamples;
     ci.estimate = ci.lower = ci.upper = v;
     return ci;
   };
@@ -308,8 +313,8 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
     d.v_k.interval = point_interval(d.v_k.value);
     d.E_d_interval = point_interval(d.E_d_kJ);
   } else if (rv) {
-    d.v_k.interval = interval(rv->values, d.v_k.value, [](double v) { return v; });
-    d.E_d_interval = interval(rv->values, d.v_k.value,
+    d.v_k.interval = interval(rv->values, conf, d.v_k.value, [](double v) { return v; });
+    d.E_d_interval = interval(rv->values, conf, d.v_k.value,
                               [gF, md](double v) { return 0.5 * md * (v * gF) * (v * gF) / 1000.0; });
     if (rv->weibull && rv->weibull->method == stats::WeibullBootstrapMethod::binned)
       d.notes.push_back(binned_note("v_k", *rv->weibull));
@@ -318,8 +323,8 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
     d.h_k.interval = point_interval(d.h_k.value);
     d.h_i_interval = point_interval(d.h_i);
   } else if (rh) {
-    d.h_k.interval = interval(rh->values, d.h_k.value, [](double h) { return h; });
-    d.h_i_interval = interval(rh->values, d.h_k.value, [gh, f](double h) { return h * gh + f; });
+    d.h_k.interval = interval(rh->values, conf, d.h_k.value, [](double h) { return h; });
+    d.h_i_interval = interval(rh->values, conf, d.h_k.value, [gh, f](double h) { return h * gh + f; });
     if (rh->weibull && rh->weibull->method == stats::WeibullBootstrapMethod::binned)
       d.notes.push_back(binned_note("h_k", *rh->weibull));
   }

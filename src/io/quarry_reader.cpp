@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "bootstrap_fields.hpp"
 #include "csv_table.hpp"
 #include "rule_kind.hpp"
 #include "section_readers.hpp"
@@ -110,16 +111,8 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
     s->check("percentile", r.sample_percentile > 0 && r.sample_percentile <= 100, pct);
     r.sample_tolerance = s->number("tolerance", r.sample_tolerance);
     s->check("tolerance", r.sample_tolerance > 0, "a relative tolerance > 0");
-    // design-checks.md §1 step 8: a 90 % interval from at least 1000 resamples; a rule set may
-    // ask for more, not for less.
-    r.sample_confidence = s->number("confidence", r.sample_confidence);
-    s->check("confidence", r.sample_confidence >= 0.9 && r.sample_confidence < 1,
-             "a confidence from 0.9 to below 1 (design-checks.md §1 step 8: a 90 % interval)");
-    if (auto n = s->integer("resamples")) {
-      s->check("resamples", *n >= 1000 && *n <= 1'000'000,
-               "an integer from 1000 to 1000000 (design-checks.md §1 step 8: at least 1000)");
-      r.sample_resamples = static_cast<std::size_t>(*n);
-    }
+    detail::read_bootstrap_size(*s, "confidence", "resamples", r.sample_confidence,
+                                r.sample_resamples);
   }
   if (const auto f = top.subtable("fit", {"p_value", "source"})) {
     r.fit_p_value = f->number("p_value", r.fit_p_value);

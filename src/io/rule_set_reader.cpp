@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "bootstrap_fields.hpp"
 #include "section_readers.hpp"
 #include "toml_fields.hpp"
 
@@ -143,7 +144,8 @@ design::BarrierRuleSet load_rule_set_file(const fs::path& file) {
   const TomlTable h =
       header(top, "barrier",
              {"kind", "name", "title", "source", "percentile", "governing", "design_on", "classes",
-              "sample_tolerance", "fit_p_value", "min_crossings"});
+              "sample_tolerance", "sample_confidence", "sample_resamples", "fit_p_value",
+              "min_crossings"});
   design::BarrierRuleSet r;
   r.name = h.string("name").value_or(file.stem().string());
   h.check("name", !r.name.empty(), "a non-empty name");
@@ -166,6 +168,8 @@ design::BarrierRuleSet load_rule_set_file(const fs::path& file) {
   r.sample_tolerance = h.number("sample_tolerance", r.sample_tolerance);
   h.check("sample_tolerance", r.sample_tolerance > 0 && r.sample_tolerance < 1,
           "a relative half-width in (0, 1)");
+  detail::read_bootstrap_size(h, "sample_confidence", "sample_resamples", r.sample_confidence,
+                              r.sample_resamples);
   r.fit_p_value = h.number("fit_p_value", r.fit_p_value);
   h.check("fit_p_value", r.fit_p_value > 0 && r.fit_p_value < 1, "a p-value in (0, 1)");
   r.min_crossings = h.number("min_crossings", r.min_crossings);

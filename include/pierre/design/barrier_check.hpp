@@ -187,9 +187,6 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
 // design_barrier the speed and the height resamples use splitmix64 of that seed ^ 1 and ^ 2.
 std::uint64_t barrier_bootstrap_seed(std::uint64_t scenario_seed, std::size_t index);
 
-// The minimum number of bootstrap resamples (design-checks.md §1 step 8).
-inline constexpr std::size_t kBarrierBootstrapResamples = 1000;
-
 // Runs the procedure (steps 1–8). `seed` keys the bootstrap's own stream
 // (barrier_bootstrap_seed). Fails (with the reason) only
 // when the data cannot give a design at all, e.g. no crossing at the line.

@@ -74,6 +74,10 @@ struct BarrierRuleSet {
   double free_board_rel = 0;  // × D_f
   std::optional<double> gamma_d_MEL, gamma_d_SEL;  // elongation factors (absent: not applicable)
   double sample_tolerance = 0.05;  // CI half-width / value above which sample.size WARNs
+  // The bootstrap of step 8 (design-checks.md §1): a 90 % interval from 1000 resamples at
+  // least; a rule set may ask for more, not for less.
+  double sample_confidence = 0.90;
+  std::size_t sample_resamples = 1000;
   double fit_p_value = 0.05;       // KS p-value below which fit.* WARNs
   double min_crossings = 30;       // crossings below which reach WARNs
   std::string classes = "etag027-classes";  // energy class table (rules/<name>.toml)

@@ -316,7 +316,7 @@ TEST(BarrierProcedure, BootstrapIsDeterministicPerSeedAndCoversTheEstimate) {
   const auto c = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 43);
   ASSERT_TRUE(a.design && b.design && c.design);
   const auto& ia = *a.design->v_k.interval;
-  EXPECT_EQ(ia.resamples, design::kBarrierBootstrapResamples);
+  EXPECT_EQ(ia.resamples, 1000u);  // design-checks.md §1 step 8, the rule set's default
   EXPECT_DOUBLE_EQ(ia.confidence, 0.90);
   EXPECT_EQ(ia.lower, b.design->v_k.interval->lower);
   EXPECT_EQ(ia.upper, b.design->v_k.interval->upper);
@@ -337,14 +337,18 @@ TEST(BarrierProcedure, BootstrapIsDeterministicPerSeedAndCoversTheEstimate) {
   EXPECT_NE(design::barrier_bootstrap_seed(5, 0), design::barrier_bootstrap_seed(6, 0));
 }
 
-// Step 8's 90 % interval of v_k: the type-7 P5 and P95 of the Weibull P95 of 1000 resamples,
-// drawn from splitmix64(seed ^ 1) as barrier_check.hpp documents. Rebuilt here from the stats
-// layer: a 95 % interval, or another stream, would not match.
-TEST(BarrierProcedure, TheVkIntervalIsThe90PercentIntervalOfItsReplicates) {
+// Step 8's interval of v_k: the type-7 percentiles (5 and 95 for the default 90 %) of the
+// Weibull P95 of the rule set's number of resamples (1000 by default), drawn from
+// splitmix64(seed ^ 1) as barrier_check.hpp documents. Rebuilt here from the stats layer:
+// another confidence, count of resamples or stream would not match.
+void expect_vk_interval_of_replicates(double confidence, std::size_t resamples, double p_lo,
+                                      double p_hi, const std::string& named) {
   const auto s = sample(400);
   const std::uint64_t seed = 42;
-  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s,
-                                          std::nullopt, 0, seed);
+  auto rules = test::thesis_2015();
+  rules.sample_confidence = confidence;
+  rules.sample_resamples = resamples;
+  const auto out = design::design_barrier(spec(), rules, test::etag027(), s, std::nullopt, 0, seed);
   ASSERT_TRUE(out.design && out.design->v_k.interval);
   std::uint64_t x = seed ^ 1;  // splitmix64 (Steele, Lea & Flood 2014)
   x += 0x9e3779b97f4a7c15ULL;
@@ -352,15 +356,31 @@ TEST(BarrierProcedure, TheVkIntervalIsThe90PercentIntervalOfItsReplicates) {
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
   x ^= x >> 31;
   stats::WeibullBootstrapOptions o;
-  o.resamples = design::kBarrierBootstrapResamples;
+  o.resamples = resamples;
   o.empirical = false;
   const auto r = stats::bootstrap_weibull_quantile_replicates(s.speed, 95, x, o);
   ASSERT_TRUE(r) << r.error;
-  const double ps[] = {5.0, 95.0};
+  const double ps[] = {p_lo, p_hi};
   const auto q = stats::percentiles(r.value->weibull, ps);
   EXPECT_EQ(out.design->v_k.interval->lower, q[0]);
   EXPECT_EQ(out.design->v_k.interval->upper, q[1]);
-  EXPECT_EQ(out.design->v_k.interval->confidence, 0.90);
+  EXPECT_EQ(out.design->v_k.interval->confidence, confidence);
+  EXPECT_EQ(out.design->v_k.interval->resamples, resamples);
+  EXPECT_EQ(out.design->h_i_interval->resamples, resamples);
+  // sample.size names the interval it judges.
+  const auto l = std::find_if(out.design->checks.begin(), out.design->checks.end(),
+                              [](const design::CheckLine& c) { return c.id == "sample.size"; });
+  ASSERT_NE(l, out.design->checks.end());
+  EXPECT_NE(l->what.find(named), std::string::npos)
+      << l->what;
+}
+
+TEST(BarrierProcedure, TheVkIntervalIsThe90PercentIntervalOfItsReplicates) {
+  expect_vk_interval_of_replicates(0.90, 1000, 5.0, 95.0, "the 90 % bootstrap interval");
+}
+
+TEST(BarrierProcedure, ARuleSetMayAskForAWiderIntervalFromMoreResamples) {
+  expect_vk_interval_of_replicates(0.95, 2000, 2.5, 97.5, "the 95 % bootstrap interval");
 }
 
 TEST(BarrierProcedure, SmallSampleWarnsOnSampleSizeAndReach) {
@@ -391,7 +411,7 @@ TEST(BarrierProcedure, LargeSampleBootstrapsOnBinsDeterministicallyAndSaysSo) {
     ASSERT_TRUE(a.design && b.design && c.design) << a.error;
     const auto& d = *a.design;
     ASSERT_TRUE(d.v_k.interval && d.h_k.interval && d.E_d_interval && d.h_i_interval) << rules.name;
-    EXPECT_EQ(d.v_k.interval->resamples, design::kBarrierBootstrapResamples);
+    EXPECT_EQ(d.v_k.interval->resamples, rules.sample_resamples);
     EXPECT_EQ(d.v_k.interval->lower, b.design->v_k.interval->lower);
     EXPECT_EQ(d.v_k.interval->upper, b.design->v_k.interval->upper);
     EXPECT_EQ(d.h_i_interval->lower, b.design->h_i_interval->lower);

@@ -207,6 +207,20 @@ data_quality = { consequence = "CC2" }
   EXPECT_DOUBLE_EQ(d->h_i, 2 * 1.25 + 1.0);
 }
 
+// design-checks.md §1 step 8 asks for a 90 % interval from at least 1000 resamples: the
+// default, and a rule set may ask for a wider interval from more.
+TEST(TemporaryRuleSet, BootstrapSizeDefaultsToTheSpecAndMayBeRaised) {
+  TempDir dir;
+  const auto plain = io::load_rule_set(dir.write("a.toml", kOnrLike).string(), kRules);
+  EXPECT_EQ(plain.sample_confidence, 0.90);
+  EXPECT_EQ(plain.sample_resamples, 1000u);
+  std::string text = kOnrLike;
+  text.replace(text.find("design_on"), 0, "sample_confidence = 0.95\nsample_resamples = 5000\n");
+  const auto raised = io::load_rule_set(dir.write("b.toml", text).string(), kRules);
+  EXPECT_EQ(raised.sample_confidence, 0.95);
+  EXPECT_EQ(raised.sample_resamples, 5000u);
+}
+
 TEST(TemporaryRuleSet, UsedByNameFromAnotherRulesFolder) {
   TempDir rules, dir;
   rules.write("my-code.toml", kOnrLike);
@@ -283,6 +297,8 @@ INSTANTIATE_TEST_SUITE_P(
         RuleCase{"governing", "governing = \"empirical\"", "governing = \"median\"", 6, "rule_set.governing", "\"median\""},
         RuleCase{"design_on", "design_on = \"SEL\"", "design_on = \"sel\"", 7, "rule_set.design_on", "\"sel\""},
         RuleCase{"percentile", "percentile = 98.0", "percentile = 100.0", 5, "rule_set.percentile", "100"},
+        RuleCase{"confidence", "design_on = \"SEL\"", "design_on = \"SEL\"\nsample_confidence = 0.5", 8, "rule_set.sample_confidence", "0.5"},
+        RuleCase{"resamples", "design_on = \"SEL\"", "design_on = \"SEL\"\nsample_resamples = 999", 8, "rule_set.sample_resamples", "999"},
         RuleCase{"unknown_part", "gamma_F = [\"gamma_cc\"]", "gamma_F = [\"gamma_xx\"]", 10, "factors.gamma_F", "\"gamma_xx\""},
         RuleCase{"factor_type", "gamma_h = 1.25", "gamma_h = \"1.25\"", 12, "factors.gamma_h", "\"1.25\""},
         RuleCase{"factor_zero", "gamma_E_SEL = 2.0", "gamma_E_SEL = 0.0", 14, "factors.gamma_E_SEL", "0.0"},
