@@ -1,5 +1,6 @@
 #include "data_folders.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <system_error>
@@ -57,7 +58,7 @@ fs::path rules_folder(const std::string& option) {
   return find("rules", "PIERRE_RULES", "materials.toml").path;
 }
 
-io::ReportTemplate load_report_layout() {
+io::ReportTemplate load_report_layout(std::FILE* notes) {
   const DataFolder f = find("templates", "PIERRE_TEMPLATES", "report.toml");
   const fs::path file = f.path / "report.toml";
   std::error_code ec;
@@ -69,7 +70,21 @@ io::ReportTemplate load_report_layout() {
                                      "in {} (set PIERRE_TEMPLATES to the folder that holds it)",
                                      places));
   }
-  return io::load_report_template(file);
+  io::ReportTemplate layout = io::load_report_template(file);
+  if (notes && !layout.built_in_keys.empty()) {
+    const auto& keys = layout.built_in_keys;
+    constexpr std::size_t kShown = 6;
+    std::string names;
+    for (std::size_t i = 0; i < std::min(keys.size(), kShown); ++i)
+      names += (i ? ", " : "") + keys[i];
+    if (keys.size() > kShown) names += fmt::format(" and {} more", keys.size() - kShown);
+    fmt::print(notes,
+               "Note: the report layout {} leaves out {} key{} ({}): the layout built into pierre "
+               "gives {}.\n",
+               file.string(), keys.size(), keys.size() == 1 ? "" : "s", names,
+               keys.size() == 1 ? "it" : "them");
+  }
+  return layout;
 }
 
 }  // namespace pierre::app

@@ -3,6 +3,7 @@
 // a binary that finds one finds the other.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -18,6 +19,8 @@ std::filesystem::path rules_folder(const std::string& option);
 // The report layout, templates/report.toml, with templates/ looked for the same way
 // ($PIERRE_TEMPLATES, then the same places). Read before anything is simulated, so that a
 // missing or broken one costs nothing: an io::InputError (exit 2) names the places searched.
-io::ReportTemplate load_report_layout();
+// A layout that leaves keys out (a firm's copy older than this version) is completed from the
+// built-in one; a note on `notes` (when not null) names the keys.
+io::ReportTemplate load_report_layout(std::FILE* notes);
 
 }  // namespace pierre::app

@@ -27,7 +27,7 @@ class ValidateCommand final : public Command {
 
   int run() override {
     const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
-    load_report_layout();  // `run` needs it too: a missing or broken one is said now
+    load_report_layout(stdout);  // `run` needs it too: a missing or broken one is said now
     (void)report_date();   // and the date SOURCE_DATE_EPOCH gives it
     if (!l.quarries.empty()) return print_quarries(l);
     const sim::Scenario& s = l.scenario;

@@ -11,6 +11,9 @@
 #include "toml_fields.hpp"
 
 namespace pierre::io {
+namespace detail {
+extern const char kShippedReportTemplate[];  // templates/report.toml, built in (CMakeLists.txt)
+}
 namespace {
 
 namespace fs = std::filesystem;
@@ -217,6 +220,23 @@ void check_sheet_name(const TomlTable& t, std::string_view key, const std::strin
           "or a point: charts and print areas would point at the cell, not the sheet");
 }
 
+// Copies into `t` every key of `base` that `t` lacks, recursing into tables both hold, and
+// lists the dotted names of the copies in `filled`. A key `t` holds is kept as it is, whatever
+// its type: the strict reading after this judges it, at its own line.
+void fill_missing(toml::table& t, const toml::table& base, const std::string& prefix,
+                  std::vector<std::string>& filled) {
+  for (auto&& [k, v] : base) {
+    const std::string name = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    toml::node* mine = t.get(k.str());
+    if (!mine) {
+      t.insert(k, v);
+      filled.push_back(name);
+    } else if (mine->is_table() && v.is_table()) {
+      fill_missing(*mine->as_table(), *v.as_table(), name, filled);
+    }
+  }
+}
+
 }  // namespace
 
 const std::map<std::string, std::vector<std::string>, std::less<>>& report_template_sections() {
@@ -269,15 +289,26 @@ std::uint32_t ReportTemplate::colour(std::string_view key) const {
   return c->second;
 }
 
+const std::string& shipped_report_template_text() {
+  static const std::string text = detail::kShippedReportTemplate;
+  return text;
+}
+
 ReportTemplate load_report_template(const std::filesystem::path& file) {
   const std::string text = detail::read_text(file, "report template (templates/report.toml)");
-  const toml::table root = detail::parse_toml(file, text);
+  toml::table root = detail::parse_toml(file, text);
+  // A firm's own copy made before keys were added is completed from the layout this binary was
+  // built with; what it holds is read strictly (unknown keys, types, ranges) as before.
+  std::vector<std::string> filled;
+  fill_missing(root, detail::parse_toml("templates/report.toml (built in)", shipped_report_template_text()),
+               "", filled);
   const TomlTable top(file, root, "", 0,
                       {"sheets", "rows", "page", "charts", "colours", "formats", "titles",
                        "labels", "headings", "chart"});
 
   ReportTemplate tpl;
   tpl.file = file;
+  tpl.built_in_keys = std::move(filled);
   const auto& sections = report_template_sections();
 
   // [sheets]: the names (strings) and the order (an array).

@@ -3,9 +3,12 @@
 // titles and axis labels, colours of PASS / FAIL / WARN, page set-up and the row caps of the
 // data sheets. Data, so that a firm restyles its report without recompiling.
 //
-// Every key the writer uses is required and every unknown key is an error: load_report_template
-// throws InputError (file, line of the table or the value, the dotted field, what was found and
-// what was expected).
+// Every key the writer uses must have a value and every unknown key is an error:
+// load_report_template throws InputError (file, line of the table or the value, the dotted
+// field, what was found and what was expected). A key the file leaves out takes the value of
+// the layout built into the program (templates/report.toml as it was at build time), so that a
+// firm's restyled copy keeps working when a later version adds keys; those keys are listed in
+// ReportTemplate::built_in_keys for the program to say so.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +25,8 @@ namespace pierre::io {
 
 struct ReportTemplate {
   std::filesystem::path file;  // where it was read from
+  // The dotted keys (or whole tables) the file left out, taken from the built-in layout.
+  std::vector<std::string> built_in_keys;
 
   // Text by section and key: "sheets", "titles", "labels", "formats", "headings.<table>",
   // "chart.<chart>" (keys title, x_axis, y_axis). Every key of report_template_sections().
@@ -63,5 +68,8 @@ const std::vector<std::string>& report_template_colours();
 bool sheet_name_reads_as_reference(std::string_view name);
 
 ReportTemplate load_report_template(const std::filesystem::path& file);
+
+// The text of templates/report.toml as this program was built with it.
+const std::string& shipped_report_template_text();
 
 }  // namespace pierre::io

@@ -369,6 +369,30 @@ TEST_F(Cli, RulesAndTemplatesAreFoundTheSameWayAndCheckedFirst) {
 }
 
 
+// A firm's restyled layout made before a key was added still works: the key comes from the
+// built-in layout, and the run says which keys it took.
+TEST_F(Cli, AnOlderRestyledLayoutIsCompletedAndNoted) {
+  std::string layout = slurp(PIERRE_SOURCE_DIR "/templates/report.toml");
+  for (const std::string key : {"verdict = ", "no_checks = "}) {
+    const auto at = layout.find("\n" + key);
+    ASSERT_NE(at, std::string::npos) << key;
+    layout.erase(at, layout.find('\n', at + 1) - at);
+  }
+  fs::create_directories(dir_ / "firm");
+  std::ofstream(dir_ / "firm" / "report.toml") << layout;
+  const std::string env = "PIERRE_TEMPLATES=" + q(dir_ / "firm") + " ";
+  const fs::path out = dir_ / "out.txt";
+  const int st = std::system((env + "'" PIERRE_BINARY "' run " + kScenario + " --throws 1 --out " +
+                              q(dir_ / "r") + " >" + q(out) + " 2>&1").c_str());
+  EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 0) << slurp(out);
+  EXPECT_NE(slurp(out).find("Note: the report layout " + (dir_ / "firm" / "report.toml").string() +
+                            " leaves out 2 keys (labels.no_checks, labels.verdict): the layout "
+                            "built into pierre gives them."),
+            std::string::npos)
+      << slurp(out);
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "r" / "report.xlsx"));
+}
+
 // Blocks that run off a profile too short for them: their runouts (where they left it) bias the
 // percentiles low, and the summary says so with the count from the stop reasons.
 TEST_F(Cli, BlocksLeavingTheProfileAreNoted) {

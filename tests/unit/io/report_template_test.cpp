@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "pierre/io/report_template.hpp"
 #include "test_files.hpp"
@@ -82,11 +84,6 @@ TEST_P(ReportTemplateError, NamesFileLineAndField) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, ReportTemplateError,
     ::testing::Values(
-        // A missing sheet name: the line of its table, the dotted field, "nothing".
-        Bad{"missing_sheet_name", "summary = \"Summary\"\n", "", 0, "[sheets]", "sheets.summary",
-            "nothing"},
-        Bad{"missing_heading", "status = \"Status\"\n", "", 0, "[headings.checks]",
-            "headings.checks.status", "nothing"},
         Bad{"unknown_key", "mel_req = \"MEL_req (kJ)\"\nh_i", "mel_req = \"MEL_req (kJ)\"\nmell = 1\nh_i",
             0, "mell = 1", "headings.design.mell", "unknown key"},
         Bad{"bad_colour", "fail_fill = \"#FFC7CE\"", "fail_fill = \"red\"", 0, "fail_fill",
@@ -104,6 +101,50 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"missing_table", "[chart.profile]", "[chart.profil]", 0, "[chart.profil]",
             "chart.profil", "unknown key"},
         Bad{"syntax", "[sheets]", "[sheets", 0, "[sheets", "TOML syntax", ""}));
+
+// The program carries the layout it was built with: the text of templates/report.toml.
+TEST(ReportTemplate, BuiltInLayoutIsTheShippedFile) {
+  EXPECT_EQ(pierre::io::shipped_report_template_text(), read_file(kTemplate));
+  EXPECT_TRUE(load_report_template(kTemplate).built_in_keys.empty());
+}
+
+// A firm's copy made before keys were added: what it leaves out (a key, a whole table) comes
+// from the built-in layout and is listed; what it holds is its own.
+TEST(ReportTemplate, KeysACopyLeavesOutComeFromTheBuiltInLayout) {
+  std::string text = shipped_with("summary = \"Summary\"\n", "");
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"status = \"Status\"\n", ""},
+           {"[chart.profile]", "[chart.profile_gone]"},
+           {"profile = \"Profile\"", "profile = \"Section\""}}) {
+    const auto p = text.find(from);
+    ASSERT_NE(p, std::string::npos) << from;
+    text.replace(p, from.size(), to);
+  }
+  // [chart.profile_gone] would be an unknown table: drop its keys with it.
+  const auto gone = text.find("[chart.profile_gone]");
+  text.erase(gone, text.find("\n[", gone + 1) - gone);
+  TempDir dir;
+  const auto t = load_report_template(dir.write("report.toml", text));
+  const auto shipped = load_report_template(kTemplate);
+  EXPECT_EQ(t.get("sheets", "summary"), shipped.get("sheets", "summary"));
+  EXPECT_EQ(t.get("headings.checks", "status"), shipped.get("headings.checks", "status"));
+  EXPECT_EQ(t.get("chart.profile", "title"), shipped.get("chart.profile", "title"));
+  EXPECT_EQ(t.get("sheets", "profile"), "Section");  // its own value kept
+  std::vector<std::string> keys = t.built_in_keys;
+  std::sort(keys.begin(), keys.end());
+  EXPECT_EQ(keys, (std::vector<std::string>{"chart.profile", "headings.checks.status",
+                                            "sheets.summary"}));
+}
+
+TEST(ReportTemplate, AnEmptyCopyIsTheBuiltInLayout) {
+  TempDir dir;
+  const auto t = load_report_template(dir.write("report.toml", "# nothing restyled yet\n"));
+  const auto shipped = load_report_template(kTemplate);
+  EXPECT_EQ(t.text, shipped.text);
+  EXPECT_EQ(t.colours, shipped.colours);
+  EXPECT_EQ(t.order, shipped.order);
+  EXPECT_EQ(t.built_in_keys.size(), 10u);  // the ten top-level tables
+}
 
 TEST(ReportTemplate, MissingFile) {
   TempDir dir;
