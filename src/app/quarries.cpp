@@ -7,7 +7,6 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -15,6 +14,7 @@
 #include "interrupt.hpp"
 #include "console.hpp"
 #include "report.hpp"
+#include "run_steps.hpp"
 #include "pierre/design/quarry_distances.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/output_folder.hpp"
@@ -211,22 +211,14 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
     sources += s.scenario.sources.size();
     chunks = std::max<std::uint64_t>(chunks, (n + opt.chunk_size - 1) / opt.chunk_size);
   }
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const auto used = static_cast<unsigned>(std::clamp<std::uint64_t>(
-      o.threads ? o.threads : hw, 1, std::max<std::uint64_t>(1, chunks)));
+  const unsigned used = threads_used(o.threads, chunks);
 
   // The output folder; a failure from here on leaves nothing behind. Ctrl-C is caught from
   // before the folder exists, so that it is always taken away again.
   const InterruptGuard interrupt;
   opt.stop = interrupt.flag();
-  std::unique_ptr<io::OutputFolder> folder;
-  try {
-    folder = std::make_unique<io::OutputFolder>(o.out);
-  } catch (const std::filesystem::filesystem_error& e) {
-    fmt::print(stderr, "error: cannot create the output folder {}: {}\n", o.out,
-               e.code().message());
-    return kExitInput;
-  }
+  const std::unique_ptr<io::OutputFolder> folder = open_output_folder(o.out);
+  if (!folder) return kExitInput;
   io::ResultFiles files(folder->staging(), o.impacts);
   design::RunSamples all(0, 1);
   std::vector<design::QuarrySectionInput> inputs;
@@ -279,17 +271,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   results.quarry = std::move(*outcome.design);
 
   const design::RunStatistics stats = design::run_statistics({}, all);
-  io::RunInfo info;
-  info.scenario_name = loaded.scenario.name;
-  info.scenario_file = loaded.file;
-  info.materials_file = loaded.materials_file;
-  info.seed = loaded.scenario.settings.seed;
-  info.throws = loaded.scenario.settings.throws;
-  info.trajectories = total;
-  info.blocks = blocks;
-  info.sources = sources;
-  info.threads = used;
-  info.all_crossings = o.all_crossings;
+  const io::RunInfo info = run_info(loaded, total, blocks, sources, used, o.all_crossings);
   io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, results);
   io::ReportData report = report_data(loaded, stats);
   report.samples = &all;

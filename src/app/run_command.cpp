@@ -11,7 +11,6 @@
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -22,6 +21,7 @@
 #include "interrupt.hpp"
 #include "quarries.hpp"
 #include "report.hpp"
+#include "run_steps.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/result_writer.hpp"
@@ -122,23 +122,14 @@ class RunCommand final : public Command {
     opt.record_impacts = impacts_;
     opt.all_crossings = all_crossings_;
     const std::uint64_t total = sc.trajectory_count();
-    const std::uint64_t chunks = (total + opt.chunk_size - 1) / opt.chunk_size;
-    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-    const auto used = static_cast<unsigned>(std::clamp<std::uint64_t>(
-        threads_ ? threads_ : hw, 1, std::max<std::uint64_t>(1, chunks)));
+    const unsigned used = threads_used(threads_, (total + opt.chunk_size - 1) / opt.chunk_size);
 
     // 2. The output folder; a failure from here on leaves nothing behind. Ctrl-C is caught from
     // before the folder exists, so that it is always taken away again.
     const InterruptGuard interrupt;
     opt.stop = interrupt.flag();
-    std::unique_ptr<io::OutputFolder> folder;
-    try {
-      folder = std::make_unique<io::OutputFolder>(out_);
-    } catch (const std::filesystem::filesystem_error& e) {
-      fmt::print(stderr, "error: cannot create the output folder {}: {}\n", out_,
-                 e.code().message());
-      return kExitInput;
-    }
+    const std::unique_ptr<io::OutputFolder> folder = open_output_folder(out_);
+    if (!folder) return kExitInput;
     io::ResultFiles files(folder->staging(), sc, impacts_);
     // The report's data sheets: as many rows as its layout shows (the CSVs hold every row).
     FirstRows first(files, layout.trajectory_rows, layout.crossing_rows);
@@ -155,17 +146,8 @@ class RunCommand final : public Command {
 
     const design::RunStatistics stats = design::run_statistics(sc.lines, files.samples());
     const io::DesignResults design_results = compute_barriers(loaded, files.samples());
-    io::RunInfo info;
-    info.scenario_name = sc.name;
-    info.scenario_file = loaded.file;
-    info.materials_file = loaded.materials_file;
-    info.seed = sc.settings.seed;
-    info.throws = sc.settings.throws;
-    info.trajectories = total;
-    info.blocks = sc.blocks.size();
-    info.sources = sc.sources.size();
-    info.threads = used;
-    info.all_crossings = all_crossings_;
+    const io::RunInfo info = run_info(loaded, total, sc.blocks.size(), sc.sources.size(), used,
+                                      all_crossings_);
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
     write_run_report(folder->staged(io::kReportXlsx), layout, loaded, stats, files.samples(),
                      design_results, std::move(first));

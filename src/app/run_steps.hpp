@@ -1,0 +1,28 @@
+// Steps `pierre run` and `pierre check` take alike for a plain and for a quarry scenario.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "pierre/io/output_folder.hpp"
+#include "pierre/io/result_writer.hpp"
+#include "pierre/io/scenario_reader.hpp"
+
+namespace pierre::app {
+
+// The worker threads a run uses: `requested` (--threads; 0: every hardware thread), at least
+// one and no more than `chunks`, the most chunks any one simulation of the run hands out.
+unsigned threads_used(unsigned requested, std::uint64_t chunks);
+
+// The output folder, staged until commit (io::OutputFolder); null, with the reason on stderr,
+// when it cannot be made.
+std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out);
+
+// summary.json's account of the run: the scenario as loaded (seed and throws after --seed and
+// --throws) and what was run.
+io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectories,
+                     std::uint64_t blocks, std::uint64_t sources, unsigned threads,
+                     bool all_crossings);
+
+}  // namespace pierre::app
