@@ -88,30 +88,24 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
   return g;
 }
 
-QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint64_t seed) {
-  QuarryOutcome result;
-  if (in.empty()) {
-    result.error = "no quarry section";
-    return result;
-  }
-  QuarryDesign d;
+namespace {
 
-  // Rows: a lone section, or the sections of one group, in the order they first appear.
+// The rows of the tables: a lone section, or the sections of one group, in the order they first
+// appear; and each section's result, its inputs copied. An error when one cannot be designed.
+std::string group_rows(const std::vector<QuarrySectionInput>& in, QuarryDesign& d) {
   std::map<std::string, std::size_t> group_row;
   for (std::size_t i = 0; i < in.size(); ++i) {
     const QuarrySectionInput& s = in[i];
     if (!(s.geometry.height > 0)) {
-      result.error = "section \"" + s.spec.name + "\" has no height H > 0";
-      return result;
+      return "section \"" + s.spec.name + "\" has no height H > 0";
     }
     std::size_t r;
     if (!s.spec.group.empty() && group_row.count(s.spec.group)) {
       r = group_row[s.spec.group];
       QuarryRow& row = d.rows[r];
       if (in[row.sections.front()].rules.name != s.rules.name) {
-        result.error = "sections of group \"" + s.spec.group + "\" use different rule sets (\"" +
-                       in[row.sections.front()].rules.name + "\", \"" + s.rules.name + "\")";
-        return result;
+        return "sections of group \"" + s.spec.group + "\" use different rule sets (\"" +
+               in[row.sections.front()].rules.name + "\", \"" + s.rules.name + "\")";
       }
       row.pooled = true;
     } else {
@@ -132,270 +126,316 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
     sr.row = r;
     d.sections.push_back(std::move(sr));
   }
+  return {};
+}
 
-  for (std::size_t r = 0; r < d.rows.size(); ++r) {
-    QuarryRow& row = d.rows[r];
-    const QuarrySectionInput& first = in[row.sections.front()];
-    const QuarryRuleSet& rules = first.rules;
-    std::vector<double> durations;
-    double h_sum = 0;
-    ObservedDistance obs_id, obs_rd;
-    for (std::size_t i : row.sections) {
-      const QuarrySectionInput& s = in[i];
-      const QuarryDistances& q = s.distances;
-      const double H = s.geometry.height;
-      h_sum += H;
-      row.id_sample.add(q.id, H, q.censor_distance);
-      row.rd_sample.add(q.rd, H, q.censor_distance);
-      if (row.sections.size() > 1) {  // a group: each section's own statistics too
-        DistanceSample own_id, own_rd;
-        own_id.add(q.id, H, q.censor_distance);
-        own_rd.add(q.rd, H, q.censor_distance);
-        d.sections[i].id = distance_statistics(own_id);
-        d.sections[i].rd = distance_statistics(own_rd);
-      }
-      d.all_id.add(q.id, H, q.censor_distance);
-      d.all_rd.add(q.rd, H, q.censor_distance);
-      durations.insert(durations.end(), q.duration.begin(), q.duration.end());
-      row.thrown += q.thrown;
-      row.reached_floor += q.reached_floor;
-      row.not_reached_floor += q.not_reached_floor;
-      row.above_toe += q.above_toe;
-      row.left_profile += q.left_profile;
-      row.left_upslope += q.left_upslope;
-      row.abnormal += q.abnormal;
-      // Observed: raw values pooled; printed summary values from the first section giving them.
-      for (auto [src, dst] : {std::pair{&s.observed.id, &obs_id}, std::pair{&s.observed.rd, &obs_rd}}) {
-        dst->metres.insert(dst->metres.end(), src->metres.begin(), src->metres.end());
-        dst->heights.insert(dst->heights.end(), src->metres.size(), H);
-        if (!dst->p50 && !dst->p95 && !dst->max) {
-          dst->p50 = src->p50;
-          dst->p95 = src->p95;
-          dst->max = src->max;
-          dst->count = src->count;
-        }
-      }
+// A row's pooled statistics (/H over its sections), counts, exceedance distances, governing
+// distances, RD_p's bootstrap interval (stream seed + r) and observed comparison; a group's
+// sections get their own statistics too.
+void pool_row(QuarryDesign& d, std::size_t r, const std::vector<QuarrySectionInput>& in,
+              std::uint64_t seed) {
+  QuarryRow& row = d.rows[r];
+  const QuarrySectionInput& first = in[row.sections.front()];
+  const QuarryRuleSet& rules = first.rules;
+  std::vector<double> durations;
+  double h_sum = 0;
+  ObservedDistance obs_id, obs_rd;
+  for (std::size_t i : row.sections) {
+    const QuarrySectionInput& s = in[i];
+    const QuarryDistances& q = s.distances;
+    const double H = s.geometry.height;
+    h_sum += H;
+    row.id_sample.add(q.id, H, q.censor_distance);
+    row.rd_sample.add(q.rd, H, q.censor_distance);
+    if (row.sections.size() > 1) {  // a group: each section's own statistics too
+      DistanceSample own_id, own_rd;
+      own_id.add(q.id, H, q.censor_distance);
+      own_rd.add(q.rd, H, q.censor_distance);
+      d.sections[i].id = distance_statistics(own_id);
+      d.sections[i].rd = distance_statistics(own_rd);
     }
-    row.height = h_sum / static_cast<double>(row.sections.size());
-    row.id = distance_statistics(row.id_sample);
-    row.rd = distance_statistics(row.rd_sample);
-    if (row.sections.size() == 1) {
-      d.sections[row.sections.front()].id = row.id;
-      d.sections[row.sections.front()].rd = row.rd;
-    }
-    row.duration = duration_statistics(durations);
-    for (double q : first.spec.exceedance) {
-      ExceedanceDistance e;
-      e.probability = q;
-      e.rd_fit_h = row.rd.fit ? stats::value_at_exceedance(*row.rd.fit, q) : kNaN;
-      e.id_fit_h = row.id.fit ? stats::value_at_exceedance(*row.id.fit, q) : kNaN;
-      e.rd_empirical_h = empirical_at_exceedance(row.rd_sample, q);
-      e.id_empirical_h = empirical_at_exceedance(row.id_sample, q);
-      e.rd_fit = e.rd_fit_h * row.height;
-      e.id_fit = e.id_fit_h * row.height;
-      e.rd_empirical = e.rd_empirical_h * row.height;
-      e.id_empirical = e.id_empirical_h * row.height;
-      row.exceedance.push_back(e);
-    }
-    row.rd_gov = governing_distance(row.rd_sample, row.rd, rules);
-    row.id_gov = governing_distance(row.id_sample, row.id, rules);
-    // A bootstrap of one value has no spread and says nothing: two at least.
-    const double rd_sampled = censored_percentile(row.rd_sample.normalized,
-                                                  row.rd_sample.censored_at, rules.sample_percentile);
-    if (row.rd_sample.normalized.size() >= 2 && std::isfinite(rd_sampled)) {
-      stats::BootstrapOptions opt;
-      opt.resamples = rules.sample_resamples;
-      opt.confidence = rules.sample_confidence;
-      if (auto ci = stats::bootstrap_percentile_interval(row.rd_sample.normalized,
-                                                         rules.sample_percentile, seed + r, opt))
-        row.rd_interval = *ci;
-    }
-    if (!obs_id.empty()) row.observed_id = compare_observed(row.id_sample, obs_id, row.height);
-    if (!obs_rd.empty()) row.observed_rd = compare_observed(row.rd_sample, obs_rd, row.height);
-
-    // Section zones and checks.
-    for (std::size_t i : row.sections) {
-      QuarrySectionResult& sr = d.sections[i];
-      const double H = sr.geometry.height;
-      const std::string& subject = sr.spec.name;
-      sr.danger_zone = row.rd_gov.value_h * H;
-      sr.first_impact_zone = row.id_gov.value_h * H;
-      const std::string gov_text = "RD_gov = " + num(sr.danger_zone) +
-                                   (std::isfinite(sr.danger_zone) ? " m" : "") + " (" +
-                                   row.rd_gov.how + ")";
-      auto zone_line = [&](const std::string& id, const std::string& what, double value) {
-        CheckLine l = line(subject, id, rules);
-        l.what = what;
-        l.value = value;
-        l.limit = sr.danger_zone;
-        l.unit = "m";
-        if (std::isnan(sr.danger_zone)) {
-          l.status = CheckStatus::not_applicable;
-          l.reason = "no runout sample";
-        } else if (std::isinf(sr.danger_zone)) {
-          l.status = CheckStatus::fail;
-          l.reason = "the danger zone reaches beyond the profile's end: more than " +
-                     num(100 - rules.percentile) + " % of the blocks left the section (" +
-                     std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
-                     "); extend the section";
-        } else if (!at_least(value, sr.danger_zone)) {
-          l.status = CheckStatus::fail;
-          l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
-        } else {
-          l.status = CheckStatus::pass;
-          l.reason = num(value) + " m from the toe is outside the danger zone: " + gov_text;
-        }
-        d.checks.push_back(std::move(l));
-      };
-      for (const WorkArea& a : sr.spec.work_areas)
-        zone_line("zone." + a.name, "distance of work area \"" + a.name + "\" from the toe vs the danger zone RD_gov", a.distance);
-      if (std::isinf(sr.danger_zone) && sr.spec.work_areas.empty()) {
-        // RD_p beyond the profile FAILs its check (design-checks.md §2): without a work area
-        // this is the line that carries it.
-        zone_line("zone.extent", "the danger zone RD_gov vs the section's floor length", sr.geometry.floor_length);
-      } else if (sr.danger_zone_beyond_profile() && std::isfinite(sr.danger_zone)) {
-        // A finite zone longer than the floor the section models (a fit's extrapolation, or a
-        // group's pooled zone on a section with a shorter floor): its end was not simulated.
-        // The zone lines judge against it as the spec has them; this says how far to trust it.
-        CheckLine l = line(subject, "zone.extent", rules);
-        l.what = "the section's floor length vs the danger zone RD_gov";
-        l.value = sr.geometry.floor_length;
-        l.limit = sr.danger_zone;
-        l.unit = "m";
-        l.status = CheckStatus::warn;
-        l.reason = gov_text + " reaches past the floor's end at " + num(sr.geometry.floor_length) +
-                   " m from the toe: the zone's end is extrapolated, not simulated; extend the "
-                   "section to simulate it";
-        d.checks.push_back(std::move(l));
+    d.all_id.add(q.id, H, q.censor_distance);
+    d.all_rd.add(q.rd, H, q.censor_distance);
+    durations.insert(durations.end(), q.duration.begin(), q.duration.end());
+    row.thrown += q.thrown;
+    row.reached_floor += q.reached_floor;
+    row.not_reached_floor += q.not_reached_floor;
+    row.above_toe += q.above_toe;
+    row.left_profile += q.left_profile;
+    row.left_upslope += q.left_upslope;
+    row.abnormal += q.abnormal;
+    // Observed: raw values pooled; printed summary values from the first section giving them.
+    for (auto [src, dst] : {std::pair{&s.observed.id, &obs_id}, std::pair{&s.observed.rd, &obs_rd}}) {
+      dst->metres.insert(dst->metres.end(), src->metres.begin(), src->metres.end());
+      dst->heights.insert(dst->heights.end(), src->metres.size(), H);
+      if (!dst->p50 && !dst->p95 && !dst->max) {
+        dst->p50 = src->p50;
+        dst->p95 = src->p95;
+        dst->max = src->max;
+        dst->count = src->count;
       }
-
-      if (sr.spec.bench_width) {
-        const double w = *sr.spec.bench_width;
-        const double above = empirical_exceedance(row.rd_sample.normalized, w / H);
-        sr.bench_retention = std::isnan(above) ? kNaN : 1.0 - above;
-        CheckLine l = line(subject, "bench.retention", rules);
-        l.what = "share of all blocks stopping within the catch bench (RD <= " + num(w) + " m) vs the target";
-        l.value = 100.0 * *sr.bench_retention;
-        l.limit = 100.0 * rules.retention_target;
-        l.unit = "%";
-        if (std::isnan(l.value)) {
-          l.status = CheckStatus::not_applicable;
-          l.reason = "no runout sample";
-        } else {
-          l.status = at_least(*sr.bench_retention, rules.retention_target) ? CheckStatus::pass : CheckStatus::fail;
-          l.reason = num(l.value, 3) + " % of " + std::to_string(row.thrown) + " blocks retained " +
-                     (l.status == CheckStatus::pass ? ">= " : "< ") + num(l.limit, 3) + " %";
-        }
-        d.checks.push_back(std::move(l));
-
-        sr.ritchie_width = rules.ritchie_factor * H + rules.ritchie_offset;
-        CheckLine k = line(subject, "bench.ritchie", rules);
-        k.what = "planned bench width vs the modified Ritchie width " + num(rules.ritchie_factor) +
-                 "·H + " + num(rules.ritchie_offset) + " m (an empirical cross-check, not a design rule)";
-        k.value = w;
-        k.limit = *sr.ritchie_width;
-        k.unit = "m";
-        k.status = at_least(w, k.limit) ? CheckStatus::pass : CheckStatus::warn;
-        k.reason = "bench " + num(w) + " m " + (at_least(w, k.limit) ? ">= " : "< ") + num(k.limit) +
-                   " m (H = " + num(H) + " m)";
-        d.checks.push_back(std::move(k));
-      }
-    }
-
-    // Row checks: sample size and fits.
-    {
-      CheckLine l = line(row.name, "sample.size", rules);
-      l.what = "half-width of the " + num(100 * rules.sample_confidence) + " % bootstrap interval of RD" +
-               num(rules.sample_percentile) + " / RD" + num(rules.sample_percentile) +
-               ", and blocks reaching the floor (>= " + std::to_string(rules.min_reached) + ")";
-      l.limit = 100.0 * rules.sample_tolerance;
-      l.unit = "%";
-      std::string why;
-      bool warn = false;
-      if (row.rd_interval && row.rd_interval->estimate > 0 &&
-          !std::isfinite(row.rd_interval->half_width())) {
-        // Resamples with more blocks off the end than the percentile allows: the interval's
-        // upper end is beyond the profile, and no number of throws on this section closes it.
-        warn = true;
-        why = "the " + num(100 * rules.sample_confidence) + " % interval of RD" +
-              num(rules.sample_percentile) + " reaches beyond the profile (" +
-              std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
-              " blocks left the section): extend the section";
-      } else if (row.rd_interval && row.rd_interval->estimate > 0) {
-        const double rel = row.rd_interval->half_width() / row.rd_interval->estimate;
-        l.value = 100.0 * rel;
-        if (rel > rules.sample_tolerance) {
-          warn = true;
-          const double needed = static_cast<double>(row.thrown) * (rel / rules.sample_tolerance) *
-                                (rel / rules.sample_tolerance);
-          why = "RD" + num(rules.sample_percentile) + " known to ±" + num(l.value, 3) + " % > " +
-                num(l.limit, 3) + " %: about " + std::to_string(static_cast<long long>(std::ceil(needed))) +
-                " trajectories would be needed (" + std::to_string(row.thrown) + " run)";
-        } else {
-          why = "RD" + num(rules.sample_percentile) + " known to ±" + num(l.value, 3) + " %";
-        }
-      } else {
-        why = std::isinf(rd_sampled)
-                  ? "RD" + num(rules.sample_percentile) + " is beyond the profile: no interval"
-                  : "no bootstrap interval";
-      }
-      if (row.reached_floor < rules.min_reached) {
-        warn = true;
-        why += "; only " + std::to_string(row.reached_floor) +
-               (row.reached_floor == 1 ? " block" : " blocks") + " reached the floor (< " +
-               std::to_string(rules.min_reached) + ")";
-      }
-      l.status = warn ? CheckStatus::warn : (std::isnan(l.value) ? CheckStatus::not_applicable : CheckStatus::pass);
-      l.reason = why;
-      d.checks.push_back(std::move(l));
-    }
-    for (auto [id, st] : {std::pair<std::string, const DistanceStatistics*>{"fit.ID", &row.id},
-                          std::pair<std::string, const DistanceStatistics*>{"fit.RD", &row.rd}}) {
-      CheckLine l = line(row.name, id, rules);
-      l.what = "KS p-value of the log-normal fit of " + id.substr(4) +
-               "/H (zeros as a point mass, censored runouts as censored)";
-      l.limit = rules.fit_p_value;
-      if (st->fit && st->ks) {
-        l.value = st->ks->p_value;
-        l.status = l.value < l.limit ? CheckStatus::warn : CheckStatus::pass;
-        l.reason = "D = " + num(st->ks->statistic, 3) + ", n = " + num(st->ks->n, 6) +
-                   ", p = " + num(l.value, 3) + (l.value < l.limit ? " < " : " >= ") + num(l.limit) +
-                   " (parameters fitted to the same sample: p is optimistic)";
-      } else {
-        l.status = CheckStatus::warn;
-        l.reason = "no fit: " + (st->fit_error.empty() ? std::string("no KS statistic") : st->fit_error);
-      }
-      d.checks.push_back(std::move(l));
     }
   }
+  row.height = h_sum / static_cast<double>(row.sections.size());
+  row.id = distance_statistics(row.id_sample);
+  row.rd = distance_statistics(row.rd_sample);
+  if (row.sections.size() == 1) {
+    d.sections[row.sections.front()].id = row.id;
+    d.sections[row.sections.front()].rd = row.rd;
+  }
+  row.duration = duration_statistics(durations);
+  for (double q : first.spec.exceedance) {
+    ExceedanceDistance e;
+    e.probability = q;
+    e.rd_fit_h = row.rd.fit ? stats::value_at_exceedance(*row.rd.fit, q) : kNaN;
+    e.id_fit_h = row.id.fit ? stats::value_at_exceedance(*row.id.fit, q) : kNaN;
+    e.rd_empirical_h = empirical_at_exceedance(row.rd_sample, q);
+    e.id_empirical_h = empirical_at_exceedance(row.id_sample, q);
+    e.rd_fit = e.rd_fit_h * row.height;
+    e.id_fit = e.id_fit_h * row.height;
+    e.rd_empirical = e.rd_empirical_h * row.height;
+    e.id_empirical = e.id_empirical_h * row.height;
+    row.exceedance.push_back(e);
+  }
+  row.rd_gov = governing_distance(row.rd_sample, row.rd, rules);
+  row.id_gov = governing_distance(row.id_sample, row.id, rules);
+  // A bootstrap of one value has no spread and says nothing: two at least.
+  const double rd_sampled = censored_percentile(row.rd_sample.normalized,
+                                                row.rd_sample.censored_at, rules.sample_percentile);
+  if (row.rd_sample.normalized.size() >= 2 && std::isfinite(rd_sampled)) {
+    stats::BootstrapOptions opt;
+    opt.resamples = rules.sample_resamples;
+    opt.confidence = rules.sample_confidence;
+    if (auto ci = stats::bootstrap_percentile_interval(row.rd_sample.normalized,
+                                                       rules.sample_percentile, seed + r, opt))
+      row.rd_interval = *ci;
+  }
+  if (!obs_id.empty()) row.observed_id = compare_observed(row.id_sample, obs_id, row.height);
+  if (!obs_rd.empty()) row.observed_rd = compare_observed(row.rd_sample, obs_rd, row.height);
+}
 
-  // Averages over the rows (thesis Tables 6.2 and 6.3, last line).
-  {
-    QuarryAverage& a = d.average;
-    a.rows = d.rows.size();
-    std::vector<double> v[6], o[6];
-    for (const QuarryRow& row : d.rows) {
-      v[0].push_back(row.rd.p50_h), v[1].push_back(row.rd.p95_h), v[2].push_back(row.rd.max_h);
-      v[3].push_back(row.id.p50_h), v[4].push_back(row.id.p95_h), v[5].push_back(row.id.max_h);
-      if (row.observed_rd || row.observed_id) ++a.observed_rows;
-      if (row.observed_rd)
-        o[0].push_back(row.observed_rd->p50_h), o[1].push_back(row.observed_rd->p95_h),
-            o[2].push_back(row.observed_rd->max_h);
-      if (row.observed_id)
-        o[3].push_back(row.observed_id->p50_h), o[4].push_back(row.observed_id->p95_h),
-            o[5].push_back(row.observed_id->max_h);
-    }
-    // A row beyond the profile makes the average beyond it too.
-    auto mean = [](const std::vector<double>& x) {
-      for (double y : x)
-        if (std::isinf(y)) return kInf;
-      return mean_of_finite(x);
+// A section's catch bench (bench_width given): bench.retention, the share of all its row's
+// blocks stopping on it, and bench.ritchie, the modified Ritchie width as a cross-check.
+void bench_checks(QuarrySectionResult& sr, const QuarryRow& row, const QuarryRuleSet& rules,
+                  std::vector<CheckLine>& checks) {
+  const double H = sr.geometry.height;
+  const std::string& subject = sr.spec.name;
+  const double w = *sr.spec.bench_width;
+  const double above = empirical_exceedance(row.rd_sample.normalized, w / H);
+  sr.bench_retention = std::isnan(above) ? kNaN : 1.0 - above;
+  CheckLine l = line(subject, "bench.retention", rules);
+  l.what = "share of all blocks stopping within the catch bench (RD <= " + num(w) + " m) vs the target";
+  l.value = 100.0 * *sr.bench_retention;
+  l.limit = 100.0 * rules.retention_target;
+  l.unit = "%";
+  if (std::isnan(l.value)) {
+    l.status = CheckStatus::not_applicable;
+    l.reason = "no runout sample";
+  } else {
+    l.status = at_least(*sr.bench_retention, rules.retention_target) ? CheckStatus::pass : CheckStatus::fail;
+    l.reason = num(l.value, 3) + " % of " + std::to_string(row.thrown) + " blocks retained " +
+               (l.status == CheckStatus::pass ? ">= " : "< ") + num(l.limit, 3) + " %";
+  }
+  checks.push_back(std::move(l));
+
+  sr.ritchie_width = rules.ritchie_factor * H + rules.ritchie_offset;
+  CheckLine k = line(subject, "bench.ritchie", rules);
+  k.what = "planned bench width vs the modified Ritchie width " + num(rules.ritchie_factor) +
+           "·H + " + num(rules.ritchie_offset) + " m (an empirical cross-check, not a design rule)";
+  k.value = w;
+  k.limit = *sr.ritchie_width;
+  k.unit = "m";
+  k.status = at_least(w, k.limit) ? CheckStatus::pass : CheckStatus::warn;
+  k.reason = "bench " + num(w) + " m " + (at_least(w, k.limit) ? ">= " : "< ") + num(k.limit) +
+             " m (H = " + num(H) + " m)";
+  checks.push_back(std::move(k));
+}
+
+// Each section's zones from its row's governing distances, and its checks: zone.<work area>,
+// zone.extent, bench.retention and bench.ritchie.
+void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rules) {
+  for (std::size_t i : row.sections) {
+    QuarrySectionResult& sr = d.sections[i];
+    const double H = sr.geometry.height;
+    const std::string& subject = sr.spec.name;
+    sr.danger_zone = row.rd_gov.value_h * H;
+    sr.first_impact_zone = row.id_gov.value_h * H;
+    const std::string gov_text = "RD_gov = " + num(sr.danger_zone) +
+                                 (std::isfinite(sr.danger_zone) ? " m" : "") + " (" +
+                                 row.rd_gov.how + ")";
+    auto zone_line = [&](const std::string& id, const std::string& what, double value) {
+      CheckLine l = line(subject, id, rules);
+      l.what = what;
+      l.value = value;
+      l.limit = sr.danger_zone;
+      l.unit = "m";
+      if (std::isnan(sr.danger_zone)) {
+        l.status = CheckStatus::not_applicable;
+        l.reason = "no runout sample";
+      } else if (std::isinf(sr.danger_zone)) {
+        l.status = CheckStatus::fail;
+        l.reason = "the danger zone reaches beyond the profile's end: more than " +
+                   num(100 - rules.percentile) + " % of the blocks left the section (" +
+                   std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
+                   "); extend the section";
+      } else if (!at_least(value, sr.danger_zone)) {
+        l.status = CheckStatus::fail;
+        l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
+      } else {
+        l.status = CheckStatus::pass;
+        l.reason = num(value) + " m from the toe is outside the danger zone: " + gov_text;
+      }
+      d.checks.push_back(std::move(l));
     };
-    a.rd50_h = mean(v[0]), a.rd95_h = mean(v[1]), a.rdmax_h = mean(v[2]);
-    a.id50_h = mean(v[3]), a.id95_h = mean(v[4]), a.idmax_h = mean(v[5]);
-    a.obs_rd50_h = mean(o[0]), a.obs_rd95_h = mean(o[1]), a.obs_rdmax_h = mean(o[2]);
-    a.obs_id50_h = mean(o[3]), a.obs_id95_h = mean(o[4]), a.obs_idmax_h = mean(o[5]);
+    for (const WorkArea& a : sr.spec.work_areas)
+      zone_line("zone." + a.name, "distance of work area \"" + a.name + "\" from the toe vs the danger zone RD_gov", a.distance);
+    if (std::isinf(sr.danger_zone) && sr.spec.work_areas.empty()) {
+      // RD_p beyond the profile FAILs its check (design-checks.md §2): without a work area
+      // this is the line that carries it.
+      zone_line("zone.extent", "the danger zone RD_gov vs the section's floor length", sr.geometry.floor_length);
+    } else if (sr.danger_zone_beyond_profile() && std::isfinite(sr.danger_zone)) {
+      // A finite zone longer than the floor the section models (a fit's extrapolation, or a
+      // group's pooled zone on a section with a shorter floor): its end was not simulated.
+      // The zone lines judge against it as the spec has them; this says how far to trust it.
+      CheckLine l = line(subject, "zone.extent", rules);
+      l.what = "the section's floor length vs the danger zone RD_gov";
+      l.value = sr.geometry.floor_length;
+      l.limit = sr.danger_zone;
+      l.unit = "m";
+      l.status = CheckStatus::warn;
+      l.reason = gov_text + " reaches past the floor's end at " + num(sr.geometry.floor_length) +
+                 " m from the toe: the zone's end is extrapolated, not simulated; extend the "
+                 "section to simulate it";
+      d.checks.push_back(std::move(l));
+    }
+
+    if (sr.spec.bench_width) bench_checks(sr, row, rules, d.checks);
   }
+}
+
+// sample.size of a row: the relative half-width of RD_p's bootstrap interval against the
+// tolerance, and the blocks that reached the floor against the minimum.
+CheckLine sample_size_line(const QuarryRow& row, const QuarryRuleSet& rules) {
+  const double rd_sampled = censored_percentile(row.rd_sample.normalized,
+                                                row.rd_sample.censored_at, rules.sample_percentile);
+  CheckLine l = line(row.name, "sample.size", rules);
+  l.what = "half-width of the " + num(100 * rules.sample_confidence) + " % bootstrap interval of RD" +
+           num(rules.sample_percentile) + " / RD" + num(rules.sample_percentile) +
+           ", and blocks reaching the floor (>= " + std::to_string(rules.min_reached) + ")";
+  l.limit = 100.0 * rules.sample_tolerance;
+  l.unit = "%";
+  std::string why;
+  bool warn = false;
+  if (row.rd_interval && row.rd_interval->estimate > 0 &&
+      !std::isfinite(row.rd_interval->half_width())) {
+    // Resamples with more blocks off the end than the percentile allows: the interval's
+    // upper end is beyond the profile, and no number of throws on this section closes it.
+    warn = true;
+    why = "the " + num(100 * rules.sample_confidence) + " % interval of RD" +
+          num(rules.sample_percentile) + " reaches beyond the profile (" +
+          std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
+          " blocks left the section): extend the section";
+  } else if (row.rd_interval && row.rd_interval->estimate > 0) {
+    const double rel = row.rd_interval->half_width() / row.rd_interval->estimate;
+    l.value = 100.0 * rel;
+    if (rel > rules.sample_tolerance) {
+      warn = true;
+      const double needed = static_cast<double>(row.thrown) * (rel / rules.sample_tolerance) *
+                            (rel / rules.sample_tolerance);
+      why = "RD" + num(rules.sample_percentile) + " known to ±" + num(l.value, 3) + " % > " +
+            num(l.limit, 3) + " %: about " + std::to_string(static_cast<long long>(std::ceil(needed))) +
+            " trajectories would be needed (" + std::to_string(row.thrown) + " run)";
+    } else {
+      why = "RD" + num(rules.sample_percentile) + " known to ±" + num(l.value, 3) + " %";
+    }
+  } else {
+    why = std::isinf(rd_sampled)
+              ? "RD" + num(rules.sample_percentile) + " is beyond the profile: no interval"
+              : "no bootstrap interval";
+  }
+  if (row.reached_floor < rules.min_reached) {
+    warn = true;
+    why += "; only " + std::to_string(row.reached_floor) +
+           (row.reached_floor == 1 ? " block" : " blocks") + " reached the floor (< " +
+           std::to_string(rules.min_reached) + ")";
+  }
+  l.status = warn ? CheckStatus::warn : (std::isnan(l.value) ? CheckStatus::not_applicable : CheckStatus::pass);
+  l.reason = why;
+  return l;
+}
+
+// A row's own checks: sample.size, fit.ID and fit.RD.
+void row_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rules) {
+  d.checks.push_back(sample_size_line(row, rules));
+  for (auto [id, st] : {std::pair<std::string, const DistanceStatistics*>{"fit.ID", &row.id},
+                        std::pair<std::string, const DistanceStatistics*>{"fit.RD", &row.rd}}) {
+    CheckLine l = line(row.name, id, rules);
+    l.what = "KS p-value of the log-normal fit of " + id.substr(4) +
+             "/H (zeros as a point mass, censored runouts as censored)";
+    l.limit = rules.fit_p_value;
+    if (st->fit && st->ks) {
+      l.value = st->ks->p_value;
+      l.status = l.value < l.limit ? CheckStatus::warn : CheckStatus::pass;
+      l.reason = "D = " + num(st->ks->statistic, 3) + ", n = " + num(st->ks->n, 6) +
+                 ", p = " + num(l.value, 3) + (l.value < l.limit ? " < " : " >= ") + num(l.limit) +
+                 " (parameters fitted to the same sample: p is optimistic)";
+    } else {
+      l.status = CheckStatus::warn;
+      l.reason = "no fit: " + (st->fit_error.empty() ? std::string("no KS statistic") : st->fit_error);
+    }
+    d.checks.push_back(std::move(l));
+  }
+}
+
+// The averages over the rows (thesis Tables 6.2 and 6.3, last line).
+QuarryAverage average_of_rows(const std::vector<QuarryRow>& rows) {
+  QuarryAverage a;
+  a.rows = rows.size();
+  std::vector<double> v[6], o[6];
+  for (const QuarryRow& row : rows) {
+    v[0].push_back(row.rd.p50_h), v[1].push_back(row.rd.p95_h), v[2].push_back(row.rd.max_h);
+    v[3].push_back(row.id.p50_h), v[4].push_back(row.id.p95_h), v[5].push_back(row.id.max_h);
+    if (row.observed_rd || row.observed_id) ++a.observed_rows;
+    if (row.observed_rd)
+      o[0].push_back(row.observed_rd->p50_h), o[1].push_back(row.observed_rd->p95_h),
+          o[2].push_back(row.observed_rd->max_h);
+    if (row.observed_id)
+      o[3].push_back(row.observed_id->p50_h), o[4].push_back(row.observed_id->p95_h),
+          o[5].push_back(row.observed_id->max_h);
+  }
+  // A row beyond the profile makes the average beyond it too.
+  auto mean = [](const std::vector<double>& x) {
+    for (double y : x)
+      if (std::isinf(y)) return kInf;
+    return mean_of_finite(x);
+  };
+  a.rd50_h = mean(v[0]), a.rd95_h = mean(v[1]), a.rdmax_h = mean(v[2]);
+  a.id50_h = mean(v[3]), a.id95_h = mean(v[4]), a.idmax_h = mean(v[5]);
+  a.obs_rd50_h = mean(o[0]), a.obs_rd95_h = mean(o[1]), a.obs_rdmax_h = mean(o[2]);
+  a.obs_id50_h = mean(o[3]), a.obs_id95_h = mean(o[4]), a.obs_idmax_h = mean(o[5]);
+  return a;
+}
+
+}  // namespace
+
+QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint64_t seed) {
+  QuarryOutcome result;
+  if (in.empty()) {
+    result.error = "no quarry section";
+    return result;
+  }
+  QuarryDesign d;
+  if (std::string error = group_rows(in, d); !error.empty()) {
+    result.error = std::move(error);
+    return result;
+  }
+  for (std::size_t r = 0; r < d.rows.size(); ++r) {
+    const QuarryRuleSet& rules = in[d.rows[r].sections.front()].rules;  // one per row
+    pool_row(d, r, in, seed);
+    section_checks(d, d.rows[r], rules);
+    row_checks(d, d.rows[r], rules);
+  }
+  d.average = average_of_rows(d.rows);
   d.all_id_statistics = distance_statistics(d.all_id);
   d.all_rd_statistics = distance_statistics(d.all_rd);
   result.design = std::move(d);
