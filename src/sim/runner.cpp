@@ -26,6 +26,11 @@ void ResultCollector::consume(ChunkResult&& c) {
 
 RunReport run_simulation(const Scenario& scenario, const RunOptions& options, ResultSink& sink,
                          const Progress& progress) {
+  if (auto fault = scenario_fault(scenario)) {
+    RunReport r;
+    r.error = "the scenario cannot be simulated: " + *fault;
+    return r;
+  }
   const TrajectoryModel model(scenario);
   const std::uint64_t total = scenario.trajectory_count();
   const std::uint32_t throws = scenario.settings.throws;

@@ -56,7 +56,9 @@ struct RunReport {
   std::uint64_t trajectories = 0;
   std::uint64_t impacts = 0;
   double seconds = 0;  // wall-clock time of the simulation (measured by the caller's clock)
-  std::optional<std::string> error;  // a sink failure, reported instead of thrown across threads
+  // A sink failure, reported instead of thrown across threads; or a scenario_fault, in which
+  // case nothing was run.
+  std::optional<std::string> error;
   bool interrupted = false;  // RunOptions::stop was set before every chunk was delivered
 };
 

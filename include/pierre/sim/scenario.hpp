@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,11 @@ struct Scenario {
     return std::uint64_t{sources.size()} * blocks.size() * settings.throws;
   }
 };
+
+// What would make a hand-built scenario unsafe to simulate: no profile, a segment naming a
+// material the list lacks, or more trajectories than a 64-bit index counts. (io's reader checks
+// all of this and much more, with the file and line; this guards the core used as a library.)
+std::optional<std::string> scenario_fault(const Scenario& scenario);
 
 // Which source, block and throw a global trajectory index stands for: source-major, then block,
 // then throw.

@@ -5,6 +5,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <string>
 
 #include "pierre/sim/runner.hpp"
 #include "support/builders.hpp"
@@ -95,4 +97,35 @@ TEST(Runner, AStopDuringTheRunEndsItEarlyWithAPrefixOfTheFullRun) {
     for (std::size_t i = 0; i < part.trajectories.size(); ++i)
       EXPECT_TRUE(same_bits(part.trajectories[i].stop.x, full.trajectories[i].stop.x)) << i;
   }
+}
+
+// The core used as a library: a hand-built scenario that would read out of range is refused
+// with the reason, and nothing is run or delivered.
+TEST(Runner, RefusesAScenarioItCannotSimulateSafely) {
+  auto refused = [](const Scenario& s, const std::string& why) {
+    RecordingSink sink;
+    const RunReport rep = run_simulation(s, RunOptions{}, sink);
+    ASSERT_TRUE(rep.error);
+    EXPECT_NE(rep.error->find(why), std::string::npos) << *rep.error;
+    EXPECT_EQ(rep.trajectories, 0u);
+    EXPECT_TRUE(sink.firsts.empty());
+    EXPECT_EQ(sink.expected, 0u);
+  };
+  Scenario no_profile = slope(3);
+  no_profile.profile = geometry::Profile{};
+  refused(no_profile, "the profile has no segment");
+
+  Scenario no_material = slope(3);
+  no_material.materials.clear();
+  refused(no_material, "segment 0 names material 0, but 0 material(s) are given");
+
+  Scenario too_many = slope(std::numeric_limits<std::uint32_t>::max());
+  too_many.blocks.resize(1u << 16, too_many.blocks.front());  // 2^33 (source, block) pairs
+  too_many.sources.resize(1u << 17, too_many.sources.front());
+  refused(too_many, "overflows");
+
+  RecordingSink sink;  // and the scenario it was made from runs
+  const RunReport ok = run_simulation(slope(3), RunOptions{}, sink);
+  EXPECT_FALSE(ok.error);
+  EXPECT_EQ(sink.trajectories.size(), 3u);
 }
