@@ -1,0 +1,418 @@
+// A barrier's sheet.
+#include "xlsx_report_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "pierre/stats/empirical_cdf.hpp"
+#include "pierre/stats/lognormal_fit.hpp"
+#include "pierre/stats/percentile.hpp"
+#include "pierre/stats/weibull_fit.hpp"
+
+namespace pierre::io::detail {
+namespace {
+
+// ---- the data behind the charts --------------------------------------------------------
+
+struct Histogram {
+  double lo = 0, width = 1;
+  std::vector<std::uint64_t> counts;
+  std::vector<double> density;
+};
+
+Histogram histogram(std::span<const double> x, int bins) {
+  Histogram h;
+  double mn = std::numeric_limits<double>::infinity(), mx = -mn;
+  std::size_t n = 0;
+  for (double v : x)
+    if (std::isfinite(v)) {
+      mn = std::min(mn, v);
+      mx = std::max(mx, v);
+      ++n;
+    }
+  if (n == 0) return h;
+  // Non-negative quantities start at zero unless the data sit far from it.
+  h.lo = (mn >= 0 && mn <= 0.25 * mx) ? 0.0 : mn;
+  double hi = mx;
+  if (!(hi > h.lo)) hi = h.lo + 1;
+  h.width = (hi - h.lo) / bins;
+  h.counts.assign(static_cast<std::size_t>(bins), 0);
+  for (double v : x) {
+    if (!std::isfinite(v)) continue;
+    auto b = static_cast<long>(std::floor((v - h.lo) / h.width));
+    b = std::clamp(b, 0L, static_cast<long>(bins) - 1);
+    ++h.counts[static_cast<std::size_t>(b)];
+  }
+  for (auto c : h.counts)
+    h.density.push_back(static_cast<double>(c) / (static_cast<double>(n) * h.width));
+  return h;
+}
+
+}  // namespace
+
+void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b) {
+  page_setup(ws);
+  width(ws, 0, 0, 34);
+  width(ws, 1, 12, 14);
+  text(ws, 0, 0, replace_all(t_.get("titles", "barrier"), "{name}", b.spec.name), title());
+  check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
+  Row r = 2;
+  auto kv_text = [&](std::string_view label, const std::string& v) {
+    text(ws, r, 0, std::string(label), bold());
+    text(ws, r++, 1, v);
+  };
+  kv_text(h("barriers", "line"), fmt::format("{} ({} m)", b.spec.line, format_number(b.chainage)));
+  kv_text(t_.get("labels", "rules"),
+          fmt::format("{} — {}", b.rules_name.empty() ? b.spec.rules : b.rules_name,
+                      b.rules_title));
+  if (!b.rules_source.empty()) {
+    text(ws, r++, 1, b.rules_source, note());
+  }
+  text(ws, r, 0, t_.get("labels", "crossings"), bold());
+  count(ws, r++, 1, b.crossings);
+  text(ws, r, 0, t_.get("labels", "not_reached"), bold());
+  count(ws, r++, 1, b.not_reached);
+  text(ws, r, 0, t_.get("labels", "bootstrap_seed"), bold());
+  if (b.bootstrap_seed <= (std::uint64_t{1} << 53))
+    num(ws, r++, 1, static_cast<double>(b.bootstrap_seed), number("count"));
+  else
+    text(ws, r++, 1, std::to_string(b.bootstrap_seed));
+
+  // The sample at the line, from the report's crossings (first crossing in the main direction).
+  std::vector<double> speed, height, energy, rotational;
+  const auto li = line_index(b.spec.line);
+  const int dir = d_.scenario ? d_.scenario->scenario.profile.main_direction() : 1;
+  if (li && d_.samples && *li < d_.samples->lines().size()) {
+    // The whole sample the design used (first crossings in the main direction).
+    const design::LineSamples& ls = d_.samples->lines()[*li];
+    speed = ls.speed;
+    height = ls.height;
+    for (double e : ls.translational_energy) energy.push_back(e / 1000);
+    for (double e : ls.rotational_energy) rotational.push_back(e / 1000);
+  } else if (li) {
+    std::uint64_t last = std::numeric_limits<std::uint64_t>::max();
+    for (const auto& c : d_.crossings) {
+      if (c.line != *li || c.direction != dir || c.trajectory == last) continue;
+      last = c.trajectory;
+      speed.push_back(c.speed);
+      height.push_back(c.height);
+      energy.push_back(c.translational_energy / 1000);
+      rotational.push_back(c.rotational_energy / 1000);
+    }
+  }
+
+  // Statistics: one row per statistic, one column per quantity.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "statistics"), section());
+  struct Q {
+    const design::QuantityFit* fit;
+    const stats::SampleSummary* summary;
+    std::string_view key, fmt;
+    const std::vector<double>* sample;  // for the empirical percentiles (may be empty)
+  };
+  std::vector<Q> qs = {{&b.speed, &b.speed.summary, "speed", "speed", &speed},
+                       {&b.height, &b.height.summary, "height", "length", &height},
+                       {&b.energy, &b.energy.summary, "energy", "energy", &energy},
+                       {nullptr, &b.rotational_energy, "rotational_energy", "energy", &rotational}};
+  const std::vector<double> none;
+  if (b.observed_speed) qs.push_back({&*b.observed_speed, &b.observed_speed->summary,
+                                      "observed_speed", "speed", &none});
+  if (b.observed_height) qs.push_back({&*b.observed_height, &b.observed_height->summary,
+                                       "observed_height", "length", &none});
+  if (b.observed_energy) qs.push_back({&*b.observed_energy, &b.observed_energy->summary,
+                                       "observed_energy", "energy", &none});
+  text(ws, r, 0, h("statistics", "statistic"), heading());
+  for (std::size_t i = 0; i < qs.size(); ++i)
+    text(ws, r, static_cast<Col>(1 + i), h("statistics", qs[i].key), heading());
+  check(worksheet_set_row(ws, r++, 30, nullptr), "worksheet_set_row");
+  // P50 / P95 (empirical, type 7) of the sample drawn from the report's crossings.
+  const char* rows[] = {"count", "mean", "sd", "min", "max", "p50", "p95", "weibull_k",
+                        "weibull_lambda", "weibull_ks_d", "weibull_ks_p", "lognormal_mu",
+                        "lognormal_sigma", "lognormal_ks_d", "lognormal_ks_p"};
+  for (const char* stat : rows) {
+    const std::string_view s = stat;
+    text(ws, r, 0, h("statistics", s), bold());
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      const Q& q = qs[i];
+      const Col c = static_cast<Col>(1 + i);
+      lxw_format* qf = number(q.fmt);
+      const auto& sm = *q.summary;
+      if (s == "count") count(ws, r, c, sm.count);
+      else if (s == "mean") num(ws, r, c, sm.count ? sm.mean : kNaN, qf);
+      else if (s == "sd") num(ws, r, c, sm.count > 1 ? sm.standard_deviation : kNaN, qf);
+      else if (s == "min") num(ws, r, c, sm.count ? sm.min : kNaN, qf);
+      else if (s == "max") num(ws, r, c, sm.count ? sm.max : kNaN, qf);
+      else if (s == "p50" || s == "p95") {
+        if (!q.sample->empty()) num(ws, r, c, stats::percentile(*q.sample, s == "p50" ? 50 : 95), qf);
+      } else if (!q.fit) {
+        continue;
+      } else if (s == "weibull_k" && q.fit->weibull) num(ws, r, c, q.fit->weibull->shape, number("parameter"));
+      else if (s == "weibull_lambda" && q.fit->weibull) num(ws, r, c, q.fit->weibull->scale, qf);
+      else if (s == "weibull_ks_d" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->statistic, number("parameter"));
+      else if (s == "weibull_ks_p" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->p_value_stephens, number("p_value"));
+      else if (s == "lognormal_mu" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->mu, number("parameter"));
+      else if (s == "lognormal_sigma" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->sigma, number("parameter"));
+      else if (s == "lognormal_ks_d" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->statistic, number("parameter"));
+      else if (s == "lognormal_ks_p" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->p_value_stephens, number("p_value"));
+    }
+    ++r;
+  }
+  for (const auto& q : qs)
+    if (q.fit && !q.fit->error.empty())
+      text(ws, r++, 0, fmt::format("{}: {}", h("statistics", q.key), q.fit->error), note());
+
+  // Bootstrap intervals.
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "bootstrap"), section());
+  headings(ws, r++, 0, "bootstrap",
+           {"quantity", "estimate", "lower", "upper", "half_width", "confidence", "resamples"});
+  struct BI {
+    std::string_view key, fmt;
+    const std::optional<stats::BootstrapInterval>* iv;
+  };
+  for (const BI& bi : {BI{"v_k", "speed", &b.v_k.interval}, BI{"h_k", "length", &b.h_k.interval},
+                       BI{"E_d", "energy", &b.E_d_interval}, BI{"h_i", "length", &b.h_i_interval}}) {
+    text(ws, r, 0, h("bootstrap", bi.key), bold());
+    if (*bi.iv) {
+      const auto& iv = **bi.iv;
+      num(ws, r, 1, iv.estimate, number(bi.fmt));
+      num(ws, r, 2, iv.lower, number(bi.fmt));
+      num(ws, r, 3, iv.upper, number(bi.fmt));
+      num(ws, r, 4, iv.estimate != 0 ? iv.half_width() / std::abs(iv.estimate) : kNaN,
+          number("percent"));
+      num(ws, r, 5, iv.confidence, number("percent"));
+      count(ws, r, 6, iv.resamples);
+    } else {
+      text(ws, r, 1, t_.get("labels", "none"), note());
+    }
+    ++r;
+  }
+
+  // Design table (Table 4.1's columns).
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "design"), section());
+  headings(ws, r++, 1, "design", {"v_d", "m_d", "E_d", "sel_req", "mel_req", "h_i", "energy_class"},
+           45);
+  text(ws, r, 0, b.spec.name, bold());
+  num(ws, r, 1, b.v_d, number("speed"));
+  num(ws, r, 2, b.m_d, number("mass"));
+  num(ws, r, 3, b.E_d_kJ, number("energy"));
+  num(ws, r, 4, b.SEL_req_kJ, number("energy"));
+  num(ws, r, 5, b.MEL_req_kJ, number("energy"));
+  num(ws, r, 6, b.h_i, number("length"));
+  if (b.energy_class)
+    num(ws, r, 7, b.energy_class->number, number("count"));
+  else
+    text(ws, r, 7, t_.get("labels", "none"));
+  r += 2;
+
+  // The factors and design quantities, with how each was obtained.
+  text(ws, r++, 0, t_.get("titles", "factors"), section());
+  headings(ws, r, 0, "factors", {"quantity", "value", "unit"});
+  check(worksheet_merge_range(ws, r, 3, r, 8, h("factors", "how").c_str(), heading()),
+        "worksheet_merge_range");
+  ++r;
+  // How each was obtained: the design's own words (BarrierDesign::how), else the formula.
+  auto fr = [&](std::string_view key, double v, std::string_view kind, std::string_view unit,
+                const std::string& formula = {}) {
+    text(ws, r, 0, h("factors", key), bold());
+    num(ws, r, 1, v, number(kind));
+    text(ws, r, 2, std::string(unit));
+    const auto it = b.how.find(std::string(key));
+    text(ws, r, 3, it != b.how.end() ? it->second : formula);
+    ++r;
+  };
+  fr("v_k_weibull", b.v_k.weibull, "speed", "m/s");
+  fr("v_k_empirical", b.v_k.empirical, "speed", "m/s");
+  fr("v_k", b.v_k.value, "speed", "m/s");
+  fr("gamma_F", b.gamma_F.value, "factor", "", b.gamma_F.how);
+  fr("v_d", b.v_d, "speed", "m/s", "v_k · γF");
+  fr("density", b.design_density, "density", "kg/m³");
+  fr("volume", b.design_volume, "volume", "m³");
+  fr("gamma_M", b.gamma_M.value, "factor", "", b.gamma_M.how);
+  fr("m_d", b.m_d, "mass", "kg", "ρ · Vol · γM");
+  fr("E_d", b.E_d_kJ, "energy", "kJ", "½ m_d v_d²");
+  fr("gamma_E_SEL", b.gamma_E_SEL, "factor", "");
+  fr("sel_req", b.SEL_req_kJ, "energy", "kJ", "γE,SEL · E_d");
+  fr("gamma_E_MEL", b.gamma_E_MEL, "factor", "");
+  fr("mel_req", b.MEL_req_kJ, "energy", "kJ", "γE,MEL · E_d");
+  fr("h_k_weibull", b.h_k.weibull, "length", "m");
+  fr("h_k_empirical", b.h_k.empirical, "length", "m");
+  fr("h_k", b.h_k.value, "length", "m");
+  fr("gamma_h", b.gamma_h.value, "factor", "", b.gamma_h.how);
+  fr("h_d", b.h_d, "length", "m");
+  fr("free_board_diameter", b.free_board_diameter, "length", "m");
+  fr("free_board", b.free_board, "length", "m");
+  fr("h_i", b.h_i, "length", "m");
+  fr("h_max_sim", b.h_max_sim, "length", "m");
+  if (std::isfinite(b.candidate_mel_kJ)) fr("candidate_mel", b.candidate_mel_kJ, "energy", "kJ", "");
+  if (std::isfinite(b.candidate_sel_kJ)) fr("candidate_sel", b.candidate_sel_kJ, "energy", "kJ", "");
+  if (!b.residual_height_category.empty()) {
+    text(ws, r, 0, h("factors", "residual_height_category"), bold());
+    text(ws, r++, 1, b.residual_height_category);
+  }
+
+  // Exceedance (Table 4.2's columns).
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "exceedance"), section());
+  headings(ws, r++, 0, "exceedance",
+           {"what", "threshold", "unit", "simulated_weibull", "simulated_empirical",
+            "observed_weibull"});
+  for (const auto& e : b.exceedance) {
+    text(ws, r, 0, e.what, bold());
+    num(ws, r, 1, e.threshold, number(e.unit == "kJ" ? "energy" : "length"));
+    text(ws, r, 2, e.unit);
+    num(ws, r, 3, e.simulated_weibull, number("probability"));
+    num(ws, r, 4, e.simulated_empirical, number("probability"));
+    if (e.observed_weibull) num(ws, r, 5, *e.observed_weibull, number("probability"));
+    ++r;
+  }
+
+  // This barrier's check lines.
+  if (!b.checks.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "barrier_checks"), section());
+    // id in A (wide), what in B.. would be cut: keep Summary's columns minus the subject.
+    r = check_table(ws, r, b.checks, false);
+  }
+  if (!b.notes.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "notes"), section());
+    for (const auto& n : b.notes) text(ws, r++, 0, n, note());
+  }
+
+  // ---- charts and their data ----
+  ++r;
+  const Row chart_row = r;
+  const Row rows_per_chart = static_cast<Row>(std::ceil(t_.chart_height / 20.0)) + 1;
+  Row data_row = chart_row + 3 * rows_per_chart + 1;
+
+  text(ws, data_row++, 0, t_.get("titles", "chart_data"), section());
+  text(ws, data_row++, 0,
+       replace_all(replace_all(replace_all(h("histogram", "source"), "{n}",
+                                           std::to_string(speed.size())),
+                               "{line}", b.spec.line),
+                   "{total}", std::to_string(b.crossings)),
+       note());
+  // Print the tables, then the charts on a page of their own; the data block stays on the
+  // sheet, out of the print area.
+  check(worksheet_print_area(ws, 0, 0, data_row - 3, 12), "worksheet_print_area");
+  auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row, 0});
+  check(worksheet_set_h_pagebreaks(ws, breaks.data()), "worksheet_set_h_pagebreaks");
+
+  struct Plot {
+    std::string_view key, fmt;
+    const std::vector<double>* sample;
+    const design::QuantityFit* fit;
+  };
+  const Plot plots[] = {{"speed", "speed", &speed, &b.speed},
+                        {"height", "length", &height, &b.height},
+                        {"energy", "energy", &energy, &b.energy}};
+  for (std::size_t p = 0; p < 3; ++p) {
+    const Plot& pl = plots[p];
+    const auto& x = *pl.sample;
+    const auto& fit = *pl.fit;
+    ++data_row;
+    text(ws, data_row++, 0, h("statistics", pl.key), section());
+    const Row top = data_row;
+    headings(ws, data_row++, 0, "histogram",
+             {"bin_lower", "bin_upper", "count", "density", "outline_x", "outline_y", "curve_x",
+              "weibull_pdf", "lognormal_pdf", "empirical_cdf", "weibull_cdf", "lognormal_cdf"});
+    const Row r0 = data_row;
+    // Curve range: the histogram's, or the fit's central 99.9 % when there is no sample.
+    const Histogram hg = histogram(x, t_.histogram_bins);
+    double lo = hg.lo, hi = hg.lo + hg.width * static_cast<double>(hg.counts.size());
+    if (x.empty()) {
+      lo = 0;
+      hi = fit.weibull ? stats::quantile(*fit.weibull, 0.999)
+                       : (fit.summary.count ? fit.summary.max : 1.0);
+      if (!(hi > lo)) hi = lo + 1;
+    }
+    lxw_format* qf = number(pl.fmt);
+    // Bins.
+    for (std::size_t i = 0; i < hg.counts.size(); ++i) {
+      const double a = hg.lo + hg.width * static_cast<double>(i);
+      num(ws, r0 + static_cast<Row>(i), 0, a, qf);
+      num(ws, r0 + static_cast<Row>(i), 1, a + hg.width, qf);
+      count(ws, r0 + static_cast<Row>(i), 2, hg.counts[i]);
+      num(ws, r0 + static_cast<Row>(i), 3, hg.density[i], number("parameter"));
+    }
+    // The outline of the columns: (e_i, 0), (e_i, d_i), (e_i+1, d_i), (e_i+1, 0), ...
+    Row o = r0;
+    for (std::size_t i = 0; i < hg.counts.size(); ++i) {
+      const double a = hg.lo + hg.width * static_cast<double>(i), e = a + hg.width;
+      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, hg.density[i]},
+                            std::pair{e, hg.density[i]}, std::pair{e, 0.0}}) {
+        num(ws, o, 4, px, qf);
+        num(ws, o++, 5, py, number("parameter"));
+      }
+    }
+    // Curves on an even grid.
+    const int n = t_.curve_points;
+    std::vector<double> grid(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
+    const std::vector<double> ecdf =
+        x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
+    for (int i = 0; i < n; ++i) {
+      const Row rr = r0 + static_cast<Row>(i);
+      const double g = grid[static_cast<std::size_t>(i)];
+      num(ws, rr, 6, g, qf);
+      if (fit.weibull) {
+        num(ws, rr, 7, stats::pdf(*fit.weibull, g), number("parameter"));
+        num(ws, rr, 10, stats::cdf(*fit.weibull, g), number("parameter"));
+      }
+      if (fit.lognormal) {
+        num(ws, rr, 8, stats::pdf(*fit.lognormal, g), number("parameter"));
+        num(ws, rr, 11, stats::cdf(*fit.lognormal, g), number("parameter"));
+      }
+      num(ws, rr, 9, ecdf[static_cast<std::size_t>(i)], number("parameter"));
+    }
+    data_row = std::max<Row>(o, r0 + static_cast<Row>(n)) + 1;
+    (void)top;
+
+    // The histogram chart: columns' outline, Weibull and log-normal densities.
+    const std::string key(pl.key);
+    lxw_chart* hc = nullptr;
+    const Row rn = r0 + static_cast<Row>(n) - 1;
+    if (!hg.counts.empty() || fit.weibull || fit.lognormal) {
+      hc = scatter_chart(key + "_histogram", b.spec.name);
+      if (!hg.counts.empty())
+        xy_series(hc, sheet, r0, o - 1, 4, 5, h("histogram", "histogram"), t_.colour("histogram"),
+                  1.25f);
+      if (fit.weibull)
+        xy_series(hc, sheet, r0, rn, 6, 7, h("histogram", "weibull_pdf"), t_.colour("weibull"),
+                  2.0f);
+      if (fit.lognormal)
+        xy_series(hc, sheet, r0, rn, 6, 8, h("histogram", "lognormal_pdf"),
+                  t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
+      chart_axis_set_min(hc->x_axis, lo);
+      chart_axis_set_max(hc->x_axis, hi);
+      chart_axis_set_min(hc->y_axis, 0);
+      chart_axis_set_num_format(hc->x_axis, keep(t_.get("formats", "general")));
+      insert_chart(ws, {chart_row + static_cast<Row>(p) * rows_per_chart, 0}, hc);
+    }
+    // The CDF chart: empirical against fitted.
+    if (!x.empty() || fit.weibull || fit.lognormal) {
+      lxw_chart* cc = scatter_chart(key + "_cdf", b.spec.name);
+      if (!x.empty())
+        xy_series(cc, sheet, r0, rn, 6, 9, h("histogram", "empirical_cdf"),
+                  t_.colour("empirical"), 2.0f);
+      if (fit.weibull)
+        xy_series(cc, sheet, r0, rn, 6, 10, h("histogram", "weibull_cdf"), t_.colour("weibull"),
+                  1.5f);
+      if (fit.lognormal)
+        xy_series(cc, sheet, r0, rn, 6, 11, h("histogram", "lognormal_cdf"),
+                  t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
+      chart_axis_set_min(cc->x_axis, lo);
+      chart_axis_set_max(cc->x_axis, hi);
+      chart_axis_set_min(cc->y_axis, 0);
+      chart_axis_set_max(cc->y_axis, 1);
+      chart_axis_set_num_format(cc->x_axis, keep(t_.get("formats", "general")));
+      // Right of the histogram: column A (34) + 3 columns of 14 ≈ 620 px at 7 px/char + padding.
+      insert_chart(ws, {chart_row + static_cast<Row>(p) * rows_per_chart, 5}, cc);
+    }
+  }
+}
+
+}  // namespace pierre::io::detail

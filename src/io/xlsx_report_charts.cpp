@@ -1,0 +1,154 @@
+// Chart helpers: scatter charts, series, markers, labels, equal scales, drawn paths.
+#include "xlsx_report_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pierre::io::detail {
+namespace {
+
+// A drawn trajectory keeps at most this many points: more cannot be seen in a chart, and a
+// block that bounces in place until the impact or time limit records hundreds of thousands,
+// which a few such paths would carry past a sheet's 1 048 576 rows.
+constexpr std::size_t kMaxPathPoints = 2000;
+
+// The points of `path` to draw: the first, then each one at least 1/10 000 of the path's extent
+// from the last kept (a block bouncing in place adds nothing a chart can show, and would crowd
+// out the flights before it), and the last; above kMaxPathPoints, evenly spaced ones of those.
+std::vector<geometry::Vec2> drawn_points(const std::vector<geometry::Vec2>& path) {
+  if (path.empty()) return {};
+  double x0 = path[0].x, x1 = x0, z0 = path[0].z, z1 = z0;
+  for (const auto& p : path) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    z0 = std::min(z0, p.z), z1 = std::max(z1, p.z);
+  }
+  const double step = 1e-4 * std::hypot(x1 - x0, z1 - z0);
+  std::vector<geometry::Vec2> kept{path.front()};
+  for (const auto& p : path)
+    if (std::hypot(p.x - kept.back().x, p.z - kept.back().z) > step) kept.push_back(p);
+  if (path.back().x != kept.back().x || path.back().z != kept.back().z) kept.push_back(path.back());
+  if (kept.size() <= kMaxPathPoints) return kept;
+  std::vector<geometry::Vec2> out;
+  out.reserve(kMaxPathPoints);
+  const std::size_t last = kept.size() - 1;
+  for (std::size_t k = 0; k < kMaxPathPoints; ++k) out.push_back(kept[k * last / (kMaxPathPoints - 1)]);
+  return out;
+}
+
+}  // namespace
+
+lxw_chart* Report::scatter_chart(std::string_view chart_key, const std::string& name) {
+  lxw_chart* chart =
+      check_ptr(workbook_add_chart(wb_, LXW_CHART_SCATTER_STRAIGHT), "workbook_add_chart");
+  const std::string section = "chart." + std::string(chart_key);
+  chart_title_set_name(chart, keep(replace_all(t_.get(section, "title"), "{name}", name)));
+  lxw_chart_font title_font{};
+  title_font.size = 11;
+  title_font.bold = LXW_EXPLICIT_FALSE;
+  chart_title_set_name_font(chart, &title_font);
+  chart_axis_set_name(chart->x_axis, keep(t_.get(section, "x_axis")));
+  chart_axis_set_name(chart->y_axis, keep(t_.get(section, "y_axis")));
+  chart_axis_major_gridlines_set_visible(chart->x_axis, LXW_TRUE);
+  lxw_chart_line grid{};
+  grid.color = 0xD9D9D9;
+  grid.width = 0.5f;
+  chart_axis_major_gridlines_set_line(chart->x_axis, &grid);
+  chart_axis_major_gridlines_set_line(chart->y_axis, &grid);
+  chart_axis_set_label_position(chart->x_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
+  chart_axis_set_label_position(chart->y_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
+  chart_legend_set_position(chart, LXW_CHART_LEGEND_BOTTOM);
+  chart_show_blanks_as(chart, LXW_CHART_BLANKS_AS_GAP);
+  return chart;
+}
+
+lxw_chart_series* Report::xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc,
+                       Col yc, const std::string& name, std::uint32_t colour, float line_width,
+                       std::uint8_t dash) {
+  lxw_chart_series* s = check_ptr(chart_add_series(chart, nullptr, nullptr), "chart_add_series");
+  // A scatter series needs categories (x) AND values (y), or libxlsxwriter drops the chart.
+  chart_series_set_categories(s, keep(sheet), r0, xc, r1, xc);
+  chart_series_set_values(s, keep(sheet), r0, yc, r1, yc);
+  chart_series_set_name(s, keep(name));
+  lxw_chart_line line{};
+  line.color = colour;
+  line.width = line_width;
+  line.dash_type = dash;
+  chart_series_set_line(s, &line);
+  chart_series_set_marker_type(s, LXW_CHART_MARKER_NONE);
+  return s;
+}
+
+void Report::markers(lxw_chart_series* s, std::uint8_t type, std::uint8_t size,
+                     lxw_color_t colour, bool line_too) {
+  if (!line_too) {
+    lxw_chart_line none{};
+    none.none = LXW_TRUE;
+    chart_series_set_line(s, &none);
+  }
+  chart_series_set_marker_type(s, type);
+  chart_series_set_marker_size(s, size);
+  lxw_chart_fill fill{};
+  fill.color = colour;
+  chart_series_set_marker_fill(s, &fill);
+  lxw_chart_line edge{};
+  edge.color = colour;
+  chart_series_set_marker_line(s, &edge);
+}
+
+void Report::equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin, double zmax,
+                         double x_scale, double y_scale) {
+  if (!(xmax > xmin) || !(zmax >= zmin)) return;
+  const double w = t_.chart_width * x_scale * 0.85, h = t_.chart_height * y_scale * 0.68;
+  const double margin = 0.05 * std::max(zmax - zmin, 1e-9);
+  const double per_px = std::max((xmax - xmin) / w, (zmax - zmin + 2 * margin) / h);
+  // Bounds on round numbers (Excel labels the ticks from them), widening only.
+  auto round_step = [](double range) { return std::pow(10.0, std::floor(std::log10(range))) / 2; };
+  const double xs = round_step(per_px * w), zs = round_step(per_px * h);
+  const double x0 = std::floor(xmin / xs) * xs, z0 = std::floor((zmin - margin) / zs) * zs;
+  chart_axis_set_min(chart->x_axis, x0);
+  chart_axis_set_max(chart->x_axis, std::ceil((x0 + per_px * w) / xs) * xs);
+  chart_axis_set_min(chart->y_axis, z0);
+  chart_axis_set_max(chart->y_axis, std::ceil((z0 + per_px * h) / zs) * zs);
+}
+
+void Report::point_labels(lxw_chart_series* s, const std::vector<std::string>& names) {
+  std::vector<lxw_chart_data_label> labels(names.size());
+  std::vector<lxw_chart_data_label*> list;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i].empty())
+      labels[i].hide = LXW_TRUE;
+    else
+      labels[i].value = const_cast<char*>(keep(names[i]));
+    list.push_back(&labels[i]);
+  }
+  list.push_back(nullptr);
+  chart_series_set_labels(s);
+  chart_series_set_labels_position(s, LXW_CHART_LABEL_POSITION_RIGHT);
+  check(chart_series_set_labels_custom(s, list.data()), "chart_series_set_labels_custom");
+}
+
+void Report::insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale,
+                          double y_scale) {
+  lxw_chart_options o{};
+  o.x_scale = x_scale * t_.chart_width / 480.0;  // libxlsxwriter's default chart: 480 × 288 px
+  o.y_scale = y_scale * t_.chart_height / 288.0;
+  o.x_offset = 4;
+  o.y_offset = 4;
+  check(worksheet_insert_chart_opt(ws, at.row, at.col, chart, &o), "worksheet_insert_chart");
+}
+
+Row Report::path_rows(lxw_worksheet* ws, Row r0,
+                     const std::vector<std::vector<geometry::Vec2>>& paths, lxw_format* xf) {
+  Row r = r0;
+  for (const auto& path : paths) {
+    if (path.empty()) continue;
+    for (const auto& p : drawn_points(path)) {
+      num(ws, r, 2, p.x, xf);
+      num(ws, r++, 3, p.z, xf);
+    }
+    ++r;  // an empty row: a gap between paths
+  }
+  return r;
+}
+
+}  // namespace pierre::io::detail

@@ -1,0 +1,118 @@
+// The data sheets: Trajectories and Crossings.
+#include "xlsx_report_writer.hpp"
+
+#include <algorithm>
+
+namespace pierre::io::detail {
+
+Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
+                     const char* csv) {
+  const std::string key = shown < total ? "capped" : "complete";
+  std::string s = replace_all(t_.get("titles", key), "{shown}", std::to_string(shown));
+  s = replace_all(replace_all(s, "{total}", std::to_string(total)), "{file}", csv);
+  s = replace_all(s, "{printed}", std::to_string(std::min<std::size_t>(shown, t_.print_rows)));
+  text(ws, r++, 0, s, note());
+  return r;
+}
+
+void Report::trajectories(lxw_worksheet* ws) {
+  page_setup(ws);
+  // A quarry run leads with the section of each row; its names come from that section.
+  const bool by_section = !d_.trajectory_sections.empty();
+  const Col c0 = by_section ? 1 : 0;
+  widths(ws, 0, 17 + c0, 11,
+         {{0, by_section ? 16 : 11}, {1 + c0, 20}, {2 + c0, 12}, {10 + c0, 14}});
+  text(ws, 0, 0, t_.get("titles", "trajectories"), title());
+  const std::size_t shown = std::min(d_.trajectories.size(), t_.trajectory_rows);
+  const std::uint64_t total = std::max<std::uint64_t>(d_.total_trajectories, d_.trajectories.size());
+  Row r = cap_note(ws, 1, shown, total, "trajectories.csv");
+  const Row head = r;
+  if (by_section) headings(ws, r, 0, "trajectories", {"section"}, 45);
+  headings(ws, r++, c0, "trajectories",
+           {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x",
+            "stop_z", "runout", "stop_reason", "duration", "impacts", "first_impact_x",
+            "first_impact_z", "max_jump_height", "max_speed", "max_energy"},
+           45);
+  worksheet_freeze_panes(ws, r, 1 + c0);
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
+             *lf = number("length"), *tf = number("time"), *sf = number("speed"),
+             *ef = number("energy");
+  for (std::size_t i = 0; i < shown; ++i, ++r) {
+    const auto& t = d_.trajectories[i];
+    const DataRow row = data_row(ws, r, d_.trajectory_sections, i);
+    const sim::Scenario* s = row.scenario;
+    row.num(0, static_cast<double>(t.trajectory), cf);
+    if (s && t.source < s->sources.size()) row.text(1, s->sources[t.source].name);
+    else row.num(1, t.source, cf);
+    if (s && t.block < s->blocks.size()) row.text(2, s->blocks[t.block].id);
+    else row.num(2, t.block, cf);
+    row.num(3, t.throw_index, cf);
+    row.num(4, t.mass, mf);
+    row.num(5, t.start.x, xf);
+    row.num(6, t.start.z, xf);
+    row.num(7, t.stop.x, xf);
+    row.num(8, t.stop.z, xf);
+    row.num(9, t.runout(), lf);
+    row.text(10, std::string(sim::to_string(t.stop_reason)), centred());
+    row.num(11, t.duration, tf);
+    row.num(12, t.impacts, cf);
+    if (t.has_first_impact) {
+      row.num(13, t.first_impact.x, xf);
+      row.num(14, t.first_impact.z, xf);
+    }
+    row.num(15, t.max_jump_height, lf);
+    row.num(16, t.max_speed, sf);
+    row.num(17, t.max_energy / 1000, ef);
+  }
+  const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
+  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 17 + c0), "worksheet_print_area");
+}
+
+void Report::crossings(lxw_worksheet* ws) {
+  page_setup(ws);
+  const bool by_section = !d_.crossing_sections.empty();
+  const Col c0 = by_section ? 1 : 0;
+  widths(ws, 0, 14 + c0, 11, {{0, by_section ? 16 : 11}, {1 + c0, 16}, {3 + c0, 14}});
+  text(ws, 0, 0, t_.get("titles", "crossings"), title());
+  const std::size_t shown = std::min(d_.crossings.size(), t_.crossing_rows);
+  const std::uint64_t total = std::max<std::uint64_t>(d_.total_crossings, d_.crossings.size());
+  Row r = cap_note(ws, 1, shown, total, "crossings.csv");
+  const Row head = r;
+  if (by_section) headings(ws, r, 0, "crossings", {"section"}, 45);
+  headings(ws, r++, c0, "crossings",
+           {"trajectory", "line", "chainage", "block", "mass", "time", "direction", "vx", "vz",
+            "speed", "omega", "translational_energy", "rotational_energy", "passing_height",
+            "sliding"},
+           45);
+  worksheet_freeze_panes(ws, r, 1 + c0);
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
+             *lf = number("length"), *tf = number("time"), *sf = number("speed"),
+             *ef = number("energy"), *gf = number("general");
+  for (std::size_t i = 0; i < shown; ++i, ++r) {
+    const auto& c = d_.crossings[i];
+    const DataRow row = data_row(ws, r, d_.crossing_sections, i);
+    const sim::Scenario* s = row.scenario;
+    row.num(0, static_cast<double>(c.trajectory), cf);
+    row.text(1, line_name(c.line));
+    row.num(2, line_chainage(c.line), xf);
+    if (s && c.block < s->blocks.size()) row.text(3, s->blocks[c.block].id);
+    else row.num(3, c.block, cf);
+    row.num(4, c.mass, mf);
+    row.num(5, c.time, tf);
+    row.num(6, c.direction, gf);
+    row.num(7, c.velocity.x, sf);
+    row.num(8, c.velocity.z, sf);
+    row.num(9, c.speed, sf);
+    row.num(10, c.omega, sf);
+    row.num(11, c.translational_energy / 1000, ef);
+    row.num(12, c.rotational_energy / 1000, ef);
+    row.num(13, c.height, lf);
+    row.num(14, c.sliding ? 1 : 0, cf);
+  }
+  const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
+  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 14 + c0), "worksheet_print_area");
+}
+
+}  // namespace pierre::io::detail

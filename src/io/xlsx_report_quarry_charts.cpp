@@ -1,0 +1,227 @@
+// The charts of a quarry row's sheet: its sections, and RD and ID.
+#include "xlsx_report_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pierre/stats/empirical_cdf.hpp"
+#include "pierre/stats/lognormal_fit.hpp"
+
+namespace pierre::io::detail {
+
+Row Report::quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, Row data_row,
+                                   Cell at, Col cdf_col, std::string_view which,
+                                   const design::QuarryRow& row) {
+  const bool rd = which == "rd";
+  const design::DistanceSample& sample = rd ? row.rd_sample : row.id_sample;
+  const design::DistanceStatistics& st = rd ? row.rd : row.id;
+  const auto& obs = rd ? row.observed_rd : row.observed_id;
+  const std::vector<double>& x = sample.normalized;
+  const std::string key(which);
+
+  ++data_row;
+  text(ws, data_row++, 0, t_.get("labels", which), section());
+  text(ws, data_row++, 0,
+       replace_all(replace_all(replace_all(h("quarry_chart", "source"), "{n}",
+                                           std::to_string(x.size())),
+                               "{zeros}", std::to_string(st.zeros)),
+                   "{censored}", std::to_string(st.censored)),
+       note());
+  headings(ws, data_row++, 0, "quarry_chart",
+           {"outline_x", "outline_y", "curve_x", "fitted_pdf", "empirical_cdf", "fitted_cdf",
+            "observed_x", "observed_cdf"});
+  const Row r0 = data_row;
+  lxw_format *hf = number("factor"), *pf = number("parameter");
+
+  // The columns: the positive finite values, density over every value (zeros and censored
+  // count in n), so that they compare with (1 − p0) f_logn.
+  double hi = 0;
+  std::size_t positive = 0;
+  for (double v : x)
+    if (std::isfinite(v) && v > 0) {
+      hi = std::max(hi, v);
+      ++positive;
+    }
+  if (obs)
+    for (double b : obs->breaks_h)
+      if (std::isfinite(b)) hi = std::max(hi, b);
+  if (!(hi > 0)) hi = 1;
+  const int bins = t_.histogram_bins;
+  const double w = hi / bins;
+  std::vector<double> density(static_cast<std::size_t>(bins), 0.0);
+  for (double v : x)
+    if (std::isfinite(v) && v > 0) {
+      const auto b = std::clamp(static_cast<long>(std::floor(v / w)), 0L, static_cast<long>(bins) - 1);
+      density[static_cast<std::size_t>(b)] += 1;
+    }
+  double dmax = 0;
+  for (double& d : density) {
+    d /= static_cast<double>(x.size()) * w;
+    dmax = std::max(dmax, d);
+  }
+  Row o = r0;
+  if (positive > 0)
+    for (int i = 0; i < bins; ++i) {
+      const double a = w * i, e = a + w, d = density[static_cast<std::size_t>(i)];
+      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, d}, std::pair{e, d}, std::pair{e, 0.0}}) {
+        num(ws, o, 0, px, hf);
+        num(ws, o++, 1, py, pf);
+      }
+    }
+  // Curves on an even grid from 0.
+  const int n = t_.curve_points;
+  std::vector<double> grid(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = hi * i / (n - 1);
+  const std::vector<double> ecdf =
+      x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
+  double cmax = 0;
+  for (int i = 0; i < n; ++i) {
+    const Row rr = r0 + static_cast<Row>(i);
+    const double g = grid[static_cast<std::size_t>(i)];
+    num(ws, rr, 2, g, hf);
+    if (st.fit) {
+      const double f = (1 - st.fit->zero_share) * stats::pdf(st.fit->positive, g);
+      num(ws, rr, 3, f, pf);
+      if (std::isfinite(f)) cmax = std::max(cmax, f);
+      num(ws, rr, 5, 1 - stats::exceedance_probability(*st.fit, g), pf);
+    }
+    num(ws, rr, 4, ecdf[static_cast<std::size_t>(i)], pf);
+  }
+  const Row rn = r0 + static_cast<Row>(n) - 1;
+  // Observed points: the break points of Eq 4.1 and the observed CDF there.
+  Row ob = r0;
+  if (obs)
+    for (std::size_t i = 0; i < obs->breaks_h.size() && i < obs->observed_cdf.size(); ++i) {
+      if (!std::isfinite(obs->breaks_h[i])) continue;
+      num(ws, ob, 6, obs->breaks_h[i], hf);
+      num(ws, ob++, 7, obs->observed_cdf[i], pf);
+    }
+  data_row = std::max({o, rn + 1, ob}) + 1;
+
+  auto axes = [&](lxw_chart* c) {
+    chart_axis_set_min(c->x_axis, 0);
+    chart_axis_set_max(c->x_axis, hi);
+    chart_axis_set_min(c->y_axis, 0);
+    chart_axis_set_num_format(c->x_axis, keep(t_.get("formats", "general")));
+  };
+  // Histogram with the fitted density.
+  if (positive > 0 || st.fit) {
+    lxw_chart* hc = scatter_chart(key + "_histogram", row.name);
+    if (positive > 0)
+      xy_series(hc, sheet, r0, o - 1, 0, 1, h("quarry_chart", "histogram"), t_.colour("histogram"),
+                1.25f);
+    if (st.fit)
+      xy_series(hc, sheet, r0, rn, 2, 3, h("quarry_chart", "fitted_pdf"), t_.colour("lognormal"),
+                2.0f);
+    axes(hc);
+    // A density spike at 0 must not flatten the columns.
+    if (dmax > 0 && cmax > 2.5 * dmax) chart_axis_set_max(hc->y_axis, 1.5 * dmax);
+    insert_chart(ws, at, hc);
+  }
+  // Empirical against fitted CDF, with the observed points.
+  if (!x.empty() || st.fit) {
+    lxw_chart* cc = scatter_chart(key + "_cdf", row.name);
+    if (!x.empty())
+      xy_series(cc, sheet, r0, rn, 2, 4, h("quarry_chart", "empirical_cdf"),
+                t_.colour("empirical"), 2.0f);
+    if (st.fit)
+      xy_series(cc, sheet, r0, rn, 2, 5, h("quarry_chart", "fitted_cdf"), t_.colour("lognormal"),
+                1.5f, LXW_CHART_LINE_DASH_DASH);
+    if (ob > r0) {
+      lxw_chart_series* s = xy_series(cc, sheet, r0, ob - 1, 6, 7, h("quarry_chart", "observed_cdf"),
+                                      t_.colour("observed"), 1.0f);
+      markers(s, LXW_CHART_MARKER_CIRCLE, 5, t_.colour("observed"), false);
+    }
+    axes(cc);
+    chart_axis_set_max(cc->y_axis, 1);
+    insert_chart(ws, {at.row, cdf_col}, cc);
+  }
+  return data_row;
+}
+
+Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row,
+                                 Cell at, const design::QuarrySectionResult& s) {
+  const ReportData::QuarrySectionView* view = section_view(s.spec.name);
+  if (!view || !view->profile || view->profile->vertices().empty()) return data_row;
+  const geometry::Profile& prof = *view->profile;
+  const auto& g = s.geometry;
+
+  ++data_row;
+  text(ws, data_row++, 0, s.spec.name, section());
+  const Row head = data_row;
+  std::size_t k = 0;
+  for (const char* key : {"profile", "paths", "toe", "danger_zone", "first_impact_zone", "work_areas"}) {
+    text(ws, head, static_cast<Col>(2 * k), h("quarry_chart", key), heading());
+    text(ws, head + 1, static_cast<Col>(2 * k), h("quarry_chart", "x"), heading());
+    text(ws, head + 1, static_cast<Col>(2 * k + 1), h("quarry_chart", "z"), heading());
+    ++k;
+  }
+  const Row r0 = head + 2;
+  lxw_format* xf = number("coordinate");
+
+  lxw_chart* chart = scatter_chart("quarry_section", s.spec.name);
+  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin, xmin = zmin, xmax = -zmin;
+  for (const auto& p : prof.vertices()) {
+    zmin = std::min(zmin, p.z);
+    zmax = std::max(zmax, p.z);
+    xmin = std::min(xmin, p.x);
+    xmax = std::max(xmax, p.x);
+  }
+  Row last = r0;
+  // Paths first, under the profile.
+  const Row pr = path_rows(ws, r0, view->paths, xf);
+  if (pr > r0)
+    xy_series(chart, sheet, r0, pr - 2, 2, 3, h("quarry_chart", "paths"), t_.colour("paths"), 0.75f);
+  Row vr = r0;
+  for (const auto& p : prof.vertices()) {
+    num(ws, vr, 0, p.x, xf);
+    num(ws, vr++, 1, p.z, xf);
+  }
+  xy_series(chart, sheet, r0, vr - 1, 0, 1, h("quarry_chart", "profile"), t_.colour("profile"), 2.25f);
+  last = std::max({last, pr, vr});
+
+  // Vertical marks on the ground: the toe, ID_gov and RD_gov.
+  const double lh = std::max(t_.profile_line_height, 0.25 * g.height);
+  auto ground = [&](double x) {
+    const auto gp = prof.top_ground(x);
+    return gp ? gp->z : g.toe.z;
+  };
+  auto mark = [&](Col c, double x, std::string_view key, std::uint32_t colour, float width,
+                  std::uint8_t dash) {
+    if (!std::isfinite(x)) return;
+    const double z = ground(x);
+    num(ws, r0, c, x, xf);
+    num(ws, r0, c + 1, z, xf);
+    num(ws, r0 + 1, c, x, xf);
+    num(ws, r0 + 1, c + 1, z + lh, xf);
+    xy_series(chart, sheet, r0, r0 + 1, c, c + 1, h("quarry_chart", key), colour, width, dash);
+    last = std::max(last, r0 + 2);
+  };
+  mark(4, g.toe.x, "toe", t_.colour("toe"), 1.25f, LXW_CHART_LINE_DASH_DASH);
+  mark(6, g.toe.x + g.direction * s.danger_zone, "danger_zone", t_.colour("danger_zone"), 2.5f,
+       LXW_CHART_LINE_DASH_SOLID);
+  mark(8, g.toe.x + g.direction * s.first_impact_zone, "first_impact_zone",
+       t_.colour("first_impact_zone"), 2.0f, LXW_CHART_LINE_DASH_SOLID);
+  // Work areas: points on the floor.
+  Row wr = r0;
+  for (const auto& w : s.spec.work_areas) {
+    const double x = g.toe.x + g.direction * w.distance;
+    num(ws, wr, 10, x, xf);
+    num(ws, wr++, 11, ground(x), xf);
+  }
+  if (wr > r0) {
+    lxw_chart_series* sr = xy_series(chart, sheet, r0, wr - 1, 10, 11, h("quarry_chart", "work_areas"),
+                                     t_.colour("work_areas"), 1.0f);
+    markers(sr, LXW_CHART_MARKER_TRIANGLE, 9, t_.colour("work_areas"), false);
+    std::vector<std::string> names;
+    for (const auto& w : s.spec.work_areas) names.push_back(w.name);
+    point_labels(sr, names);  // two work areas are two like triangles otherwise
+    last = std::max(last, wr);
+  }
+  equal_scale(chart, xmin, xmax, zmin, zmax, 2.0, 1.4);
+  chart_axis_set_num_format(chart->x_axis, keep(t_.get("formats", "general")));
+  insert_chart(ws, at, chart, 2.0, 1.4);
+  return last + 1;
+}
+
+}  // namespace pierre::io::detail

@@ -1,0 +1,158 @@
+// The Summary sheet.
+#include "xlsx_report_writer.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace pierre::io::detail {
+
+void Report::summary(lxw_worksheet* ws) {
+  page_setup(ws);
+  width(ws, 0, 0, 16);
+  width(ws, 1, 1, 20);
+  width(ws, 2, 2, 34);
+  width(ws, 3, 4, 12);
+  width(ws, 5, 5, 10);
+  width(ws, 6, 6, 26);
+  width(ws, 7, 7, 10);
+  width(ws, 8, 8, 44);
+  width(ws, 9, 11, 12);
+
+  const LoadedScenario* sc = d_.scenario;
+  text(ws, 0, 0, t_.get("titles", "summary"), title());
+  check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
+  Row r = 2;
+  text(ws, r++, 0, t_.get("titles", "run"), section());
+  auto label = [&](std::string_view key) { text(ws, r, 0, t_.get("labels", key), bold()); };
+  label("project");
+  text(ws, r++, 2, sc ? sc->scenario.name : std::string());
+  if (sc && !sc->description.empty()) {
+    label("description");
+    text(ws, r++, 2, sc->description);
+  }
+  if (sc) {
+    label("scenario_file");
+    text(ws, r++, 2, sc->file.string());
+  }
+  label("date");
+  {
+    const auto ymd = parse_date(d_.date);
+    lxw_datetime dt{static_cast<int>(ymd.year()), static_cast<int>(unsigned(ymd.month())),
+                    static_cast<int>(unsigned(ymd.day())), 0, 0, 0.0};
+    lxw_format* f = number("date");
+    format_set_align(f, LXW_ALIGN_LEFT);
+    check(worksheet_write_datetime(ws, r++, 2, &dt, f), "worksheet_write_datetime");
+  }
+  label("version");
+  text(ws, r++, 2, d_.pierre_version);
+  label("seed");
+  if (d_.seed <= (std::uint64_t{1} << 53)) {  // exact as a double
+    num(ws, r++, 2, static_cast<double>(d_.seed), number("general", 2));
+  } else {
+    text(ws, r++, 2, std::to_string(d_.seed));  // a double would round it
+  }
+  label("throws");
+  num(ws, r++, 2, d_.throws, number("count", 2));
+  label("trajectories");
+  num(ws, r++, 2,
+      static_cast<double>(d_.total_trajectories ? d_.total_trajectories
+                                                : d_.statistics.trajectories),
+      number("count", 2));
+  label("rule_sets");
+  if (d_.rule_sets.empty()) text(ws, r++, 2, t_.get("labels", "none"));
+  for (const auto& rs : d_.rule_sets) text(ws, r++, 2, rs);
+  if (d_.statistics.runout.count > 0) {
+    const auto& ro = d_.statistics.runout;
+    for (auto [key, v] : {std::pair{"runout_p50", ro.p50}, std::pair{"runout_p95", ro.p95},
+                          std::pair{"runout_p99", ro.p99}, std::pair{"runout_max", ro.max}}) {
+      label(key);
+      num(ws, r++, 2, v, number("length", 2));
+    }
+  }
+
+  // Recommended barriers.
+  if (!d_.barriers.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "barriers"), section());
+    headings(ws, r++, 0, "barriers",
+             {"name", "line", "rules", "chainage", "energy_class", "class_mel", "class_sel",
+              "mel_req", "sel_req", "interception_height"},
+             45);
+    for (const auto& b : d_.barriers) {
+      text(ws, r, 0, b.spec.name);
+      text(ws, r, 1, b.spec.line);
+      text(ws, r, 2, b.rules_name.empty() ? b.spec.rules : b.rules_name, wrap());
+      num(ws, r, 3, b.chainage, number("coordinate", 1));
+      if (b.energy_class) {
+        num(ws, r, 4, b.energy_class->number, number("count", 1));
+        num(ws, r, 5, b.energy_class->mel_kJ, number("energy", 1));
+        num(ws, r, 6, b.energy_class->sel_kJ, number("energy", 1));
+      } else {
+        text(ws, r, 4, t_.get("labels", "none"), centred());
+      }
+      num(ws, r, 7, b.MEL_req_kJ, number("energy", 1));
+      num(ws, r, 8, b.SEL_req_kJ, number("energy", 1));
+      num(ws, r, 9, b.h_i, number("length", 1));
+      const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
+      fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
+      ++r;
+    }
+    // How each class was chosen: on which capacity, from which table (its source).
+    for (const auto& b : d_.barriers)
+      if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
+        text(ws, r++, 0, b.spec.name + ": class " + std::to_string(b.energy_class->number) + ", " +
+                             it->second, note());
+  }
+
+  // Observation lines.
+  if (!d_.statistics.lines.empty()) {
+    ++r;
+    text(ws, r++, 0, t_.get("titles", "lines"), section());
+    headings(ws, r++, 0, "lines",
+             {"name", "chainage", "count", "not_reached", "speed_mean", "speed_p95",
+              "height_p95", "energy_p95", "energy_max"},
+             45);
+    for (const auto& l : d_.statistics.lines) {
+      text(ws, r, 0, l.name);
+      num(ws, r, 1, l.chainage, number("coordinate", 1));
+      num(ws, r, 2, static_cast<double>(l.count), number("count", 1));
+      num(ws, r, 3, static_cast<double>(l.not_reached), number("count", 1));
+      num(ws, r, 4, l.count ? l.speed.mean : kNaN, number("speed", 1));
+      num(ws, r, 5, l.count ? l.speed.p95 : kNaN, number("speed", 1));
+      num(ws, r, 6, l.count ? l.height.p95 : kNaN, number("length", 1));
+      num(ws, r, 7, l.count ? l.translational_energy.p95 / 1000 : kNaN, number("energy", 1));
+      num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy", 1));
+      ++r;
+    }
+  }
+
+  // Quarry danger zones: Tables 6.2/6.3's rows and their average.
+  if (d_.quarry) r = quarry_summary(ws, r);
+
+  // Every check line, whatever its subject: the caller's, then the quarry design's that the
+  // caller did not pass (same subject and id).
+  std::vector<design::CheckLine> lines = d_.checks;
+  if (d_.quarry)
+    for (const auto& l : d_.quarry->checks)
+      if (std::none_of(d_.checks.begin(), d_.checks.end(), [&](const design::CheckLine& c) {
+            return c.subject == l.subject && c.id == l.id;
+          }))
+        lines.push_back(l);
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "checks"), section());
+  // The verdict first: how many lines FAIL, as `pierre check` counts them.
+  std::size_t n[4] = {0, 0, 0, 0};  // pass, fail, warn, N/A
+  for (const auto& l : lines) ++n[static_cast<int>(l.status)];
+  std::string verdict = lines.empty() ? t_.get("labels", "no_checks") : t_.get("labels", "verdict");
+  for (auto [key, v] : {std::pair{"{lines}", lines.size()}, {"{fail}", n[1]}, {"{warn}", n[2]},
+                        {"{pass}", n[0]}, {"{na}", n[3]}})
+    verdict = replace_all(verdict, key, std::to_string(v));
+  text(ws, r++, 0, verdict, bold());
+  const Row head = r;
+  r = check_table(ws, r, lines, true);
+  check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : 9),
+        "worksheet_print_area");
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+}
+
+}  // namespace pierre::io::detail

@@ -1,0 +1,227 @@
+// The writer of report.xlsx (pierre/io/xlsx_report.hpp), internal to the io layer: the class
+// Report that lays a ReportData out on a libxlsxwriter workbook by the template, and the small
+// helpers its files share. Its members are spread over one file per purpose:
+//   xlsx_report.cpp         write_report and Report::write (properties, sheets in the tab order)
+//   xlsx_report_cells.cpp   formats, cells, rows, page set-up, names, the check table
+//   xlsx_report_charts.cpp  chart helpers and the drawn paths
+//   xlsx_report_summary.cpp, _inputs.cpp, _barrier.cpp, _profile.cpp   a sheet each
+//   xlsx_report_quarry.cpp, _quarry_charts.cpp   a quarry row's sheet and its Summary table
+//   xlsx_report_data_sheets.cpp   Trajectories and Crossings
+#pragma once
+
+#include <xlsxwriter.h>
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <limits>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "pierre/io/report_data.hpp"
+#include "pierre/io/report_template.hpp"
+
+namespace pierre::io::detail {
+
+using Row = lxw_row_t;
+using Col = lxw_col_t;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Every libxlsxwriter return code is checked: a failure is a std::runtime_error saying what.
+[[noreturn]] void fail(std::string_view what, lxw_error e);
+void check(lxw_error e, std::string_view what);
+template <class T>
+T* check_ptr(T* p, std::string_view what) {
+  if (!p) throw std::runtime_error(fmt::format("report.xlsx: {} failed", what));
+  return p;
+}
+
+std::string replace_all(std::string s, std::string_view key, std::string_view value);
+std::string lower(std::string s);
+// An ISO date "YYYY-MM-DD" (anything after the tenth character is ignored).
+std::chrono::year_month_day parse_date(const std::string& s);
+// Four significant digits, "—" for a NaN or an infinity (numbers inside a text).
+std::string format_number(double v);
+
+struct Cell {
+  Row row;
+  Col col;
+};
+
+class Report {
+ public:
+  Report(lxw_workbook* wb, const ReportData& data, const ReportTemplate& tpl)
+      : wb_(wb), d_(data), t_(tpl) {}
+
+  void write();
+
+ private:
+  // -- formats
+  lxw_format* add_format() { return check_ptr(workbook_add_format(wb_), "workbook_add_format"); }
+  // A number format of the template, cached; `align`: 0 as Excel does (right), 1 centred,
+  // 2 left.
+  lxw_format* number(std::string_view kind, int align = 0);
+  // The format of a check line's value: by unit, else by size (integers, tiny probabilities).
+  lxw_format* check_number(const std::string& unit, double v, int align);
+  lxw_format* heading();
+  lxw_format* title();
+  lxw_format* section();
+  lxw_format* note();
+  lxw_format* bold();
+  lxw_format* wrap();
+  lxw_format* centred();
+  lxw_format* top();
+  lxw_format* indented();
+  lxw_format* centred_bold();
+  lxw_format* status_format(std::string_view status);  // for the conditional formats
+
+  // -- cells
+  void text(lxw_worksheet* ws, Row r, Col c, const std::string& s, lxw_format* f = nullptr);
+  void num(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
+  void opt(lxw_worksheet* ws, Row r, Col c, const std::optional<double>& v, lxw_format* f) {
+    if (v) num(ws, r, c, *v, f);
+  }
+  void count(lxw_worksheet* ws, Row r, Col c, std::uint64_t v) {
+    num(ws, r, c, static_cast<double>(v), number("count"));
+  }
+  // A heading row: the template's headings of `table` for `keys`, from column `c0`.
+  void headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
+                std::initializer_list<std::string_view> keys, double height = 30);
+  void width(lxw_worksheet* ws, Col c0, Col c1, double w) {
+    check(worksheet_set_column(ws, c0, c1, w, nullptr), "worksheet_set_column");
+  }
+  // Columns c0 … c1 at `base`, some of them wider: one <col> entry per run of equal width.
+  // (Overlapping entries, a range set and then one column in it again, are what libxlsxwriter
+  // writes as it is told; LibreOffice then ignores the wider one and Excel may repair.)
+  void widths(lxw_worksheet* ws, Col c0, Col c1, double base,
+              std::initializer_list<std::pair<Col, double>> wider) {
+    auto at = [&](Col c) {
+      for (const auto& [col, w] : wider)
+        if (col == c) return w;
+      return base;
+    };
+    for (Col a = c0; a <= c1;) {
+      Col b = a;
+      while (b < c1 && at(b + 1) == at(a)) ++b;
+      width(ws, a, b, at(a));
+      a = b + 1;
+    }
+  }
+  const std::string& h(std::string_view table, std::string_view key) const {
+    return t_.get("headings." + std::string(table), key);
+  }
+  const char* keep(std::string s) { return strings_.emplace_back(std::move(s)).c_str(); }
+  // One row of a data sheet (Trajectories, Crossings). In a quarry run its first cell names the
+  // row's section and the others move one column right; names come from that section.
+  struct DataRow {
+    Report& rep;
+    lxw_worksheet* ws;
+    Row r;
+    Col c0;
+    const sim::Scenario* scenario;
+    void num(Col c, double v, lxw_format* f) const { rep.num(ws, r, c + c0, v, f); }
+    void text(Col c, const std::string& v, lxw_format* f = nullptr) const {
+      rep.text(ws, r, c + c0, v, f);
+    }
+  };
+  DataRow data_row(lxw_worksheet* ws, Row r, const std::vector<std::uint32_t>& sections,
+                   std::size_t i) {
+    DataRow row{*this, ws, r, sections.empty() ? Col{0} : Col{1},
+                d_.scenario ? &d_.scenario->scenario : nullptr};
+    if (d_.scenario && i < sections.size() && sections[i] < d_.scenario->quarries.size()) {
+      const auto& q = d_.scenario->quarries[sections[i]];
+      text(ws, r, 0, q.spec.name);
+      row.scenario = &q.scenario;
+    }
+    return row;
+  }
+  // Sets row r's height to show every wrapped text: (text, width of its cells in characters).
+  void fit_row(lxw_worksheet* ws, Row r,
+               std::initializer_list<std::pair<const std::string*, double>> cells);
+  void page_setup(lxw_worksheet* ws);
+  void status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c);
+
+  // -- charts
+  lxw_chart* scatter_chart(std::string_view chart_key, const std::string& name);
+  lxw_chart_series* xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc, Col yc,
+                 const std::string& name, std::uint32_t colour, float line_width,
+                 std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
+  // Filled markers of one colour on a series; with `line_too` false the points stand alone.
+  void markers(lxw_chart_series* s, std::uint8_t type, std::uint8_t size, lxw_color_t colour,
+               bool line_too);
+  void insert_chart(lxw_worksheet* ws, Cell at, lxw_chart* chart, double x_scale = 1,
+                    double y_scale = 1);
+  // Axis bounds that draw a section at one scale in x and z (a 32° slope looks 32°): the
+  // longer extent for its axis fixes metres per pixel of the plot area, the other axis gets
+  // as many metres as its pixels hold. The plot area is taken as its usual share of the chart.
+  void equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin, double zmax,
+                   double x_scale, double y_scale);
+  // The drawing data of the quarry section of that name (nullptr when none was passed).
+  const ReportData::QuarrySectionView* section_view(const std::string& name) const {
+    for (const auto& v : d_.quarry_sections)
+      if (v.name == name) return &v;
+    return nullptr;
+  }
+  // A label per point of a series, by name; an empty name hides that point's label.
+  void point_labels(lxw_chart_series* s, const std::vector<std::string>& names);
+  // Writes the drawn points of `paths` in columns 2 (x) and 3 (z) from row r0, an empty row
+  // after each path; returns the row after the last one written.
+  Row path_rows(lxw_worksheet* ws, Row r0, const std::vector<std::vector<geometry::Vec2>>& paths,
+                lxw_format* xf);
+
+  // -- sheets
+  // The sheet of a barrier or a quarry row: the template's sheets.<key> with {name} replaced.
+  std::string item_sheet_name(std::string_view key, const std::string& item,
+                              std::vector<std::string>& used);
+  void summary(lxw_worksheet* ws);
+  Row check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
+                  bool subject);
+  void inputs(lxw_worksheet* ws);
+  void barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b);
+  void profile(lxw_worksheet* ws, const std::string& sheet);
+  // Quarry danger zones (xlsx_report_quarry.cpp).
+  Row quarry_summary(lxw_worksheet* ws, Row r);
+  void quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t row);
+  // A distance (m or /H): a number, or "beyond the profile" for +infinity.
+  void distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
+  // The histogram, CDF and fitted curves of one distance of a row (data block at `data_row`,
+  // charts at `at` and beside it); returns the next free data row.
+  Row quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
+                             Col cdf_col, std::string_view which, const design::QuarryRow& row);
+  Row quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
+                           const design::QuarrySectionResult& s);
+  void trajectories(lxw_worksheet* ws);
+  void crossings(lxw_worksheet* ws);
+  Row cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
+               const char* csv);
+
+  std::string line_name(std::uint32_t i) const;
+  double line_chainage(std::uint32_t i) const;
+  std::optional<std::uint32_t> line_index(const std::string& name) const;
+
+  lxw_workbook* wb_;
+  const ReportData& d_;
+  const ReportTemplate& t_;
+  // The workbook's formats, made on first use and shared by name: libxlsxwriter keeps every
+  // format it is given, so one per cell would bloat the file. `setup` styles a new one.
+  template <class Setup>
+  lxw_format* cached(std::string_view key, Setup&& setup) {
+    if (auto it = formats_.find(key); it != formats_.end()) return it->second;
+    lxw_format* f = add_format();
+    setup(f);
+    return formats_.emplace(std::string(key), f).first->second;
+  }
+  std::map<std::string, lxw_format*, std::less<>> formats_;
+  std::deque<std::string> strings_;
+  std::deque<std::vector<lxw_row_t>> breaks_;  // kept alive until the workbook is written
+};
+
+}  // namespace pierre::io::detail
