@@ -1,4 +1,7 @@
-// A barrier's sheet.
+// A barrier's sheet: the tables (statistics and fits, bootstrap intervals, Table 4.1's design
+// values, the factors and how each was obtained, Table 4.2's exceedance, the check lines), then
+// on a page of their own the histogram and the CDF of speed, height and energy at the barrier's
+// line, drawn from a data block below them.
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>
@@ -51,13 +54,54 @@ Histogram histogram(std::span<const double> x, int bins) {
 
 }  // namespace
 
+// The sample at the barrier's line, energies in kJ.
+struct Report::BarrierSample {
+  std::vector<double> speed, height, energy, rotational;
+};
+
+// A column of the statistics table: a quantity, its fit (none for the rotational energy), and
+// the sample of its empirical percentiles (empty for an observed quantity).
+struct Report::StatisticsColumn {
+  const design::QuantityFit* fit;
+  const stats::SampleSummary* summary;
+  std::string_view key, fmt;
+  const std::vector<double>* sample;
+};
+
+// A quantity drawn on the chart page: its sample at the line and its fits.
+struct Report::BarrierPlot {
+  std::string_view key, fmt;
+  const std::vector<double>* sample;
+  const design::QuantityFit* fit;
+};
+
+// Where a quantity's data block went: the bins and the curves from row r0, the columns' outline
+// up to (not including) row `outline_end`, the curves up to row `curves_last`, on x from lo to hi.
+struct Report::BarrierChartData {
+  Row r0, outline_end, curves_last;
+  double lo, hi;
+  bool columns;  // the sample has columns to draw
+};
+
 void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b) {
   page_setup(ws);
   width(ws, 0, 0, 34);
   width(ws, 1, 12, 14);
   text(ws, 0, 0, replace_all(t_.get("titles", "barrier"), "{name}", b.spec.name), title());
   check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
-  Row r = 2;
+  Row r = barrier_overview(ws, 2, b);
+  const BarrierSample sample = barrier_sample(b);
+  r = barrier_statistics(ws, r, b, sample);
+  r = barrier_bootstrap(ws, r, b);
+  r = barrier_design_values(ws, r, b);
+  r = barrier_factors(ws, r, b);
+  r = barrier_exceedance(ws, r, b);
+  r = barrier_checks(ws, r, b);
+  barrier_charts(ws, sheet, r, b, sample);
+}
+
+// The line, the rules, how many trajectories crossed and the bootstrap's seed.
+Row Report::barrier_overview(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
   auto kv_text = [&](std::string_view label, const std::string& v) {
     text(ws, r, 0, std::string(label), bold());
     text(ws, r++, 1, v);
@@ -78,43 +122,45 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
     num(ws, r++, 1, static_cast<double>(b.bootstrap_seed), number("count"));
   else
     text(ws, r++, 1, std::to_string(b.bootstrap_seed));
+  return r;
+}
 
-  // The sample at the line, from the report's crossings (first crossing in the main direction).
-  std::vector<double> speed, height, energy, rotational;
+// The sample at the line: the one the design used (first crossings in the main direction), else
+// the same taken from the report's crossings.
+Report::BarrierSample Report::barrier_sample(const design::BarrierDesign& b) const {
+  BarrierSample s;
   const auto li = line_index(b.spec.line);
   const int dir = d_.scenario ? d_.scenario->scenario.profile.main_direction() : 1;
   if (li && d_.samples && *li < d_.samples->lines().size()) {
-    // The whole sample the design used (first crossings in the main direction).
     const design::LineSamples& ls = d_.samples->lines()[*li];
-    speed = ls.speed;
-    height = ls.height;
-    for (double e : ls.translational_energy) energy.push_back(e / 1000);
-    for (double e : ls.rotational_energy) rotational.push_back(e / 1000);
+    s.speed = ls.speed;
+    s.height = ls.height;
+    for (double e : ls.translational_energy) s.energy.push_back(e / 1000);
+    for (double e : ls.rotational_energy) s.rotational.push_back(e / 1000);
   } else if (li) {
     std::uint64_t last = std::numeric_limits<std::uint64_t>::max();
     for (const auto& c : d_.crossings) {
       if (c.line != *li || c.direction != dir || c.trajectory == last) continue;
       last = c.trajectory;
-      speed.push_back(c.speed);
-      height.push_back(c.height);
-      energy.push_back(c.translational_energy / 1000);
-      rotational.push_back(c.rotational_energy / 1000);
+      s.speed.push_back(c.speed);
+      s.height.push_back(c.height);
+      s.energy.push_back(c.translational_energy / 1000);
+      s.rotational.push_back(c.rotational_energy / 1000);
     }
   }
+  return s;
+}
 
-  // Statistics: one row per statistic, one column per quantity.
+// Statistics: one row per statistic, one column per quantity (the observed ones when given).
+Row Report::barrier_statistics(lxw_worksheet* ws, Row r, const design::BarrierDesign& b,
+                               const BarrierSample& sample) {
   ++r;
   text(ws, r++, 0, t_.get("titles", "statistics"), section());
-  struct Q {
-    const design::QuantityFit* fit;
-    const stats::SampleSummary* summary;
-    std::string_view key, fmt;
-    const std::vector<double>* sample;  // for the empirical percentiles (may be empty)
-  };
-  std::vector<Q> qs = {{&b.speed, &b.speed.summary, "speed", "speed", &speed},
-                       {&b.height, &b.height.summary, "height", "length", &height},
-                       {&b.energy, &b.energy.summary, "energy", "energy", &energy},
-                       {nullptr, &b.rotational_energy, "rotational_energy", "energy", &rotational}};
+  std::vector<StatisticsColumn> qs = {
+      {&b.speed, &b.speed.summary, "speed", "speed", &sample.speed},
+      {&b.height, &b.height.summary, "height", "length", &sample.height},
+      {&b.energy, &b.energy.summary, "energy", "energy", &sample.energy},
+      {nullptr, &b.rotational_energy, "rotational_energy", "energy", &sample.rotational}};
   const std::vector<double> none;
   if (b.observed_speed) qs.push_back({&*b.observed_speed, &b.observed_speed->summary,
                                       "observed_speed", "speed", &none});
@@ -126,43 +172,46 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
   for (std::size_t i = 0; i < qs.size(); ++i)
     text(ws, r, static_cast<Col>(1 + i), h("statistics", qs[i].key), heading());
   check(worksheet_set_row(ws, r++, 30, nullptr), "worksheet_set_row");
-  // P50 / P95 (empirical, type 7) of the sample drawn from the report's crossings.
   const char* rows[] = {"count", "mean", "sd", "min", "max", "p50", "p95", "weibull_k",
                         "weibull_lambda", "weibull_ks_d", "weibull_ks_p", "lognormal_mu",
                         "lognormal_sigma", "lognormal_ks_d", "lognormal_ks_p"};
   for (const char* stat : rows) {
-    const std::string_view s = stat;
-    text(ws, r, 0, h("statistics", s), bold());
-    for (std::size_t i = 0; i < qs.size(); ++i) {
-      const Q& q = qs[i];
-      const Col c = static_cast<Col>(1 + i);
-      lxw_format* qf = number(q.fmt);
-      const auto& sm = *q.summary;
-      if (s == "count") count(ws, r, c, sm.count);
-      else if (s == "mean") num(ws, r, c, sm.count ? sm.mean : kNaN, qf);
-      else if (s == "sd") num(ws, r, c, sm.count > 1 ? sm.standard_deviation : kNaN, qf);
-      else if (s == "min") num(ws, r, c, sm.count ? sm.min : kNaN, qf);
-      else if (s == "max") num(ws, r, c, sm.count ? sm.max : kNaN, qf);
-      else if (s == "p50" || s == "p95") {
-        if (!q.sample->empty()) num(ws, r, c, stats::percentile(*q.sample, s == "p50" ? 50 : 95), qf);
-      } else if (!q.fit) {
-        continue;
-      } else if (s == "weibull_k" && q.fit->weibull) num(ws, r, c, q.fit->weibull->shape, number("parameter"));
-      else if (s == "weibull_lambda" && q.fit->weibull) num(ws, r, c, q.fit->weibull->scale, qf);
-      else if (s == "weibull_ks_d" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->statistic, number("parameter"));
-      else if (s == "weibull_ks_p" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->p_value_stephens, number("p_value"));
-      else if (s == "lognormal_mu" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->mu, number("parameter"));
-      else if (s == "lognormal_sigma" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->sigma, number("parameter"));
-      else if (s == "lognormal_ks_d" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->statistic, number("parameter"));
-      else if (s == "lognormal_ks_p" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->p_value_stephens, number("p_value"));
-    }
+    text(ws, r, 0, h("statistics", stat), bold());
+    for (std::size_t i = 0; i < qs.size(); ++i) statistic(ws, r, static_cast<Col>(1 + i), stat, qs[i]);
     ++r;
   }
   for (const auto& q : qs)
     if (q.fit && !q.fit->error.empty())
       text(ws, r++, 0, fmt::format("{}: {}", h("statistics", q.key), q.fit->error), note());
+  return r;
+}
 
-  // Bootstrap intervals.
+// One cell of the statistics table; P50 and P95 are empirical (type 7) from the sample.
+void Report::statistic(lxw_worksheet* ws, Row r, Col c, std::string_view s,
+                       const StatisticsColumn& q) {
+  lxw_format* qf = number(q.fmt);
+  const auto& sm = *q.summary;
+  if (s == "count") count(ws, r, c, sm.count);
+  else if (s == "mean") num(ws, r, c, sm.count ? sm.mean : kNaN, qf);
+  else if (s == "sd") num(ws, r, c, sm.count > 1 ? sm.standard_deviation : kNaN, qf);
+  else if (s == "min") num(ws, r, c, sm.count ? sm.min : kNaN, qf);
+  else if (s == "max") num(ws, r, c, sm.count ? sm.max : kNaN, qf);
+  else if (s == "p50" || s == "p95") {
+    if (!q.sample->empty()) num(ws, r, c, stats::percentile(*q.sample, s == "p50" ? 50 : 95), qf);
+  } else if (!q.fit) {
+    return;
+  } else if (s == "weibull_k" && q.fit->weibull) num(ws, r, c, q.fit->weibull->shape, number("parameter"));
+  else if (s == "weibull_lambda" && q.fit->weibull) num(ws, r, c, q.fit->weibull->scale, qf);
+  else if (s == "weibull_ks_d" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->statistic, number("parameter"));
+  else if (s == "weibull_ks_p" && q.fit->weibull_ks) num(ws, r, c, q.fit->weibull_ks->p_value_stephens, number("p_value"));
+  else if (s == "lognormal_mu" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->mu, number("parameter"));
+  else if (s == "lognormal_sigma" && q.fit->lognormal) num(ws, r, c, q.fit->lognormal->sigma, number("parameter"));
+  else if (s == "lognormal_ks_d" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->statistic, number("parameter"));
+  else if (s == "lognormal_ks_p" && q.fit->lognormal_ks) num(ws, r, c, q.fit->lognormal_ks->p_value_stephens, number("p_value"));
+}
+
+// Bootstrap intervals of v_k, h_k, E_d and h_i.
+Row Report::barrier_bootstrap(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
   ++r;
   text(ws, r++, 0, t_.get("titles", "bootstrap"), section());
   headings(ws, r++, 0, "bootstrap",
@@ -188,8 +237,11 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
     }
     ++r;
   }
+  return r;
+}
 
-  // Design table (Table 4.1's columns).
+// The design values (Table 4.1's columns).
+Row Report::barrier_design_values(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
   ++r;
   text(ws, r++, 0, t_.get("titles", "design"), section());
   headings(ws, r++, 1, "design", {"v_d", "m_d", "E_d", "sel_req", "mel_req", "h_i", "energy_class"},
@@ -205,9 +257,12 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
     num(ws, r, 7, b.energy_class->number, number("count"));
   else
     text(ws, r, 7, t_.get("labels", "none"));
-  r += 2;
+  return r + 1;
+}
 
-  // The factors and design quantities, with how each was obtained.
+// The factors and design quantities, with how each was obtained.
+Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
+  ++r;
   text(ws, r++, 0, t_.get("titles", "factors"), section());
   headings(ws, r, 0, "factors", {"quantity", "value", "unit"});
   check(worksheet_merge_range(ws, r, 3, r, 8, h("factors", "how").c_str(), heading()),
@@ -252,8 +307,11 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
     text(ws, r, 0, h("factors", "residual_height_category"), bold());
     text(ws, r++, 1, b.residual_height_category);
   }
+  return r;
+}
 
-  // Exceedance (Table 4.2's columns).
+// The probabilities of exceeding the barrier's capacities (Table 4.2's columns).
+Row Report::barrier_exceedance(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
   ++r;
   text(ws, r++, 0, t_.get("titles", "exceedance"), section());
   headings(ws, r++, 0, "exceedance",
@@ -268,8 +326,11 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
     if (e.observed_weibull) num(ws, r, 5, *e.observed_weibull, number("probability"));
     ++r;
   }
+  return r;
+}
 
-  // This barrier's check lines.
+// This barrier's check lines, then the design's notes.
+Row Report::barrier_checks(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
   if (!b.checks.empty()) {
     ++r;
     text(ws, r++, 0, t_.get("titles", "barrier_checks"), section());
@@ -281,8 +342,13 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
     text(ws, r++, 0, t_.get("titles", "notes"), section());
     for (const auto& n : b.notes) text(ws, r++, 0, n, note());
   }
+  return r;
+}
 
-  // ---- charts and their data ----
+// The charts on a page of their own after the tables, a row of two per quantity; their data
+// block below them stays on the sheet, out of the print area.
+void Report::barrier_charts(lxw_worksheet* ws, const std::string& sheet, Row r,
+                            const design::BarrierDesign& b, const BarrierSample& sample) {
   ++r;
   const Row chart_row = r;
   const Row rows_per_chart = static_cast<Row>(std::ceil(t_.chart_height / 20.0)) + 1;
@@ -291,128 +357,137 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
   text(ws, data_row++, 0, t_.get("titles", "chart_data"), section());
   text(ws, data_row++, 0,
        replace_all(replace_all(replace_all(h("histogram", "source"), "{n}",
-                                           std::to_string(speed.size())),
+                                           std::to_string(sample.speed.size())),
                                "{line}", b.spec.line),
                    "{total}", std::to_string(b.crossings)),
        note());
-  // Print the tables, then the charts on a page of their own; the data block stays on the
-  // sheet, out of the print area.
   check(worksheet_print_area(ws, 0, 0, data_row - 3, 12), "worksheet_print_area");
   auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row, 0});
   check(worksheet_set_h_pagebreaks(ws, breaks.data()), "worksheet_set_h_pagebreaks");
 
-  struct Plot {
-    std::string_view key, fmt;
-    const std::vector<double>* sample;
-    const design::QuantityFit* fit;
-  };
-  const Plot plots[] = {{"speed", "speed", &speed, &b.speed},
-                        {"height", "length", &height, &b.height},
-                        {"energy", "energy", &energy, &b.energy}};
+  const BarrierPlot plots[] = {{"speed", "speed", &sample.speed, &b.speed},
+                               {"height", "length", &sample.height, &b.height},
+                               {"energy", "energy", &sample.energy, &b.energy}};
   for (std::size_t p = 0; p < 3; ++p) {
-    const Plot& pl = plots[p];
-    const auto& x = *pl.sample;
-    const auto& fit = *pl.fit;
-    ++data_row;
-    text(ws, data_row++, 0, h("statistics", pl.key), section());
-    const Row top = data_row;
-    headings(ws, data_row++, 0, "histogram",
-             {"bin_lower", "bin_upper", "count", "density", "outline_x", "outline_y", "curve_x",
-              "weibull_pdf", "lognormal_pdf", "empirical_cdf", "weibull_cdf", "lognormal_cdf"});
-    const Row r0 = data_row;
-    // Curve range: the histogram's, or the fit's central 99.9 % when there is no sample.
-    const Histogram hg = histogram(x, t_.histogram_bins);
-    double lo = hg.lo, hi = hg.lo + hg.width * static_cast<double>(hg.counts.size());
-    if (x.empty()) {
-      lo = 0;
-      hi = fit.weibull ? stats::quantile(*fit.weibull, 0.999)
-                       : (fit.summary.count ? fit.summary.max : 1.0);
-      if (!(hi > lo)) hi = lo + 1;
-    }
-    lxw_format* qf = number(pl.fmt);
-    // Bins.
-    for (std::size_t i = 0; i < hg.counts.size(); ++i) {
-      const double a = hg.lo + hg.width * static_cast<double>(i);
-      num(ws, r0 + static_cast<Row>(i), 0, a, qf);
-      num(ws, r0 + static_cast<Row>(i), 1, a + hg.width, qf);
-      count(ws, r0 + static_cast<Row>(i), 2, hg.counts[i]);
-      num(ws, r0 + static_cast<Row>(i), 3, hg.density[i], number("parameter"));
-    }
-    // The outline of the columns: (e_i, 0), (e_i, d_i), (e_i+1, d_i), (e_i+1, 0), ...
-    Row o = r0;
-    for (std::size_t i = 0; i < hg.counts.size(); ++i) {
-      const double a = hg.lo + hg.width * static_cast<double>(i), e = a + hg.width;
-      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, hg.density[i]},
-                            std::pair{e, hg.density[i]}, std::pair{e, 0.0}}) {
-        num(ws, o, 4, px, qf);
-        num(ws, o++, 5, py, number("parameter"));
-      }
-    }
-    // Curves on an even grid.
-    const int n = t_.curve_points;
-    std::vector<double> grid(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
-    const std::vector<double> ecdf =
-        x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
-    for (int i = 0; i < n; ++i) {
-      const Row rr = r0 + static_cast<Row>(i);
-      const double g = grid[static_cast<std::size_t>(i)];
-      num(ws, rr, 6, g, qf);
-      if (fit.weibull) {
-        num(ws, rr, 7, stats::pdf(*fit.weibull, g), number("parameter"));
-        num(ws, rr, 10, stats::cdf(*fit.weibull, g), number("parameter"));
-      }
-      if (fit.lognormal) {
-        num(ws, rr, 8, stats::pdf(*fit.lognormal, g), number("parameter"));
-        num(ws, rr, 11, stats::cdf(*fit.lognormal, g), number("parameter"));
-      }
-      num(ws, rr, 9, ecdf[static_cast<std::size_t>(i)], number("parameter"));
-    }
-    data_row = std::max<Row>(o, r0 + static_cast<Row>(n)) + 1;
-    (void)top;
+    const BarrierChartData cd = barrier_chart_data(ws, data_row, plots[p]);
+    data_row = std::max<Row>(cd.outline_end, cd.curves_last + 1) + 1;
+    const Row at = chart_row + static_cast<Row>(p) * rows_per_chart;
+    barrier_histogram_chart(ws, sheet, {at, 0}, plots[p], cd, b.spec.name);
+    // Right of the histogram: column A (34) + 3 columns of 14 ≈ 620 px at 7 px/char + padding.
+    barrier_cdf_chart(ws, sheet, {at, 5}, plots[p], cd, b.spec.name);
+  }
+}
 
-    // The histogram chart: columns' outline, Weibull and log-normal densities.
-    const std::string key(pl.key);
-    lxw_chart* hc = nullptr;
-    const Row rn = r0 + static_cast<Row>(n) - 1;
-    if (!hg.counts.empty() || fit.weibull || fit.lognormal) {
-      hc = scatter_chart(key + "_histogram", b.spec.name);
-      if (!hg.counts.empty())
-        xy_series(hc, sheet, r0, o - 1, 4, 5, h("histogram", "histogram"), t_.colour("histogram"),
-                  1.25f);
-      if (fit.weibull)
-        xy_series(hc, sheet, r0, rn, 6, 7, h("histogram", "weibull_pdf"), t_.colour("weibull"),
-                  2.0f);
-      if (fit.lognormal)
-        xy_series(hc, sheet, r0, rn, 6, 8, h("histogram", "lognormal_pdf"),
-                  t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
-      chart_axis_set_min(hc->x_axis, lo);
-      chart_axis_set_max(hc->x_axis, hi);
-      chart_axis_set_min(hc->y_axis, 0);
-      chart_axis_set_num_format(hc->x_axis, keep(t_.get("formats", "general")));
-      insert_chart(ws, {chart_row + static_cast<Row>(p) * rows_per_chart, 0}, hc);
-    }
-    // The CDF chart: empirical against fitted.
-    if (!x.empty() || fit.weibull || fit.lognormal) {
-      lxw_chart* cc = scatter_chart(key + "_cdf", b.spec.name);
-      if (!x.empty())
-        xy_series(cc, sheet, r0, rn, 6, 9, h("histogram", "empirical_cdf"),
-                  t_.colour("empirical"), 2.0f);
-      if (fit.weibull)
-        xy_series(cc, sheet, r0, rn, 6, 10, h("histogram", "weibull_cdf"), t_.colour("weibull"),
-                  1.5f);
-      if (fit.lognormal)
-        xy_series(cc, sheet, r0, rn, 6, 11, h("histogram", "lognormal_cdf"),
-                  t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
-      chart_axis_set_min(cc->x_axis, lo);
-      chart_axis_set_max(cc->x_axis, hi);
-      chart_axis_set_min(cc->y_axis, 0);
-      chart_axis_set_max(cc->y_axis, 1);
-      chart_axis_set_num_format(cc->x_axis, keep(t_.get("formats", "general")));
-      // Right of the histogram: column A (34) + 3 columns of 14 ≈ 620 px at 7 px/char + padding.
-      insert_chart(ws, {chart_row + static_cast<Row>(p) * rows_per_chart, 5}, cc);
+// A quantity's data block from `data_row`: the histogram's bins and the columns' outline, and on
+// an even grid the fitted densities, the empirical CDF and the fitted CDFs.
+Report::BarrierChartData Report::barrier_chart_data(lxw_worksheet* ws, Row data_row,
+                                                    const BarrierPlot& pl) {
+  const auto& x = *pl.sample;
+  const auto& fit = *pl.fit;
+  ++data_row;
+  text(ws, data_row++, 0, h("statistics", pl.key), section());
+  headings(ws, data_row++, 0, "histogram",
+           {"bin_lower", "bin_upper", "count", "density", "outline_x", "outline_y", "curve_x",
+            "weibull_pdf", "lognormal_pdf", "empirical_cdf", "weibull_cdf", "lognormal_cdf"});
+  const Row r0 = data_row;
+  // Curve range: the histogram's, or the fit's central 99.9 % when there is no sample.
+  const Histogram hg = histogram(x, t_.histogram_bins);
+  double lo = hg.lo, hi = hg.lo + hg.width * static_cast<double>(hg.counts.size());
+  if (x.empty()) {
+    lo = 0;
+    hi = fit.weibull ? stats::quantile(*fit.weibull, 0.999)
+                     : (fit.summary.count ? fit.summary.max : 1.0);
+    if (!(hi > lo)) hi = lo + 1;
+  }
+  lxw_format* qf = number(pl.fmt);
+  // Bins.
+  for (std::size_t i = 0; i < hg.counts.size(); ++i) {
+    const double a = hg.lo + hg.width * static_cast<double>(i);
+    num(ws, r0 + static_cast<Row>(i), 0, a, qf);
+    num(ws, r0 + static_cast<Row>(i), 1, a + hg.width, qf);
+    count(ws, r0 + static_cast<Row>(i), 2, hg.counts[i]);
+    num(ws, r0 + static_cast<Row>(i), 3, hg.density[i], number("parameter"));
+  }
+  // The outline of the columns: (e_i, 0), (e_i, d_i), (e_i+1, d_i), (e_i+1, 0), ...
+  Row o = r0;
+  for (std::size_t i = 0; i < hg.counts.size(); ++i) {
+    const double a = hg.lo + hg.width * static_cast<double>(i), e = a + hg.width;
+    for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, hg.density[i]},
+                          std::pair{e, hg.density[i]}, std::pair{e, 0.0}}) {
+      num(ws, o, 4, px, qf);
+      num(ws, o++, 5, py, number("parameter"));
     }
   }
+  // Curves on an even grid.
+  const int n = t_.curve_points;
+  std::vector<double> grid(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
+  const std::vector<double> ecdf =
+      x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
+  for (int i = 0; i < n; ++i) {
+    const Row rr = r0 + static_cast<Row>(i);
+    const double g = grid[static_cast<std::size_t>(i)];
+    num(ws, rr, 6, g, qf);
+    if (fit.weibull) {
+      num(ws, rr, 7, stats::pdf(*fit.weibull, g), number("parameter"));
+      num(ws, rr, 10, stats::cdf(*fit.weibull, g), number("parameter"));
+    }
+    if (fit.lognormal) {
+      num(ws, rr, 8, stats::pdf(*fit.lognormal, g), number("parameter"));
+      num(ws, rr, 11, stats::cdf(*fit.lognormal, g), number("parameter"));
+    }
+    num(ws, rr, 9, ecdf[static_cast<std::size_t>(i)], number("parameter"));
+  }
+  return {r0, o, r0 + static_cast<Row>(n) - 1, lo, hi, !hg.counts.empty()};
+}
+
+// The histogram chart: the columns' outline, the Weibull and log-normal densities.
+void Report::barrier_histogram_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                                     const BarrierPlot& pl, const BarrierChartData& cd,
+                                     const std::string& name) {
+  const auto& fit = *pl.fit;
+  if (!cd.columns && !fit.weibull && !fit.lognormal) return;
+  const Row r0 = cd.r0, rn = cd.curves_last;
+  lxw_chart* hc = scatter_chart(std::string(pl.key) + "_histogram", name);
+  if (cd.columns)
+    xy_series(hc, sheet, r0, cd.outline_end - 1, 4, 5, h("histogram", "histogram"),
+              t_.colour("histogram"), 1.25f);
+  if (fit.weibull)
+    xy_series(hc, sheet, r0, rn, 6, 7, h("histogram", "weibull_pdf"), t_.colour("weibull"),
+              2.0f);
+  if (fit.lognormal)
+    xy_series(hc, sheet, r0, rn, 6, 8, h("histogram", "lognormal_pdf"),
+              t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
+  chart_axis_set_min(hc->x_axis, cd.lo);
+  chart_axis_set_max(hc->x_axis, cd.hi);
+  chart_axis_set_min(hc->y_axis, 0);
+  chart_axis_set_num_format(hc->x_axis, keep(t_.get("formats", "general")));
+  insert_chart(ws, at, hc);
+}
+
+// The CDF chart: empirical against fitted.
+void Report::barrier_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                               const BarrierPlot& pl, const BarrierChartData& cd,
+                               const std::string& name) {
+  const auto& fit = *pl.fit;
+  if (pl.sample->empty() && !fit.weibull && !fit.lognormal) return;
+  const Row r0 = cd.r0, rn = cd.curves_last;
+  lxw_chart* cc = scatter_chart(std::string(pl.key) + "_cdf", name);
+  if (!pl.sample->empty())
+    xy_series(cc, sheet, r0, rn, 6, 9, h("histogram", "empirical_cdf"),
+              t_.colour("empirical"), 2.0f);
+  if (fit.weibull)
+    xy_series(cc, sheet, r0, rn, 6, 10, h("histogram", "weibull_cdf"), t_.colour("weibull"),
+              1.5f);
+  if (fit.lognormal)
+    xy_series(cc, sheet, r0, rn, 6, 11, h("histogram", "lognormal_cdf"),
+              t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
+  chart_axis_set_min(cc->x_axis, cd.lo);
+  chart_axis_set_max(cc->x_axis, cd.hi);
+  chart_axis_set_min(cc->y_axis, 0);
+  chart_axis_set_max(cc->y_axis, 1);
+  chart_axis_set_num_format(cc->x_axis, keep(t_.get("formats", "general")));
+  insert_chart(ws, at, cc);
 }
 
 }  // namespace pierre::io::detail

@@ -185,7 +185,31 @@ class Report {
   Row check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
                   bool subject);
   void inputs(lxw_worksheet* ws);
+  // A barrier's sheet (xlsx_report_barrier.cpp): its tables, then its charts.
   void barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b);
+  struct BarrierSample;
+  struct StatisticsColumn;
+  struct BarrierPlot;
+  struct BarrierChartData;
+  Row barrier_overview(lxw_worksheet* ws, Row r, const design::BarrierDesign& b);
+  BarrierSample barrier_sample(const design::BarrierDesign& b) const;
+  Row barrier_statistics(lxw_worksheet* ws, Row r, const design::BarrierDesign& b,
+                         const BarrierSample& sample);
+  void statistic(lxw_worksheet* ws, Row r, Col c, std::string_view s, const StatisticsColumn& q);
+  Row barrier_bootstrap(lxw_worksheet* ws, Row r, const design::BarrierDesign& b);
+  Row barrier_design_values(lxw_worksheet* ws, Row r, const design::BarrierDesign& b);
+  Row barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesign& b);
+  Row barrier_exceedance(lxw_worksheet* ws, Row r, const design::BarrierDesign& b);
+  Row barrier_checks(lxw_worksheet* ws, Row r, const design::BarrierDesign& b);
+  void barrier_charts(lxw_worksheet* ws, const std::string& sheet, Row r,
+                      const design::BarrierDesign& b, const BarrierSample& sample);
+  BarrierChartData barrier_chart_data(lxw_worksheet* ws, Row data_row, const BarrierPlot& pl);
+  void barrier_histogram_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                               const BarrierPlot& pl, const BarrierChartData& cd,
+                               const std::string& name);
+  void barrier_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                         const BarrierPlot& pl, const BarrierChartData& cd,
+                         const std::string& name);
   void profile(lxw_worksheet* ws, const std::string& sheet);
   // Quarry danger zones (xlsx_report_quarry.cpp).
   Row quarry_summary(lxw_worksheet* ws, Row r);
