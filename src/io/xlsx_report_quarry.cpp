@@ -2,6 +2,7 @@
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <tuple>
 
@@ -88,10 +89,24 @@ Row Report::quarry_summary(lxw_worksheet* ws, Row r) {
   return r;
 }
 
+namespace {
+
+// RD and ID: the calculated statistics and the observed values beside them.
+struct Dist {
+  std::string_view key;
+  const design::DistanceStatistics* st;
+  const std::optional<design::ObservedComparison>* obs;
+};
+std::array<Dist, 2> distances(const design::QuarryRow& row) {
+  return {{{"rd", &row.rd, &row.observed_rd}, {"id", &row.id, &row.observed_id}}};
+}
+
+}  // namespace
+
 void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri) {
   const design::QuarryDesign& q = *d_.quarry;
   const design::QuarryRow& row = q.rows[ri];
-  std::vector<const design::QuarrySectionResult*> secs;
+  QuarrySections secs;
   for (std::size_t i : row.sections)
     if (i < q.sections.size()) secs.push_back(&q.sections[i]);
   page_setup(ws);
@@ -99,7 +114,21 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
   width(ws, 1, 13, 14);  // as a barrier sheet: the check table's merged columns fit its text
   text(ws, 0, 0, replace_all(t_.get("titles", "quarry"), "{name}", row.name), title());
   check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
-  Row r = 2;
+  Row r = quarry_overview(ws, 2, row, secs);
+  r = quarry_geometry(ws, r, secs);
+  r = quarry_counts(ws, r, row, secs);
+  r = quarry_statistics(ws, r, row, secs);
+  r = quarry_fits(ws, r, row);
+  r = quarry_exceedance(ws, r, row, secs);
+  r = quarry_governing(ws, r, row);
+  r = quarry_zones(ws, r, secs);
+  r = quarry_checks(ws, r, row, secs);
+  quarry_charts(ws, sheet, r, row, secs);
+}
+
+// The rules, the sections pooled and where the observed values come from.
+Row Report::quarry_overview(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                            const QuarrySections& secs) {
   auto label = [&](const std::string& l) { text(ws, r, 0, l, bold()); };
   label(t_.get("labels", "rules"));
   text(ws, r++, 1,
@@ -119,10 +148,12 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
       text(ws, r++, 1, row.pooled ? fmt::format("{}: {}", s->spec.name, s->spec.observed_source)
                                   : s->spec.observed_source);
     }
-  lxw_format *xf = number("coordinate"), *lf = number("length"), *hf = number("factor"),
-             *pf = number("parameter"), *af = number("angle");
+  return r;
+}
 
-  // Geometry: crest, toe, H (given or found).
+// Geometry: crest, toe, H (given or found), and the seed of each section's run.
+Row Report::quarry_geometry(lxw_worksheet* ws, Row r, const QuarrySections& secs) {
+  lxw_format *xf = number("coordinate"), *lf = number("length"), *af = number("angle");
   ++r;
   text(ws, r++, 0, t_.get("titles", "quarry_geometry"), section());
   headings(ws, r++, 0, "quarry_geometry",
@@ -145,8 +176,12 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     num(ws, r, 10, g.floor_angle_deg, af);
     num(ws, r++, 11, g.floor_length, lf);
   }
+  return r;
+}
 
-  // Counts.
+// How many blocks were thrown and where they went, per section and in total.
+Row Report::quarry_counts(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                          const QuarrySections& secs) {
   ++r;
   text(ws, r++, 0, t_.get("titles", "quarry_counts"), section());
   headings(ws, r++, 0, "quarry_counts",
@@ -170,20 +205,19 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
   if (secs.size() > 1)
     counts(t_.get("labels", "total"), row.thrown, row.reached_floor, row.not_reached_floor,
            row.above_toe, row.left_profile, row.left_upslope, row.abnormal, true);
+  return r;
+}
 
-  // Tables 6.2 / 6.3: calculated beside observed.
+// Tables 6.2 / 6.3: calculated beside observed.
+Row Report::quarry_statistics(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                              const QuarrySections& secs) {
+  lxw_format *lf = number("length"), *hf = number("factor");
   ++r;
   text(ws, r++, 0, t_.get("titles", "quarry_statistics"), section());
   headings(ws, r++, 0, "quarry_statistics",
            {"distance", "source", "count", "zeros", "censored", "p50", "p95", "p99", "max",
             "p50_h", "p95_h", "p99_h", "max_h"},
            30);
-  struct Dist {
-    std::string_view key;
-    const design::DistanceStatistics* st;
-    const std::optional<design::ObservedComparison>* obs;
-  };
-  const Dist dists[] = {{"rd", &row.rd, &row.observed_rd}, {"id", &row.id, &row.observed_id}};
   auto calculated = [&](std::string_view key, const std::string& source,
                         const design::DistanceStatistics& st) {
     text(ws, r, 0, t_.get("labels", key), bold());
@@ -196,7 +230,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     for (double v : {st.p50_h, st.p95_h, st.p99_h, st.max_h}) distance(ws, r, c++, v, hf);
     ++r;
   };
-  for (const auto& dd : dists) {
+  for (const auto& dd : distances(row)) {
     calculated(dd.key, t_.get("labels", "calculated"), *dd.st);
     if (*dd.obs) {
       const auto& o = **dd.obs;
@@ -217,15 +251,19 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
       for (const design::QuarrySectionResult* sec : secs)
         calculated(dd.key, sec->spec.name, dd.key == "rd" ? sec->rd : sec->id);
   }
+  return r;
+}
 
-  // The log-normal mixture fits and the comparison with the observed values.
+// The log-normal mixture fits and the comparison with the observed values.
+Row Report::quarry_fits(lxw_worksheet* ws, Row r, const design::QuarryRow& row) {
+  lxw_format *hf = number("factor"), *pf = number("parameter");
   ++r;
   text(ws, r++, 0, t_.get("titles", "quarry_fits"), section());
   headings(ws, r++, 0, "quarry_fits",
            {"distance", "zero_share", "mu", "sigma", "observed", "censored", "ks_d", "ks_p",
             "ks_below", "cdf_rmse", "observed_ks_d", "observed_ks_p", "fit_error"},
            45);
-  for (const auto& dd : dists) {
+  for (const auto& dd : distances(row)) {
     const auto& st = *dd.st;
     text(ws, r, 0, t_.get("labels", dd.key), bold());
     if (st.fit) {
@@ -251,8 +289,13 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     text(ws, r, 12, st.fit_error, wrap());
     ++r;
   }
+  return r;
+}
 
-  // Distances at the asked probabilities of exceedance.
+// Distances at the asked probabilities of exceedance.
+Row Report::quarry_exceedance(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                              const QuarrySections& secs) {
+  lxw_format *lf = number("length"), *hf = number("factor");
   if (!row.exceedance.empty()) {
     ++r;
     text(ws, r++, 0, t_.get("titles", "quarry_exceedance"), section());
@@ -295,8 +338,12 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
            replace_all(t_.get("labels", "fit_past_floor"), "{floor}", fmt::format("{:.1f}", floor_end)),
            note());
   }
+  return r;
+}
 
-  // Governing distances.
+// The governing distances, with how each was obtained.
+Row Report::quarry_governing(lxw_worksheet* ws, Row r, const design::QuarryRow& row) {
+  lxw_format *lf = number("length"), *hf = number("factor");
   ++r;
   text(ws, r++, 0, t_.get("titles", "quarry_governing"), section());
   headings(ws, r, 0, "quarry_governing", {"quantity", "value_h", "value"});
@@ -318,8 +365,12 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     gov("rd_lower", iv.lower, how);
     gov("rd_upper", iv.upper, how);
   }
+  return r;
+}
 
-  // Zones per section.
+// The zones of each section, its bench and its work areas.
+Row Report::quarry_zones(lxw_worksheet* ws, Row r, const QuarrySections& secs) {
+  lxw_format* lf = number("length");
   ++r;
   text(ws, r++, 0, t_.get("titles", "quarry_zones"), section());
   headings(ws, r, 0, "quarry_zones",
@@ -344,10 +395,14 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     fit_row(ws, r, {{&strings_.back(), 52}, {&s->spec.name, 30}});
     ++r;
   }
+  return r;
+}
 
-  // This row's check lines.
+// This row's check lines: the row's own and its sections'.
+Row Report::quarry_checks(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                          const QuarrySections& secs) {
   std::vector<design::CheckLine> lines;
-  for (const auto& l : q.checks) {
+  for (const auto& l : d_.quarry->checks) {
     bool mine = l.subject == row.name;
     for (const auto* s : secs) mine = mine || l.subject == s->spec.name;
     if (mine) lines.push_back(l);
@@ -357,27 +412,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
     text(ws, r++, 0, t_.get("titles", "barrier_checks"), section());
     r = check_table(ws, r, lines, false);
   }
-
-  // ---- charts and their data: the sections first, then RD and ID ----
-  ++r;
-  const Row chart_row = r;
-  const Row rows_per_chart = static_cast<Row>(std::ceil(t_.chart_height / 20.0)) + 1;
-  const Row rows_per_section = static_cast<Row>(std::ceil(1.4 * t_.chart_height / 20.0)) + 1;
-  const Row n_sections = static_cast<Row>(secs.size());
-  Row data_row = chart_row + n_sections * rows_per_section + 2 * rows_per_chart + 1;
-  text(ws, data_row++, 0, t_.get("titles", "chart_data"), section());
-  check(worksheet_print_area(ws, 0, 0, data_row - 3, 13), "worksheet_print_area");
-  auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row, 0});
-  check(worksheet_set_h_pagebreaks(ws, breaks.data()), "worksheet_set_h_pagebreaks");
-
-  Row at = chart_row;
-  for (const auto* s : secs) {
-    data_row = quarry_section_chart(ws, sheet, data_row, {at, 0}, *s);
-    at += rows_per_section;
-  }
-  data_row = quarry_distance_charts(ws, sheet, data_row, {at, 0}, 6, "rd", row);
-  at += rows_per_chart;
-  quarry_distance_charts(ws, sheet, data_row, {at, 0}, 6, "id", row);
+  return r;
 }
 
 }  // namespace pierre::io::detail

@@ -9,18 +9,113 @@
 
 namespace pierre::io::detail {
 
+namespace {
+
+// The columns of a distance's histogram: the positive finite values in `bins` columns from 0,
+// density over every value (zeros and censored count in n), so that they compare with
+// (1 − p0) f_logn; the columns reach the largest value or observed break point.
+struct DistanceColumns {
+  double hi = 0, width = 1, dmax = 0;
+  std::size_t positive = 0;
+  std::vector<double> density;
+};
+
+DistanceColumns distance_columns(const std::vector<double>& x,
+                                 const std::optional<design::ObservedComparison>& obs, int bins) {
+  DistanceColumns c;
+  double hi = 0;
+  for (double v : x)
+    if (std::isfinite(v) && v > 0) {
+      hi = std::max(hi, v);
+      ++c.positive;
+    }
+  if (obs)
+    for (double b : obs->breaks_h)
+      if (std::isfinite(b)) hi = std::max(hi, b);
+  if (!(hi > 0)) hi = 1;
+  const double w = hi / bins;
+  std::vector<double> density(static_cast<std::size_t>(bins), 0.0);
+  for (double v : x)
+    if (std::isfinite(v) && v > 0) {
+      const auto b = std::clamp(static_cast<long>(std::floor(v / w)), 0L, static_cast<long>(bins) - 1);
+      density[static_cast<std::size_t>(b)] += 1;
+    }
+  for (double& d : density) {
+    d /= static_cast<double>(x.size()) * w;
+    c.dmax = std::max(c.dmax, d);
+  }
+  c.hi = hi;
+  c.width = w;
+  c.density = std::move(density);
+  return c;
+}
+
+}  // namespace
+
+// The charts on a page of their own after the tables: the sections first, then RD and ID; their
+// data block below them stays on the sheet, out of the print area.
+void Report::quarry_charts(lxw_worksheet* ws, const std::string& sheet, Row r,
+                           const design::QuarryRow& row, const QuarrySections& secs) {
+  ++r;
+  const Row chart_row = r;
+  const Row rows_per_chart = static_cast<Row>(std::ceil(t_.chart_height / 20.0)) + 1;
+  const Row rows_per_section = static_cast<Row>(std::ceil(1.4 * t_.chart_height / 20.0)) + 1;
+  const Row n_sections = static_cast<Row>(secs.size());
+  Row data_row = chart_row + n_sections * rows_per_section + 2 * rows_per_chart + 1;
+  text(ws, data_row++, 0, t_.get("titles", "chart_data"), section());
+  check(worksheet_print_area(ws, 0, 0, data_row - 3, 13), "worksheet_print_area");
+  auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row, 0});
+  check(worksheet_set_h_pagebreaks(ws, breaks.data()), "worksheet_set_h_pagebreaks");
+
+  Row at = chart_row;
+  for (const auto* s : secs) {
+    data_row = quarry_section_chart(ws, sheet, data_row, {at, 0}, *s);
+    at += rows_per_section;
+  }
+  data_row = quarry_distance_charts(ws, sheet, data_row, {at, 0}, 6, "rd", row);
+  at += rows_per_chart;
+  quarry_distance_charts(ws, sheet, data_row, {at, 0}, 6, "id", row);
+}
+
+// A distance of a row (RD or ID) as drawn: its sample (/H), its statistics and fit, and the
+// observed values.
+struct Report::QuarryDistance {
+  std::string_view key;
+  const std::vector<double>& x;
+  const design::DistanceStatistics& st;
+  const std::optional<design::ObservedComparison>& obs;
+};
+
+// Where a distance's data block went: from row r0 the columns' outline up to (not including)
+// `outline_end`, the curves up to `curves_last`, the observed points up to `observed_end`; the
+// x axis from 0 to hi, and the largest column and fitted density (the y axis).
+struct Report::DistanceChartData {
+  Row r0, outline_end, curves_last, observed_end;
+  double hi, dmax, cmax;
+  bool columns;
+};
+
 Row Report::quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, Row data_row,
                                    Cell at, Col cdf_col, std::string_view which,
                                    const design::QuarryRow& row) {
   const bool rd = which == "rd";
-  const design::DistanceSample& sample = rd ? row.rd_sample : row.id_sample;
-  const design::DistanceStatistics& st = rd ? row.rd : row.id;
-  const auto& obs = rd ? row.observed_rd : row.observed_id;
-  const std::vector<double>& x = sample.normalized;
-  const std::string key(which);
+  const QuarryDistance d{which, (rd ? row.rd_sample : row.id_sample).normalized,
+                         rd ? row.rd : row.id, rd ? row.observed_rd : row.observed_id};
+  const DistanceChartData cd = quarry_distance_data(ws, data_row, d);
+  quarry_histogram_chart(ws, sheet, at, d, cd, row.name);
+  quarry_cdf_chart(ws, sheet, {at.row, cdf_col}, d, cd, row.name);
+  return std::max({cd.outline_end, cd.curves_last + 1, cd.observed_end}) + 1;
+}
 
+// A distance's data block from `data_row`: the columns' outline, on an even grid from 0 the
+// fitted density, the empirical and the fitted CDF, and the observed points.
+Report::DistanceChartData Report::quarry_distance_data(lxw_worksheet* ws, Row data_row,
+                                                       const QuarryDistance& d) {
+  const std::vector<double>& x = d.x;
+  const design::DistanceStatistics& st = d.st;
+  const auto& obs = d.obs;
   ++data_row;
-  text(ws, data_row++, 0, t_.get("labels", which), section());
+  text(ws, data_row++, 0, t_.get("labels", d.key), section());
   text(ws, data_row++, 0,
        replace_all(replace_all(replace_all(h("quarry_chart", "source"), "{n}",
                                            std::to_string(x.size())),
@@ -33,37 +128,14 @@ Row Report::quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, 
   const Row r0 = data_row;
   lxw_format *hf = number("factor"), *pf = number("parameter");
 
-  // The columns: the positive finite values, density over every value (zeros and censored
-  // count in n), so that they compare with (1 − p0) f_logn.
-  double hi = 0;
-  std::size_t positive = 0;
-  for (double v : x)
-    if (std::isfinite(v) && v > 0) {
-      hi = std::max(hi, v);
-      ++positive;
-    }
-  if (obs)
-    for (double b : obs->breaks_h)
-      if (std::isfinite(b)) hi = std::max(hi, b);
-  if (!(hi > 0)) hi = 1;
   const int bins = t_.histogram_bins;
-  const double w = hi / bins;
-  std::vector<double> density(static_cast<std::size_t>(bins), 0.0);
-  for (double v : x)
-    if (std::isfinite(v) && v > 0) {
-      const auto b = std::clamp(static_cast<long>(std::floor(v / w)), 0L, static_cast<long>(bins) - 1);
-      density[static_cast<std::size_t>(b)] += 1;
-    }
-  double dmax = 0;
-  for (double& d : density) {
-    d /= static_cast<double>(x.size()) * w;
-    dmax = std::max(dmax, d);
-  }
+  const DistanceColumns cols = distance_columns(x, obs, bins);
+  const double hi = cols.hi, w = cols.width;
   Row o = r0;
-  if (positive > 0)
+  if (cols.positive > 0)
     for (int i = 0; i < bins; ++i) {
-      const double a = w * i, e = a + w, d = density[static_cast<std::size_t>(i)];
-      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, d}, std::pair{e, d}, std::pair{e, 0.0}}) {
+      const double a = w * i, e = a + w, dy = cols.density[static_cast<std::size_t>(i)];
+      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, dy}, std::pair{e, dy}, std::pair{e, 0.0}}) {
         num(ws, o, 0, px, hf);
         num(ws, o++, 1, py, pf);
       }
@@ -96,47 +168,56 @@ Row Report::quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, 
       num(ws, ob, 6, obs->breaks_h[i], hf);
       num(ws, ob++, 7, obs->observed_cdf[i], pf);
     }
-  data_row = std::max({o, rn + 1, ob}) + 1;
+  return {r0, o, rn, ob, hi, cols.dmax, cmax, cols.positive > 0};
+}
 
-  auto axes = [&](lxw_chart* c) {
-    chart_axis_set_min(c->x_axis, 0);
-    chart_axis_set_max(c->x_axis, hi);
-    chart_axis_set_min(c->y_axis, 0);
-    chart_axis_set_num_format(c->x_axis, keep(t_.get("formats", "general")));
-  };
-  // Histogram with the fitted density.
-  if (positive > 0 || st.fit) {
-    lxw_chart* hc = scatter_chart(key + "_histogram", row.name);
-    if (positive > 0)
-      xy_series(hc, sheet, r0, o - 1, 0, 1, h("quarry_chart", "histogram"), t_.colour("histogram"),
-                1.25f);
-    if (st.fit)
-      xy_series(hc, sheet, r0, rn, 2, 3, h("quarry_chart", "fitted_pdf"), t_.colour("lognormal"),
-                2.0f);
-    axes(hc);
-    // A density spike at 0 must not flatten the columns.
-    if (dmax > 0 && cmax > 2.5 * dmax) chart_axis_set_max(hc->y_axis, 1.5 * dmax);
-    insert_chart(ws, at, hc);
+// The histogram with the fitted density.
+void Report::quarry_histogram_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                                    const QuarryDistance& d, const DistanceChartData& cd,
+                                    const std::string& name) {
+  if (!cd.columns && !d.st.fit) return;
+  lxw_chart* hc = scatter_chart(std::string(d.key) + "_histogram", name);
+  if (cd.columns)
+    xy_series(hc, sheet, cd.r0, cd.outline_end - 1, 0, 1, h("quarry_chart", "histogram"),
+              t_.colour("histogram"), 1.25f);
+  if (d.st.fit)
+    xy_series(hc, sheet, cd.r0, cd.curves_last, 2, 3, h("quarry_chart", "fitted_pdf"),
+              t_.colour("lognormal"), 2.0f);
+  distance_axes(hc, cd.hi);
+  // A density spike at 0 must not flatten the columns.
+  if (cd.dmax > 0 && cd.cmax > 2.5 * cd.dmax) chart_axis_set_max(hc->y_axis, 1.5 * cd.dmax);
+  insert_chart(ws, at, hc);
+}
+
+// The empirical against the fitted CDF, with the observed points.
+void Report::quarry_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                              const QuarryDistance& d, const DistanceChartData& cd,
+                              const std::string& name) {
+  if (d.x.empty() && !d.st.fit) return;
+  const Row r0 = cd.r0, rn = cd.curves_last;
+  lxw_chart* cc = scatter_chart(std::string(d.key) + "_cdf", name);
+  if (!d.x.empty())
+    xy_series(cc, sheet, r0, rn, 2, 4, h("quarry_chart", "empirical_cdf"),
+              t_.colour("empirical"), 2.0f);
+  if (d.st.fit)
+    xy_series(cc, sheet, r0, rn, 2, 5, h("quarry_chart", "fitted_cdf"), t_.colour("lognormal"),
+              1.5f, LXW_CHART_LINE_DASH_DASH);
+  if (cd.observed_end > r0) {
+    lxw_chart_series* s = xy_series(cc, sheet, r0, cd.observed_end - 1, 6, 7,
+                                    h("quarry_chart", "observed_cdf"), t_.colour("observed"), 1.0f);
+    markers(s, LXW_CHART_MARKER_CIRCLE, 5, t_.colour("observed"), false);
   }
-  // Empirical against fitted CDF, with the observed points.
-  if (!x.empty() || st.fit) {
-    lxw_chart* cc = scatter_chart(key + "_cdf", row.name);
-    if (!x.empty())
-      xy_series(cc, sheet, r0, rn, 2, 4, h("quarry_chart", "empirical_cdf"),
-                t_.colour("empirical"), 2.0f);
-    if (st.fit)
-      xy_series(cc, sheet, r0, rn, 2, 5, h("quarry_chart", "fitted_cdf"), t_.colour("lognormal"),
-                1.5f, LXW_CHART_LINE_DASH_DASH);
-    if (ob > r0) {
-      lxw_chart_series* s = xy_series(cc, sheet, r0, ob - 1, 6, 7, h("quarry_chart", "observed_cdf"),
-                                      t_.colour("observed"), 1.0f);
-      markers(s, LXW_CHART_MARKER_CIRCLE, 5, t_.colour("observed"), false);
-    }
-    axes(cc);
-    chart_axis_set_max(cc->y_axis, 1);
-    insert_chart(ws, {at.row, cdf_col}, cc);
-  }
-  return data_row;
+  distance_axes(cc, cd.hi);
+  chart_axis_set_max(cc->y_axis, 1);
+  insert_chart(ws, at, cc);
+}
+
+// The axes of a distance's charts: x from 0 to hi (/H), y from 0.
+void Report::distance_axes(lxw_chart* c, double hi) {
+  chart_axis_set_min(c->x_axis, 0);
+  chart_axis_set_max(c->x_axis, hi);
+  chart_axis_set_min(c->y_axis, 0);
+  chart_axis_set_num_format(c->x_axis, keep(t_.get("formats", "general")));
 }
 
 Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row,

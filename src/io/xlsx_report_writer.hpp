@@ -151,9 +151,9 @@ class Report {
 
   // -- charts
   lxw_chart* scatter_chart(std::string_view chart_key, const std::string& name);
-  lxw_chart_series* xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc, Col yc,
-                 const std::string& name, std::uint32_t colour, float line_width,
-                 std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
+  lxw_chart_series* xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc,
+                              Col yc, const std::string& name, std::uint32_t colour,
+                              float line_width, std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
   // Filled markers of one colour on a series; with `line_too` false the points stand alone.
   void markers(lxw_chart_series* s, std::uint8_t type, std::uint8_t size, lxw_color_t colour,
                bool line_too);
@@ -213,13 +213,42 @@ class Report {
   void profile(lxw_worksheet* ws, const std::string& sheet);
   // Quarry danger zones (xlsx_report_quarry.cpp).
   Row quarry_summary(lxw_worksheet* ws, Row r);
+  // A quarry row's sheet (xlsx_report_quarry.cpp): its tables, then its charts
+  // (xlsx_report_quarry_charts.cpp).
   void quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t row);
+  using QuarrySections = std::vector<const design::QuarrySectionResult*>;  // a row's sections
+  Row quarry_overview(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                      const QuarrySections& secs);
+  Row quarry_geometry(lxw_worksheet* ws, Row r, const QuarrySections& secs);
+  Row quarry_counts(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                    const QuarrySections& secs);
+  Row quarry_statistics(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                        const QuarrySections& secs);
+  Row quarry_fits(lxw_worksheet* ws, Row r, const design::QuarryRow& row);
+  Row quarry_exceedance(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                        const QuarrySections& secs);
+  Row quarry_governing(lxw_worksheet* ws, Row r, const design::QuarryRow& row);
+  Row quarry_zones(lxw_worksheet* ws, Row r, const QuarrySections& secs);
+  Row quarry_checks(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
+                    const QuarrySections& secs);
+  void quarry_charts(lxw_worksheet* ws, const std::string& sheet, Row r,
+                     const design::QuarryRow& row, const QuarrySections& secs);
   // A distance (m or /H): a number, or "beyond the profile" for +infinity.
   void distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
   // The histogram, CDF and fitted curves of one distance of a row (data block at `data_row`,
   // charts at `at` and beside it); returns the next free data row.
   Row quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
                              Col cdf_col, std::string_view which, const design::QuarryRow& row);
+  struct QuarryDistance;
+  struct DistanceChartData;
+  DistanceChartData quarry_distance_data(lxw_worksheet* ws, Row data_row, const QuarryDistance& d);
+  void quarry_histogram_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                              const QuarryDistance& d, const DistanceChartData& cd,
+                              const std::string& name);
+  void quarry_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
+                        const QuarryDistance& d, const DistanceChartData& cd,
+                        const std::string& name);
+  void distance_axes(lxw_chart* c, double hi);
   Row quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
                            const design::QuarrySectionResult& s);
   void trajectories(lxw_worksheet* ws);
