@@ -1,4 +1,5 @@
-// The Inputs sheet.
+// The Inputs sheet: the scenario as read (simulation settings, materials, blocks, sources, the
+// profile's vertices, observation lines), the barriers' inputs, and the scenario's text.
 #include "xlsx_report_writer.hpp"
 
 namespace pierre::io::detail {
@@ -11,192 +12,216 @@ void Report::inputs(lxw_worksheet* ws) {
   Row r = 2;
   const LoadedScenario* sc = d_.scenario;
   if (sc) {
-    const auto& s = sc->scenario;
-    text(ws, r++, 0, t_.get("titles", "simulation"), section());
-    headings(ws, r++, 0, "simulation",
-             {"seed", "throws", "gravity", "max_time", "max_impacts", "stop_head_factor",
-              "max_sliding_speed"});
-    if (s.settings.seed <= (std::uint64_t{1} << 53))
-      num(ws, r, 0, static_cast<double>(s.settings.seed), number("general", 1));
-    else
-      text(ws, r, 0, std::to_string(s.settings.seed));
-    count(ws, r, 1, s.settings.throws);
-    num(ws, r, 2, s.settings.gravity, number("material"));
-    num(ws, r, 3, s.settings.max_time, number("time"));
-    num(ws, r, 4, static_cast<double>(s.settings.max_impacts), number("count"));
-    num(ws, r, 5, s.settings.stop_head_factor, number("factor"));
-    num(ws, r++, 6, s.settings.max_sliding_speed, number("speed"));
-
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "materials"), section());
-    if (!sc->materials_file.empty()) {
-      text(ws, r, 0, t_.get("labels", "materials_file"), bold());
-      text(ws, r++, 1, sc->materials_file.string());
-    }
-    headings(ws, r++, 0, "materials",
-             {"name", "source", "normal_energy", "normal_energy_k", "tangential_energy",
-              "tangential_energy_k", "roughness", "friction_angle"});
-    for (const auto& m : s.materials) {
-      text(ws, r, 0, m.name);
-      text(ws, r, 1, m.source, wrap());
-      num(ws, r, 2, m.normal_energy, number("material"));
-      num(ws, r, 3, m.normal_energy_k, number("material"));
-      num(ws, r, 4, m.tangential_energy, number("material"));
-      num(ws, r, 5, m.tangential_energy_k, number("material"));
-      num(ws, r, 6, m.roughness, number("material"));
-      num(ws, r, 7, m.friction_angle_deg, number("angle"));
-      fit_row(ws, r++, {{&m.source, 16}});
-    }
-
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "blocks"), section());
-    headings(ws, r++, 0, "blocks",
-             {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"});
-    // A quarry scenario's blocks and sources are its sections': each under its name.
-    auto each_section = [&](auto&& write) {
-      if (sc->quarries.empty()) return write(sc->block_groups, s.sources);
-      for (const auto& q : sc->quarries) {
-        text(ws, r++, 0, q.spec.name, bold());
-        write(q.block_groups, q.scenario.sources);
-      }
-    };
-    each_section([&](const auto& groups, const auto&) {
-      for (const auto& b : groups) {
-        text(ws, r, 0, b.id);
-        num(ws, r, 1, b.mass, number("mass"));
-        num(ws, r, 2, b.volume, number("volume"));
-        num(ws, r, 3, b.density, number("density"));
-        num(ws, r, 4, b.shape_min, number("factor"));
-        num(ws, r, 5, b.shape_max, number("factor"));
-        count(ws, r++, 6, b.count);
-      }
-    });
-
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "sources"), section());
-    headings(ws, r++, 0, "sources", {"name", "x", "z", "vx", "vz", "omega"});
-    each_section([&](const auto&, const auto& sources) {
-      for (const auto& so : sources) {
-        text(ws, r, 0, so.name);
-        num(ws, r, 1, so.position.x, number("coordinate"));
-        num(ws, r, 2, so.position.z, number("coordinate"));
-        num(ws, r, 3, so.velocity.x, number("speed"));
-        num(ws, r, 4, so.velocity.z, number("speed"));
-        num(ws, r++, 5, so.omega, number("speed"));
-      }
-    });
-
-    // The section as read: every vertex with the material of the segment that starts there
-    // (the last vertex ends the profile).
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "profile_vertices"), section());
-    headings(ws, r++, 0, "profile_vertices", {"x", "z", "material"});
-    auto vertices = [&](const sim::Scenario& sec) {
-      const auto& segs = sec.profile.segments();
-      for (std::size_t k = 0; k < segs.size(); ++k) {
-        num(ws, r, 0, segs[k].a.x, number("coordinate"));
-        num(ws, r, 1, segs[k].a.z, number("coordinate"));
-        const auto m = static_cast<std::size_t>(segs[k].material);
-        if (m < sec.materials.size()) text(ws, r, 2, sec.materials[m].name);
-        ++r;
-      }
-      if (!segs.empty()) {
-        num(ws, r, 0, segs.back().b.x, number("coordinate"));
-        num(ws, r++, 1, segs.back().b.z, number("coordinate"));
-      }
-    };
-    if (sc->quarries.empty()) {
-      vertices(s);
-    } else {
-      for (const auto& q : sc->quarries) {
-        text(ws, r++, 0, q.spec.name, bold());
-        vertices(q.scenario);
-      }
-    }
-
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "observation_lines"), section());
-    headings(ws, r++, 0, "observation_lines", {"name", "x"});
-    for (const auto& l : s.lines) {
-      text(ws, r, 0, l.name);
-      num(ws, r++, 1, l.x, number("coordinate"));
-    }
+    r = inputs_simulation(ws, r, *sc);
+    r = inputs_materials(ws, r, *sc);
+    r = inputs_blocks(ws, r, *sc);
+    r = inputs_sources(ws, r, *sc);
+    r = inputs_vertices(ws, r, *sc);
+    r = inputs_lines(ws, r, *sc);
   }
+  r = inputs_barriers(ws, r);
+  if (sc) inputs_scenario_text(ws, r, *sc);
+}
 
-  // Barriers: one column per barrier, one row per input.
-  if (!d_.barriers.empty()) {
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "barrier_inputs"), section());
-    text(ws, r, 0, h("barrier_inputs", "field"), heading());
-    for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i)
-      text(ws, r, static_cast<Col>(1 + i), d_.barriers[i].spec.name, heading());
-    ++r;
-    const Row top = r;
-    auto row = [&](std::string_view key) {
-      text(ws, r, 0, h("barrier_inputs", key), bold());
-      return r++;
-    };
-    const Row line = row("line"), rules = row("rules"), block = row("design_block"),
-              volume = row("volume"), density = row("density"), pct = row("percentile"),
-              df = row("free_board_diameter"), dq = row("data_quality"),
-              cls = row("energy_class"), mel = row("mel"), sel = row("sel"),
-              height = row("height"), el_mel = row("elongation_mel"),
-              el_sel = row("elongation_sel"), dist = row("distance_to_object"),
-              resid = row("residual_height"), acc_e = row("acceptable_energy"),
-              acc_h = row("acceptable_height"), obs = row("observed_file");
-    (void)top;
-    for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i) {
-      const auto& s = d_.barriers[i].spec;
-      const Col c = static_cast<Col>(1 + i);
-      text(ws, line, c, s.line);
-      text(ws, rules, c, s.rules);
-      using K = design::DesignBlock::Kind;
-      const auto& db = s.design_block;
-      text(ws, block, c,
-           db.kind == K::given     ? "given"
-           : db.kind == K::largest ? "largest"
-                                   : "percentile");
-      if (db.kind == K::given) num(ws, volume, c, db.volume, number("volume"));
-      if (db.density > 0) num(ws, density, c, db.density, number("density"));
-      if (db.kind == K::percentile) num(ws, pct, c, db.percentile, number("general"));
-      opt(ws, df, c, s.free_board_diameter, number("length"));
-      std::string q;
-      for (const auto& [k, v] : s.data_quality) q += (q.empty() ? "" : "; ") + k + " = " + v;
-      text(ws, dq, c, keep(q), wrap());
-      fit_row(ws, dq, {{&strings_.back(), 16}});
-      if (s.candidate) {
-        const auto& cb = *s.candidate;
-        if (cb.energy_class) num(ws, cls, c, *cb.energy_class, number("count"));
-        opt(ws, mel, c, cb.mel_kJ, number("energy"));
-        opt(ws, sel, c, cb.sel_kJ, number("energy"));
-        opt(ws, height, c, cb.height, number("length"));
-        opt(ws, el_mel, c, cb.elongation_mel, number("length"));
-        opt(ws, el_sel, c, cb.elongation_sel, number("length"));
-        opt(ws, dist, c, cb.distance_to_object, number("length"));
-        opt(ws, resid, c, cb.residual_height, number("length"));
-      }
-      opt(ws, acc_e, c, s.acceptable_energy_exceedance, number("probability"));
-      opt(ws, acc_h, c, s.acceptable_height_exceedance, number("probability"));
-      text(ws, obs, c, s.observed_file);
-    }
+// A quarry scenario's blocks, sources and profile are its sections': `write` is called with each
+// section's block groups and scenario, under the section's name.
+template <class Write>
+void Report::each_section(lxw_worksheet* ws, Row& r, const LoadedScenario& sc, Write&& write) {
+  if (sc.quarries.empty()) return write(sc.block_groups, sc.scenario);
+  for (const auto& q : sc.quarries) {
+    text(ws, r++, 0, q.spec.name, bold());
+    write(q.block_groups, q.scenario);
   }
+}
 
-  // The scenario file as read, one line per row.
-  if (sc) {
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "scenario_text"), section());
-    text(ws, r++, 0, sc->file.string(), note());
-    std::size_t line_no = 1, p = 0;
-    const std::string& s = sc->text;
-    while (p < s.size()) {
-      std::size_t e = s.find('\n', p);
-      if (e == std::string::npos) e = s.size();
-      std::string l = s.substr(p, e - p);
-      if (!l.empty() && l.back() == '\r') l.pop_back();
-      num(ws, r, 0, static_cast<double>(line_no++), number("count", 2));
-      text(ws, r++, 1, l);
-      p = e + 1;
+Row Report::inputs_simulation(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
+  const auto& s = sc.scenario;
+  text(ws, r++, 0, t_.get("titles", "simulation"), section());
+  headings(ws, r++, 0, "simulation",
+           {"seed", "throws", "gravity", "max_time", "max_impacts", "stop_head_factor",
+            "max_sliding_speed"});
+  if (s.settings.seed <= (std::uint64_t{1} << 53))
+    num(ws, r, 0, static_cast<double>(s.settings.seed), number("general", 1));
+  else
+    text(ws, r, 0, std::to_string(s.settings.seed));
+  count(ws, r, 1, s.settings.throws);
+  num(ws, r, 2, s.settings.gravity, number("material"));
+  num(ws, r, 3, s.settings.max_time, number("time"));
+  num(ws, r, 4, static_cast<double>(s.settings.max_impacts), number("count"));
+  num(ws, r, 5, s.settings.stop_head_factor, number("factor"));
+  num(ws, r++, 6, s.settings.max_sliding_speed, number("speed"));
+  return r;
+}
+
+Row Report::inputs_materials(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
+  const auto& s = sc.scenario;
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "materials"), section());
+  if (!sc.materials_file.empty()) {
+    text(ws, r, 0, t_.get("labels", "materials_file"), bold());
+    text(ws, r++, 1, sc.materials_file.string());
+  }
+  headings(ws, r++, 0, "materials",
+           {"name", "source", "normal_energy", "normal_energy_k", "tangential_energy",
+            "tangential_energy_k", "roughness", "friction_angle"});
+  for (const auto& m : s.materials) {
+    text(ws, r, 0, m.name);
+    text(ws, r, 1, m.source, wrap());
+    num(ws, r, 2, m.normal_energy, number("material"));
+    num(ws, r, 3, m.normal_energy_k, number("material"));
+    num(ws, r, 4, m.tangential_energy, number("material"));
+    num(ws, r, 5, m.tangential_energy_k, number("material"));
+    num(ws, r, 6, m.roughness, number("material"));
+    num(ws, r, 7, m.friction_angle_deg, number("angle"));
+    fit_row(ws, r++, {{&m.source, 16}});
+  }
+  return r;
+}
+
+Row Report::inputs_blocks(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "blocks"), section());
+  headings(ws, r++, 0, "blocks",
+           {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"});
+  each_section(ws, r, sc, [&](const std::vector<BlockGroup>& groups, const sim::Scenario&) {
+    for (const auto& b : groups) {
+      text(ws, r, 0, b.id);
+      num(ws, r, 1, b.mass, number("mass"));
+      num(ws, r, 2, b.volume, number("volume"));
+      num(ws, r, 3, b.density, number("density"));
+      num(ws, r, 4, b.shape_min, number("factor"));
+      num(ws, r, 5, b.shape_max, number("factor"));
+      count(ws, r++, 6, b.count);
     }
+  });
+  return r;
+}
+
+Row Report::inputs_sources(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "sources"), section());
+  headings(ws, r++, 0, "sources", {"name", "x", "z", "vx", "vz", "omega"});
+  each_section(ws, r, sc, [&](const std::vector<BlockGroup>&, const sim::Scenario& sec) {
+    for (const auto& so : sec.sources) {
+      text(ws, r, 0, so.name);
+      num(ws, r, 1, so.position.x, number("coordinate"));
+      num(ws, r, 2, so.position.z, number("coordinate"));
+      num(ws, r, 3, so.velocity.x, number("speed"));
+      num(ws, r, 4, so.velocity.z, number("speed"));
+      num(ws, r++, 5, so.omega, number("speed"));
+    }
+  });
+  return r;
+}
+
+// The section as read: every vertex with the material of the segment that starts there (the last
+// vertex ends the profile).
+Row Report::inputs_vertices(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "profile_vertices"), section());
+  headings(ws, r++, 0, "profile_vertices", {"x", "z", "material"});
+  each_section(ws, r, sc, [&](const std::vector<BlockGroup>&, const sim::Scenario& sec) {
+    const auto& segs = sec.profile.segments();
+    for (std::size_t k = 0; k < segs.size(); ++k) {
+      num(ws, r, 0, segs[k].a.x, number("coordinate"));
+      num(ws, r, 1, segs[k].a.z, number("coordinate"));
+      const auto m = static_cast<std::size_t>(segs[k].material);
+      if (m < sec.materials.size()) text(ws, r, 2, sec.materials[m].name);
+      ++r;
+    }
+    if (!segs.empty()) {
+      num(ws, r, 0, segs.back().b.x, number("coordinate"));
+      num(ws, r++, 1, segs.back().b.z, number("coordinate"));
+    }
+  });
+  return r;
+}
+
+Row Report::inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
+  const auto& s = sc.scenario;
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "observation_lines"), section());
+  headings(ws, r++, 0, "observation_lines", {"name", "x"});
+  for (const auto& l : s.lines) {
+    text(ws, r, 0, l.name);
+    num(ws, r++, 1, l.x, number("coordinate"));
+  }
+  return r;
+}
+
+// The barriers' inputs: one column per barrier, one row per input.
+Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
+  if (d_.barriers.empty()) return r;
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "barrier_inputs"), section());
+  text(ws, r, 0, h("barrier_inputs", "field"), heading());
+  for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i)
+    text(ws, r, static_cast<Col>(1 + i), d_.barriers[i].spec.name, heading());
+  ++r;
+  auto row = [&](std::string_view key) {
+    text(ws, r, 0, h("barrier_inputs", key), bold());
+    return r++;
+  };
+  const Row line = row("line"), rules = row("rules"), block = row("design_block"),
+            volume = row("volume"), density = row("density"), pct = row("percentile"),
+            df = row("free_board_diameter"), dq = row("data_quality"),
+            cls = row("energy_class"), mel = row("mel"), sel = row("sel"),
+            height = row("height"), el_mel = row("elongation_mel"),
+            el_sel = row("elongation_sel"), dist = row("distance_to_object"),
+            resid = row("residual_height"), acc_e = row("acceptable_energy"),
+            acc_h = row("acceptable_height"), obs = row("observed_file");
+  for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i) {
+    const auto& s = d_.barriers[i].spec;
+    const Col c = static_cast<Col>(1 + i);
+    text(ws, line, c, s.line);
+    text(ws, rules, c, s.rules);
+    using K = design::DesignBlock::Kind;
+    const auto& db = s.design_block;
+    text(ws, block, c,
+         db.kind == K::given     ? "given"
+         : db.kind == K::largest ? "largest"
+                                 : "percentile");
+    if (db.kind == K::given) num(ws, volume, c, db.volume, number("volume"));
+    if (db.density > 0) num(ws, density, c, db.density, number("density"));
+    if (db.kind == K::percentile) num(ws, pct, c, db.percentile, number("general"));
+    opt(ws, df, c, s.free_board_diameter, number("length"));
+    std::string q;
+    for (const auto& [k, v] : s.data_quality) q += (q.empty() ? "" : "; ") + k + " = " + v;
+    text(ws, dq, c, keep(q), wrap());
+    fit_row(ws, dq, {{&strings_.back(), 16}});
+    if (s.candidate) {
+      const auto& cb = *s.candidate;
+      if (cb.energy_class) num(ws, cls, c, *cb.energy_class, number("count"));
+      opt(ws, mel, c, cb.mel_kJ, number("energy"));
+      opt(ws, sel, c, cb.sel_kJ, number("energy"));
+      opt(ws, height, c, cb.height, number("length"));
+      opt(ws, el_mel, c, cb.elongation_mel, number("length"));
+      opt(ws, el_sel, c, cb.elongation_sel, number("length"));
+      opt(ws, dist, c, cb.distance_to_object, number("length"));
+      opt(ws, resid, c, cb.residual_height, number("length"));
+    }
+    opt(ws, acc_e, c, s.acceptable_energy_exceedance, number("probability"));
+    opt(ws, acc_h, c, s.acceptable_height_exceedance, number("probability"));
+    text(ws, obs, c, s.observed_file);
+  }
+  return r;
+}
+
+// The scenario file as read, one line per row.
+void Report::inputs_scenario_text(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "scenario_text"), section());
+  text(ws, r++, 0, sc.file.string(), note());
+  std::size_t line_no = 1, p = 0;
+  const std::string& s = sc.text;
+  while (p < s.size()) {
+    std::size_t e = s.find('\n', p);
+    if (e == std::string::npos) e = s.size();
+    std::string l = s.substr(p, e - p);
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    num(ws, r, 0, static_cast<double>(line_no++), number("count", 2));
+    text(ws, r++, 1, l);
+    p = e + 1;
   }
 }
 

@@ -1,4 +1,5 @@
-// The Summary sheet.
+// The Summary sheet: the run, the recommended barriers, the observation lines, the quarry rows
+// (xlsx_report_quarry.cpp) and every check line.
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>
@@ -18,10 +19,19 @@ void Report::summary(lxw_worksheet* ws) {
   width(ws, 8, 8, 44);
   width(ws, 9, 11, 12);
 
-  const LoadedScenario* sc = d_.scenario;
   text(ws, 0, 0, t_.get("titles", "summary"), title());
   check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
-  Row r = 2;
+  Row r = summary_run(ws, 2);
+  r = summary_barriers(ws, r);
+  r = summary_lines(ws, r);
+  // Quarry danger zones: Tables 6.2/6.3's rows and their average.
+  if (d_.quarry) r = quarry_summary(ws, r);
+  summary_checks(ws, r);
+}
+
+// The run: project, scenario, date, version, seed, throws, rule sets and the runout.
+Row Report::summary_run(lxw_worksheet* ws, Row r) {
+  const LoadedScenario* sc = d_.scenario;
   text(ws, r++, 0, t_.get("titles", "run"), section());
   auto label = [&](std::string_view key) { text(ws, r, 0, t_.get("labels", key), bold()); };
   label("project");
@@ -69,68 +79,72 @@ void Report::summary(lxw_worksheet* ws) {
       num(ws, r++, 2, v, number("length", 2));
     }
   }
+  return r;
+}
 
-  // Recommended barriers.
-  if (!d_.barriers.empty()) {
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "barriers"), section());
-    headings(ws, r++, 0, "barriers",
-             {"name", "line", "rules", "chainage", "energy_class", "class_mel", "class_sel",
-              "mel_req", "sel_req", "interception_height"},
-             45);
-    for (const auto& b : d_.barriers) {
-      text(ws, r, 0, b.spec.name);
-      text(ws, r, 1, b.spec.line);
-      text(ws, r, 2, b.rules_name.empty() ? b.spec.rules : b.rules_name, wrap());
-      num(ws, r, 3, b.chainage, number("coordinate", 1));
-      if (b.energy_class) {
-        num(ws, r, 4, b.energy_class->number, number("count", 1));
-        num(ws, r, 5, b.energy_class->mel_kJ, number("energy", 1));
-        num(ws, r, 6, b.energy_class->sel_kJ, number("energy", 1));
-      } else {
-        text(ws, r, 4, t_.get("labels", "none"), centred());
-      }
-      num(ws, r, 7, b.MEL_req_kJ, number("energy", 1));
-      num(ws, r, 8, b.SEL_req_kJ, number("energy", 1));
-      num(ws, r, 9, b.h_i, number("length", 1));
-      const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
-      fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
-      ++r;
+// The recommended barriers, and how each energy class was chosen.
+Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
+  if (d_.barriers.empty()) return r;
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "barriers"), section());
+  headings(ws, r++, 0, "barriers",
+           {"name", "line", "rules", "chainage", "energy_class", "class_mel", "class_sel",
+            "mel_req", "sel_req", "interception_height"},
+           45);
+  for (const auto& b : d_.barriers) {
+    text(ws, r, 0, b.spec.name);
+    text(ws, r, 1, b.spec.line);
+    text(ws, r, 2, b.rules_name.empty() ? b.spec.rules : b.rules_name, wrap());
+    num(ws, r, 3, b.chainage, number("coordinate", 1));
+    if (b.energy_class) {
+      num(ws, r, 4, b.energy_class->number, number("count", 1));
+      num(ws, r, 5, b.energy_class->mel_kJ, number("energy", 1));
+      num(ws, r, 6, b.energy_class->sel_kJ, number("energy", 1));
+    } else {
+      text(ws, r, 4, t_.get("labels", "none"), centred());
     }
-    // How each class was chosen: on which capacity, from which table (its source).
-    for (const auto& b : d_.barriers)
-      if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
-        text(ws, r++, 0, b.spec.name + ": class " + std::to_string(b.energy_class->number) + ", " +
-                             it->second, note());
-  }
-
-  // Observation lines.
-  if (!d_.statistics.lines.empty()) {
+    num(ws, r, 7, b.MEL_req_kJ, number("energy", 1));
+    num(ws, r, 8, b.SEL_req_kJ, number("energy", 1));
+    num(ws, r, 9, b.h_i, number("length", 1));
+    const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
+    fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
     ++r;
-    text(ws, r++, 0, t_.get("titles", "lines"), section());
-    headings(ws, r++, 0, "lines",
-             {"name", "chainage", "count", "not_reached", "speed_mean", "speed_p95",
-              "height_p95", "energy_p95", "energy_max"},
-             45);
-    for (const auto& l : d_.statistics.lines) {
-      text(ws, r, 0, l.name);
-      num(ws, r, 1, l.chainage, number("coordinate", 1));
-      num(ws, r, 2, static_cast<double>(l.count), number("count", 1));
-      num(ws, r, 3, static_cast<double>(l.not_reached), number("count", 1));
-      num(ws, r, 4, l.count ? l.speed.mean : kNaN, number("speed", 1));
-      num(ws, r, 5, l.count ? l.speed.p95 : kNaN, number("speed", 1));
-      num(ws, r, 6, l.count ? l.height.p95 : kNaN, number("length", 1));
-      num(ws, r, 7, l.count ? l.translational_energy.p95 / 1000 : kNaN, number("energy", 1));
-      num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy", 1));
-      ++r;
-    }
   }
+  // How each class was chosen: on which capacity, from which table (its source).
+  for (const auto& b : d_.barriers)
+    if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
+      text(ws, r++, 0, b.spec.name + ": class " + std::to_string(b.energy_class->number) + ", " +
+                           it->second, note());
+  return r;
+}
 
-  // Quarry danger zones: Tables 6.2/6.3's rows and their average.
-  if (d_.quarry) r = quarry_summary(ws, r);
+// The statistics at the observation lines.
+Row Report::summary_lines(lxw_worksheet* ws, Row r) {
+  if (d_.statistics.lines.empty()) return r;
+  ++r;
+  text(ws, r++, 0, t_.get("titles", "lines"), section());
+  headings(ws, r++, 0, "lines",
+           {"name", "chainage", "count", "not_reached", "speed_mean", "speed_p95",
+            "height_p95", "energy_p95", "energy_max"},
+           45);
+  for (const auto& l : d_.statistics.lines) {
+    text(ws, r, 0, l.name);
+    num(ws, r, 1, l.chainage, number("coordinate", 1));
+    num(ws, r, 2, static_cast<double>(l.count), number("count", 1));
+    num(ws, r, 3, static_cast<double>(l.not_reached), number("count", 1));
+    num(ws, r, 4, l.count ? l.speed.mean : kNaN, number("speed", 1));
+    num(ws, r, 5, l.count ? l.speed.p95 : kNaN, number("speed", 1));
+    num(ws, r, 6, l.count ? l.height.p95 : kNaN, number("length", 1));
+    num(ws, r, 7, l.count ? l.translational_energy.p95 / 1000 : kNaN, number("energy", 1));
+    num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy", 1));
+    ++r;
+  }
+  return r;
+}
 
-  // Every check line, whatever its subject: the caller's, then the quarry design's that the
-  // caller did not pass (same subject and id).
+// Every check line, whatever its subject: the caller's, then the quarry design's that the
+// caller did not pass (same subject and id).
+void Report::summary_checks(lxw_worksheet* ws, Row r) {
   std::vector<design::CheckLine> lines = d_.checks;
   if (d_.quarry)
     for (const auto& l : d_.quarry->checks)

@@ -182,9 +182,23 @@ class Report {
   std::string item_sheet_name(std::string_view key, const std::string& item,
                               std::vector<std::string>& used);
   void summary(lxw_worksheet* ws);
+  Row summary_run(lxw_worksheet* ws, Row r);
+  Row summary_barriers(lxw_worksheet* ws, Row r);
+  Row summary_lines(lxw_worksheet* ws, Row r);
+  void summary_checks(lxw_worksheet* ws, Row r);
   Row check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
                   bool subject);
   void inputs(lxw_worksheet* ws);
+  template <class Write>
+  void each_section(lxw_worksheet* ws, Row& r, const LoadedScenario& sc, Write&& write);
+  Row inputs_simulation(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
+  Row inputs_materials(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
+  Row inputs_blocks(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
+  Row inputs_sources(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
+  Row inputs_vertices(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
+  Row inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
+  Row inputs_barriers(lxw_worksheet* ws, Row r);
+  void inputs_scenario_text(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
   // A barrier's sheet (xlsx_report_barrier.cpp): its tables, then its charts.
   void barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b);
   struct BarrierSample;
