@@ -8,7 +8,6 @@
 #include <cmath>
 #include <span>
 
-#include "pierre/stats/empirical_cdf.hpp"
 #include "pierre/stats/lognormal_fit.hpp"
 #include "pierre/stats/percentile.hpp"
 #include "pierre/stats/weibull_fit.hpp"
@@ -408,22 +407,10 @@ Report::BarrierChartData Report::barrier_chart_data(lxw_worksheet* ws, Row data_
     count(ws, r0 + static_cast<Row>(i), 2, hg.counts[i]);
     num(ws, r0 + static_cast<Row>(i), 3, hg.density[i], number("parameter"));
   }
-  // The outline of the columns: (e_i, 0), (e_i, d_i), (e_i+1, d_i), (e_i+1, 0), ...
-  Row o = r0;
-  for (std::size_t i = 0; i < hg.counts.size(); ++i) {
-    const double a = hg.lo + hg.width * static_cast<double>(i), e = a + hg.width;
-    for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, hg.density[i]},
-                          std::pair{e, hg.density[i]}, std::pair{e, 0.0}}) {
-      num(ws, o, 4, px, qf);
-      num(ws, o++, 5, py, number("parameter"));
-    }
-  }
+  const Row o = outline_rows(ws, r0, 4, hg.lo, hg.width, hg.density, qf, number("parameter"));
   // Curves on an even grid.
   const int n = t_.curve_points;
-  std::vector<double> grid(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
-  const std::vector<double> ecdf =
-      x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
+  const std::vector<double> grid = even_grid(lo, hi, n), ecdf = sample_cdf(x, grid);
   for (int i = 0; i < n; ++i) {
     const Row rr = r0 + static_cast<Row>(i);
     const double g = grid[static_cast<std::size_t>(i)];

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pierre/stats/empirical_cdf.hpp"
+
 namespace pierre::io::detail {
 namespace {
 
@@ -149,6 +151,30 @@ Row Report::path_rows(lxw_worksheet* ws, Row r0,
     ++r;  // an empty row: a gap between paths
   }
   return r;
+}
+
+Row Report::outline_rows(lxw_worksheet* ws, Row r0, Col xc, double lo, double width,
+                         const std::vector<double>& density, lxw_format* xf, lxw_format* yf) {
+  Row o = r0;
+  for (std::size_t i = 0; i < density.size(); ++i) {
+    const double a = lo + width * static_cast<double>(i), e = a + width;
+    for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, density[i]}, std::pair{e, density[i]},
+                          std::pair{e, 0.0}}) {
+      num(ws, o, xc, px, xf);
+      num(ws, o++, xc + 1, py, yf);
+    }
+  }
+  return o;
+}
+
+std::vector<double> even_grid(double lo, double hi, int n) {
+  std::vector<double> grid(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
+  return grid;
+}
+
+std::vector<double> sample_cdf(const std::vector<double>& x, const std::vector<double>& grid) {
+  return x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
 }
 
 }  // namespace pierre::io::detail

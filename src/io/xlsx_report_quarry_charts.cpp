@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pierre/stats/empirical_cdf.hpp"
 #include "pierre/stats/lognormal_fit.hpp"
 
 namespace pierre::io::detail {
@@ -128,24 +127,13 @@ Report::DistanceChartData Report::quarry_distance_data(lxw_worksheet* ws, Row da
   const Row r0 = data_row;
   lxw_format *hf = number("factor"), *pf = number("parameter");
 
-  const int bins = t_.histogram_bins;
-  const DistanceColumns cols = distance_columns(x, obs, bins);
-  const double hi = cols.hi, w = cols.width;
-  Row o = r0;
-  if (cols.positive > 0)
-    for (int i = 0; i < bins; ++i) {
-      const double a = w * i, e = a + w, dy = cols.density[static_cast<std::size_t>(i)];
-      for (auto [px, py] : {std::pair{a, 0.0}, std::pair{a, dy}, std::pair{e, dy}, std::pair{e, 0.0}}) {
-        num(ws, o, 0, px, hf);
-        num(ws, o++, 1, py, pf);
-      }
-    }
+  const DistanceColumns cols = distance_columns(x, obs, t_.histogram_bins);
+  const double hi = cols.hi;
+  const Row o = cols.positive > 0 ? outline_rows(ws, r0, 0, 0.0, cols.width, cols.density, hf, pf)
+                                  : r0;
   // Curves on an even grid from 0.
   const int n = t_.curve_points;
-  std::vector<double> grid(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) grid[static_cast<std::size_t>(i)] = hi * i / (n - 1);
-  const std::vector<double> ecdf =
-      x.empty() ? std::vector<double>(grid.size(), kNaN) : stats::empirical_cdf(x, grid);
+  const std::vector<double> grid = even_grid(0.0, hi, n), ecdf = sample_cdf(x, grid);
   double cmax = 0;
   for (int i = 0; i < n; ++i) {
     const Row rr = r0 + static_cast<Row>(i);

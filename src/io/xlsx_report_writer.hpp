@@ -50,6 +50,10 @@ std::string lower(std::string s);
 std::chrono::year_month_day parse_date(const std::string& s);
 // Four significant digits, "—" for a NaN or an infinity (numbers inside a text).
 std::string format_number(double v);
+// `n` points evenly spaced from lo to hi, where the fitted curves are drawn.
+std::vector<double> even_grid(double lo, double hi, int n);
+// The empirical CDF of `x` at `grid`, NaN (an empty cell) everywhere without a sample.
+std::vector<double> sample_cdf(const std::vector<double>& x, const std::vector<double>& grid);
 
 struct Cell {
   Row row;
@@ -176,6 +180,11 @@ class Report {
   // after each path; returns the row after the last one written.
   Row path_rows(lxw_worksheet* ws, Row r0, const std::vector<std::vector<geometry::Vec2>>& paths,
                 lxw_format* xf);
+  // The outline of histogram columns `width` wide from `lo`, of heights `density`: (e_i, 0),
+  // (e_i, d_i), (e_i+1, d_i), (e_i+1, 0), … in columns xc (x) and xc + 1 (y) from row r0;
+  // returns the row after the last point.
+  Row outline_rows(lxw_worksheet* ws, Row r0, Col xc, double lo, double width,
+                   const std::vector<double>& density, lxw_format* xf, lxw_format* yf);
 
   // -- sheets
   // The sheet of a barrier or a quarry row: the template's sheets.<key> with {name} replaced.
