@@ -40,13 +40,20 @@ std::vector<geometry::Vec2> drawn_points(const std::vector<geometry::Vec2>& path
 }  // namespace
 
 lxw_chart* Report::scatter_chart(std::string_view chart_key, const std::string& name) {
-  lxw_chart* chart =
-      check_ptr(workbook_add_chart(wb_, LXW_CHART_SCATTER_STRAIGHT), "workbook_add_chart");
   const std::string section = "chart." + std::string(chart_key);
-  chart_title_set_name(chart, keep(replace_all(t_.get(section, "title"), "{name}", name)));
   lxw_chart_font title_font{};
   title_font.size = 11;
   title_font.bold = LXW_EXPLICIT_FALSE;
+  return scatter_chart(chart_key, replace_all(t_.get(section, "title"), "{name}", name),
+                       title_font);
+}
+
+lxw_chart* Report::scatter_chart(std::string_view chart_key, const std::string& title,
+                                 lxw_chart_font title_font) {
+  lxw_chart* chart =
+      check_ptr(workbook_add_chart(wb_, LXW_CHART_SCATTER_STRAIGHT), "workbook_add_chart");
+  const std::string section = "chart." + std::string(chart_key);
+  chart_title_set_name(chart, keep(title));
   chart_title_set_name_font(chart, &title_font);
   chart_axis_set_name(chart->x_axis, keep(t_.get(section, "x_axis")));
   chart_axis_set_name(chart->y_axis, keep(t_.get(section, "y_axis")));
@@ -151,6 +158,17 @@ Row Report::path_rows(lxw_worksheet* ws, Row r0,
     ++r;  // an empty row: a gap between paths
   }
   return r;
+}
+
+Bounds bounds(const std::vector<geometry::Vec2>& points) {
+  Bounds b;
+  for (const auto& p : points) {
+    b.xmin = std::min(b.xmin, p.x);
+    b.xmax = std::max(b.xmax, p.x);
+    b.zmin = std::min(b.zmin, p.z);
+    b.zmax = std::max(b.zmax, p.z);
+  }
+  return b;
 }
 
 Row Report::outline_rows(lxw_worksheet* ws, Row r0, Col xc, double lo, double width,

@@ -31,26 +31,11 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   const Row r0 = head + 2;
   lxw_format* xf = number("coordinate");
 
-  lxw_chart* chart = check_ptr(workbook_add_chart(wb_, LXW_CHART_SCATTER_STRAIGHT),
-                               "workbook_add_chart");
-  chart_title_set_name(chart, keep(t_.get("chart.profile", "title")));
   lxw_chart_font title_font{};
-  title_font.size = 12;
-  chart_title_set_name_font(chart, &title_font);
-  chart_axis_set_name(chart->x_axis, keep(t_.get("chart.profile", "x_axis")));
-  chart_axis_set_name(chart->y_axis, keep(t_.get("chart.profile", "y_axis")));
-  chart_legend_set_position(chart, LXW_CHART_LEGEND_BOTTOM);
-  chart_show_blanks_as(chart, LXW_CHART_BLANKS_AS_GAP);
-  lxw_chart_line grid{};
-  grid.color = 0xD9D9D9;
-  grid.width = 0.5f;
-  chart_axis_major_gridlines_set_visible(chart->x_axis, LXW_TRUE);
-  chart_axis_major_gridlines_set_line(chart->x_axis, &grid);
-  chart_axis_major_gridlines_set_line(chart->y_axis, &grid);
-  chart_axis_set_label_position(chart->x_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
-  chart_axis_set_label_position(chart->y_axis, LXW_CHART_AXIS_LABEL_POSITION_LOW);
+  title_font.size = 12;  // the sheet's one large chart: a larger title, bold as Excel's default
+  lxw_chart* chart = scatter_chart("profile", t_.get("chart.profile", "title"), title_font);
   bool any = false;
-  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
+  const Bounds ext = d_.scenario ? bounds(d_.scenario->scenario.profile.vertices()) : Bounds{};
 
   // Paths first so that the profile is drawn over them.
   const Row pr = path_rows(ws, r0, d_.sample_paths, xf);
@@ -61,20 +46,14 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   if (d_.scenario) {
     const auto& prof = d_.scenario->scenario.profile;
     const auto& v = prof.vertices();
-    double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
-    for (const auto& p : v) {
-      zmin = std::min(zmin, p.z);
-      zmax = std::max(zmax, p.z);
-    }
     // Lines drawn at least 6 % of the profile's height, so that they show on a tall slope.
+    const double z_range = ext.zmax - ext.zmin;
     const double line_height =
-        std::max(t_.profile_line_height, std::isfinite(zmax - zmin) ? 0.06 * (zmax - zmin) : 0.0);
+        std::max(t_.profile_line_height, std::isfinite(z_range) ? 0.06 * z_range : 0.0);
     Row vr = r0;
     for (const auto& p : v) {
       num(ws, vr, 0, p.x, xf);
       num(ws, vr++, 1, p.z, xf);
-      xmin = std::min(xmin, p.x);
-      xmax = std::max(xmax, p.x);
     }
     if (!v.empty()) {
       xy_series(chart, sheet, r0, vr - 1, 0, 1, h("profile", "profile"), t_.colour("profile"),
@@ -126,13 +105,7 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
     }
   }
   if (any) {
-    double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
-    if (d_.scenario)
-      for (const auto& p : d_.scenario->scenario.profile.vertices()) {
-        zmin = std::min(zmin, p.z);
-        zmax = std::max(zmax, p.z);
-      }
-    equal_scale(chart, xmin, xmax, zmin, zmax, 1.6, 1.6);
+    equal_scale(chart, ext.xmin, ext.xmax, ext.zmin, ext.zmax, 1.6, 1.6);
     insert_chart(ws, {chart_row, 0}, chart, 1.6, 1.6);
   }
 }

@@ -229,13 +229,7 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
   lxw_format* xf = number("coordinate");
 
   lxw_chart* chart = scatter_chart("quarry_section", s.spec.name);
-  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin, xmin = zmin, xmax = -zmin;
-  for (const auto& p : prof.vertices()) {
-    zmin = std::min(zmin, p.z);
-    zmax = std::max(zmax, p.z);
-    xmin = std::min(xmin, p.x);
-    xmax = std::max(xmax, p.x);
-  }
+  const Bounds ext = bounds(prof.vertices());
   Row last = r0;
   // Paths first, under the profile.
   const Row pr = path_rows(ws, r0, view->paths, xf);
@@ -287,7 +281,7 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
     point_labels(sr, names);  // two work areas are two like triangles otherwise
     last = std::max(last, wr);
   }
-  equal_scale(chart, xmin, xmax, zmin, zmax, 2.0, 1.4);
+  equal_scale(chart, ext.xmin, ext.xmax, ext.zmin, ext.zmax, 2.0, 1.4);
   chart_axis_set_num_format(chart->x_axis, keep(t_.get("formats", "general")));
   insert_chart(ws, at, chart, 2.0, 1.4);
   return last + 1;

@@ -54,6 +54,12 @@ std::string format_number(double v);
 std::vector<double> even_grid(double lo, double hi, int n);
 // The empirical CDF of `x` at `grid`, NaN (an empty cell) everywhere without a sample.
 std::vector<double> sample_cdf(const std::vector<double>& x, const std::vector<double>& grid);
+// The extent of a drawing's points (the infinities of an empty one for none).
+struct Bounds {
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+  double xmin = kInf, xmax = -kInf, zmin = kInf, zmax = -kInf;
+};
+Bounds bounds(const std::vector<geometry::Vec2>& points);
 
 struct Cell {
   Row row;
@@ -154,7 +160,12 @@ class Report {
   void status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c);
 
   // -- charts
+  // A scatter chart of the template's chart.<key>: its title with {name} replaced (11 pt, not
+  // bold), its axis names, light gridlines, the legend below and blanks drawn as gaps.
   lxw_chart* scatter_chart(std::string_view chart_key, const std::string& name);
+  // The same with the title as given, in `title_font`.
+  lxw_chart* scatter_chart(std::string_view chart_key, const std::string& title,
+                           lxw_chart_font title_font);
   lxw_chart_series* xy_series(lxw_chart* chart, const std::string& sheet, Row r0, Row r1, Col xc,
                               Col yc, const std::string& name, std::uint32_t colour,
                               float line_width, std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
