@@ -244,7 +244,17 @@ class Report {
   void barrier_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
                          const BarrierPlot& pl, const BarrierChartData& cd,
                          const std::string& name);
+  // The Profile sheet (xlsx_report_profile.cpp).
   void profile(lxw_worksheet* ws, const std::string& sheet);
+  bool profile_ground(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart, Row r0,
+                      const Bounds& ext);
+  struct Mark;
+  // Vertical segments in columns c (x) and c + 1 (z) from row r0, a gap row after each, drawn as
+  // one series of the profile's `key` named at their tops; nullptr when there are none.
+  lxw_chart_series* vertical_marks(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart,
+                                   Row r0, Col c, const std::vector<Mark>& marks,
+                                   std::string_view key, float line_width,
+                                   std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
   // Quarry danger zones (xlsx_report_quarry.cpp).
   Row quarry_summary(lxw_worksheet* ws, Row r);
   // A quarry row's sheet (xlsx_report_quarry.cpp): its tables, then its charts
