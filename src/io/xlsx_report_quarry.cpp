@@ -59,8 +59,13 @@ Row Report::quarry_summary(lxw_worksheet* ws, Row r) {
       ++r;
     }
   }
-  // The thesis's last rows: means over the rows of the per-row ratios.
-  const auto& a = q.average;
+  return quarry_averages(ws, r);
+}
+
+// The thesis's last rows: means over the rows of the per-row ratios, calculated and observed.
+Row Report::quarry_averages(lxw_worksheet* ws, Row r) {
+  lxw_format* hf = number("factor", 1);
+  const auto& a = d_.quarry->average;
   auto avg = [&](const std::string& source, double rd50, double rd95, double rdmax, double id50,
                  double id95, double idmax) {
     const std::string& label = t_.get("titles", "quarry_average");

@@ -213,7 +213,6 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
   const ReportData::QuarrySectionView* view = section_view(s.spec.name);
   if (!view || !view->profile || view->profile->vertices().empty()) return data_row;
   const geometry::Profile& prof = *view->profile;
-  const auto& g = s.geometry;
 
   ++data_row;
   text(ws, data_row++, 0, s.spec.name, section());
@@ -230,7 +229,6 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
 
   lxw_chart* chart = scatter_chart("quarry_section", s.spec.name);
   const Bounds ext = bounds(prof.vertices());
-  Row last = r0;
   // Paths first, under the profile.
   const Row pr = path_rows(ws, r0, view->paths, xf);
   if (pr > r0)
@@ -241,9 +239,22 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
     num(ws, vr++, 1, p.z, xf);
   }
   xy_series(chart, sheet, r0, vr - 1, 0, 1, h("quarry_chart", "profile"), t_.colour("profile"), 2.25f);
-  last = std::max({last, pr, vr});
+  const Row last = std::max({pr, vr, quarry_section_marks(ws, sheet, chart, r0, s, prof)});
+  equal_scale(chart, ext.xmin, ext.xmax, ext.zmin, ext.zmax, 2.0, 1.4);
+  chart_axis_set_num_format(chart->x_axis, keep(t_.get("formats", "general")));
+  insert_chart(ws, at, chart, 2.0, 1.4);
+  return last + 1;
+}
 
-  // Vertical marks on the ground: the toe, ID_gov and RD_gov.
+// The marks on a section's ground: the toe and the ends of the danger zone and of the
+// first-impact zone (vertical segments, a series each), and the work areas (named points);
+// returns the row after the last one written (r0 when none is).
+Row Report::quarry_section_marks(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart,
+                                 Row r0, const design::QuarrySectionResult& s,
+                                 const geometry::Profile& prof) {
+  const auto& g = s.geometry;
+  lxw_format* xf = number("coordinate");
+  Row last = r0;
   const double lh = std::max(t_.profile_line_height, 0.25 * g.height);
   auto ground = [&](double x) {
     const auto gp = prof.top_ground(x);
@@ -281,10 +292,7 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
     point_labels(sr, names);  // two work areas are two like triangles otherwise
     last = std::max(last, wr);
   }
-  equal_scale(chart, ext.xmin, ext.xmax, ext.zmin, ext.zmax, 2.0, 1.4);
-  chart_axis_set_num_format(chart->x_axis, keep(t_.get("formats", "general")));
-  insert_chart(ws, at, chart, 2.0, 1.4);
-  return last + 1;
+  return last;
 }
 
 }  // namespace pierre::io::detail

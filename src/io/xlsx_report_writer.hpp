@@ -257,6 +257,7 @@ class Report {
                                    std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
   // Quarry danger zones (xlsx_report_quarry.cpp).
   Row quarry_summary(lxw_worksheet* ws, Row r);
+  Row quarry_averages(lxw_worksheet* ws, Row r);
   // A quarry row's sheet (xlsx_report_quarry.cpp): its tables, then its charts
   // (xlsx_report_quarry_charts.cpp).
   void quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t row);
@@ -295,6 +296,8 @@ class Report {
   void distance_axes(lxw_chart* c, double hi);
   Row quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
                            const design::QuarrySectionResult& s);
+  Row quarry_section_marks(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart, Row r0,
+                           const design::QuarrySectionResult& s, const geometry::Profile& prof);
   void trajectories(lxw_worksheet* ws);
   void crossings(lxw_worksheet* ws);
   Row cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
