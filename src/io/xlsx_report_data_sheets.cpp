@@ -1,4 +1,5 @@
-// The data sheets: Trajectories and Crossings.
+// The data sheets, Trajectories and Crossings: the first rows of trajectories.csv and
+// crossings.csv (the cap stated on the sheet), in a quarry run each under its section.
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>
@@ -15,6 +16,27 @@ Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t 
   return r;
 }
 
+// The top of a data sheet: its title, the cap note and the heading row (in a quarry run the
+// section column first), frozen and repeated on every printed page; returns the heading's row.
+Row Report::data_sheet_head(lxw_worksheet* ws, std::string_view key, Col c0, std::size_t shown,
+                            std::uint64_t total, const char* csv,
+                            std::initializer_list<std::string_view> keys) {
+  text(ws, 0, 0, t_.get("titles", key), title());
+  const Row head = cap_note(ws, 1, shown, total, csv);
+  if (c0 > 0) headings(ws, head, 0, key, {"section"}, 45);
+  headings(ws, head, c0, key, keys, 45);
+  worksheet_freeze_panes(ws, head + 1, 1 + c0);
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  return head;
+}
+
+// A data sheet prints its heading and the template's print_rows rows below it; `r` is the row
+// after the last one written.
+void Report::data_sheet_print_area(lxw_worksheet* ws, Row head, Row r, Col last_col) {
+  const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
+  check(worksheet_print_area(ws, 0, 0, std::max(last, head), last_col), "worksheet_print_area");
+}
+
 void Report::trajectories(lxw_worksheet* ws) {
   page_setup(ws);
   // A quarry run leads with the section of each row; its names come from that section.
@@ -22,19 +44,14 @@ void Report::trajectories(lxw_worksheet* ws) {
   const Col c0 = by_section ? 1 : 0;
   widths(ws, 0, 17 + c0, 11,
          {{0, by_section ? 16 : 11}, {1 + c0, 20}, {2 + c0, 12}, {10 + c0, 14}});
-  text(ws, 0, 0, t_.get("titles", "trajectories"), title());
   const std::size_t shown = std::min(d_.trajectories.size(), t_.trajectory_rows);
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_trajectories, d_.trajectories.size());
-  Row r = cap_note(ws, 1, shown, total, "trajectories.csv");
-  const Row head = r;
-  if (by_section) headings(ws, r, 0, "trajectories", {"section"}, 45);
-  headings(ws, r++, c0, "trajectories",
-           {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x",
-            "stop_z", "runout", "stop_reason", "duration", "impacts", "first_impact_x",
-            "first_impact_z", "max_jump_height", "max_speed", "max_energy"},
-           45);
-  worksheet_freeze_panes(ws, r, 1 + c0);
-  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  const Row head = data_sheet_head(
+      ws, "trajectories", c0, shown, total, "trajectories.csv",
+      {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x", "stop_z",
+       "runout", "stop_reason", "duration", "impacts", "first_impact_x", "first_impact_z",
+       "max_jump_height", "max_speed", "max_energy"});
+  Row r = head + 1;
   lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
              *lf = number("length"), *tf = number("time"), *sf = number("speed"),
              *ef = number("energy");
@@ -65,8 +82,7 @@ void Report::trajectories(lxw_worksheet* ws) {
     row.num(16, t.max_speed, sf);
     row.num(17, t.max_energy / 1000, ef);
   }
-  const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
-  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 17 + c0), "worksheet_print_area");
+  data_sheet_print_area(ws, head, r, 17 + c0);
 }
 
 void Report::crossings(lxw_worksheet* ws) {
@@ -74,19 +90,13 @@ void Report::crossings(lxw_worksheet* ws) {
   const bool by_section = !d_.crossing_sections.empty();
   const Col c0 = by_section ? 1 : 0;
   widths(ws, 0, 14 + c0, 11, {{0, by_section ? 16 : 11}, {1 + c0, 16}, {3 + c0, 14}});
-  text(ws, 0, 0, t_.get("titles", "crossings"), title());
   const std::size_t shown = std::min(d_.crossings.size(), t_.crossing_rows);
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_crossings, d_.crossings.size());
-  Row r = cap_note(ws, 1, shown, total, "crossings.csv");
-  const Row head = r;
-  if (by_section) headings(ws, r, 0, "crossings", {"section"}, 45);
-  headings(ws, r++, c0, "crossings",
-           {"trajectory", "line", "chainage", "block", "mass", "time", "direction", "vx", "vz",
-            "speed", "omega", "translational_energy", "rotational_energy", "passing_height",
-            "sliding"},
-           45);
-  worksheet_freeze_panes(ws, r, 1 + c0);
-  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  const Row head = data_sheet_head(
+      ws, "crossings", c0, shown, total, "crossings.csv",
+      {"trajectory", "line", "chainage", "block", "mass", "time", "direction", "vx", "vz", "speed",
+       "omega", "translational_energy", "rotational_energy", "passing_height", "sliding"});
+  Row r = head + 1;
   lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
              *lf = number("length"), *tf = number("time"), *sf = number("speed"),
              *ef = number("energy"), *gf = number("general");
@@ -111,8 +121,7 @@ void Report::crossings(lxw_worksheet* ws) {
     row.num(13, c.height, lf);
     row.num(14, c.sliding ? 1 : 0, cf);
   }
-  const Row last = static_cast<Row>(std::min<std::size_t>(head + t_.print_rows, r > 0 ? r - 1 : 0));
-  check(worksheet_print_area(ws, 0, 0, std::max(last, head), 14 + c0), "worksheet_print_area");
+  data_sheet_print_area(ws, head, r, 14 + c0);
 }
 
 }  // namespace pierre::io::detail

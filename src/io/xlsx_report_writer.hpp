@@ -302,6 +302,10 @@ class Report {
   void crossings(lxw_worksheet* ws);
   Row cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
                const char* csv);
+  Row data_sheet_head(lxw_worksheet* ws, std::string_view key, Col c0, std::size_t shown,
+                      std::uint64_t total, const char* csv,
+                      std::initializer_list<std::string_view> keys);
+  void data_sheet_print_area(lxw_worksheet* ws, Row head, Row r, Col last_col);
 
   std::string line_name(std::uint32_t i) const;
   double line_chainage(std::uint32_t i) const;
