@@ -117,10 +117,7 @@ Row Report::barrier_overview(lxw_worksheet* ws, Row r, const design::BarrierDesi
   text(ws, r, 0, t_.get("labels", "not_reached"), bold());
   count(ws, r++, 1, b.not_reached);
   text(ws, r, 0, t_.get("labels", "bootstrap_seed"), bold());
-  if (b.bootstrap_seed <= (std::uint64_t{1} << 53))
-    num(ws, r++, 1, static_cast<double>(b.bootstrap_seed), number("count"));
-  else
-    text(ws, r++, 1, std::to_string(b.bootstrap_seed));
+  seed(ws, r++, 1, b.bootstrap_seed, number("count"));
   return r;
 }
 
@@ -264,8 +261,7 @@ Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesig
   ++r;
   text(ws, r++, 0, t_.get("titles", "factors"), section());
   headings(ws, r, 0, "factors", {"quantity", "value", "unit"});
-  check(worksheet_merge_range(ws, r, 3, r, 8, h("factors", "how").c_str(), heading()),
-        "worksheet_merge_range");
+  merged(ws, r, 3, 8, h("factors", "how"), heading());
   ++r;
   // How each was obtained: the design's own words (BarrierDesign::how), else the formula.
   auto fr = [&](std::string_view key, double v, std::string_view kind, std::string_view unit,

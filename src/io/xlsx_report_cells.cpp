@@ -180,6 +180,18 @@ void Report::num(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f) {
   check(worksheet_write_number(ws, r, c, v, f), "worksheet_write_number");
 }
 
+void Report::seed(lxw_worksheet* ws, Row r, Col c, std::uint64_t v, lxw_format* f) {
+  if (v <= (std::uint64_t{1} << 53))
+    num(ws, r, c, static_cast<double>(v), f);
+  else
+    text(ws, r, c, std::to_string(v));
+}
+
+void Report::merged(lxw_worksheet* ws, Row r, Col c0, Col c1, const std::string& s,
+                    lxw_format* f) {
+  check(worksheet_merge_range(ws, r, c0, r, c1, s.c_str(), f), "worksheet_merge_range");
+}
+
 void Report::headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
                       std::initializer_list<std::string_view> keys, double height) {
   Col c = c0;
@@ -294,9 +306,7 @@ Row Report::check_table(lxw_worksheet* ws, Row r, const std::vector<design::Chec
     headings(ws, r, 0, "checks", {"id", "value", "limit", "unit", "status"});
     for (auto [c0, c1, key] : {std::tuple{5, 7, "what"}, std::tuple{8, 9, "rule"},
                                std::tuple{10, 12, "reason"}})
-      check(worksheet_merge_range(ws, r, static_cast<Col>(c0), r, static_cast<Col>(c1),
-                                  h("checks", key).c_str(), heading()),
-            "worksheet_merge_range");
+      merged(ws, r, static_cast<Col>(c0), static_cast<Col>(c1), h("checks", key), heading());
   }
   const Row first = ++r;
   for (const auto& l : lines) {
@@ -321,9 +331,7 @@ Row Report::check_table(lxw_worksheet* ws, Row r, const std::vector<design::Chec
       text(ws, r, 4, status, centred_bold());
       for (auto [c0, c1, t] : {std::tuple{5, 7, &l.what}, std::tuple{8, 9, &l.rule},
                                std::tuple{10, 12, &l.reason}})
-        check(worksheet_merge_range(ws, r, static_cast<Col>(c0), r, static_cast<Col>(c1),
-                                    t->c_str(), wrap()),
-              "worksheet_merge_range");
+        merged(ws, r, static_cast<Col>(c0), static_cast<Col>(c1), *t, wrap());
       fit_row(ws, r, {{&l.what, 42}, {&l.rule, 28}, {&l.reason, 42}});
     }
     ++r;

@@ -40,10 +40,7 @@ Row Report::inputs_simulation(lxw_worksheet* ws, Row r, const LoadedScenario& sc
   headings(ws, r++, 0, "simulation",
            {"seed", "throws", "gravity", "max_time", "max_impacts", "stop_head_factor",
             "max_sliding_speed"});
-  if (s.settings.seed <= (std::uint64_t{1} << 53))
-    num(ws, r, 0, static_cast<double>(s.settings.seed), number("general", 1));
-  else
-    text(ws, r, 0, std::to_string(s.settings.seed));
+  seed(ws, r, 0, s.settings.seed, number("general", 1));
   count(ws, r, 1, s.settings.throws);
   num(ws, r, 2, s.settings.gravity, number("material"));
   num(ws, r, 3, s.settings.max_time, number("time"));

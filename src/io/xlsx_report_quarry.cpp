@@ -352,8 +352,7 @@ Row Report::quarry_governing(lxw_worksheet* ws, Row r, const design::QuarryRow& 
   ++r;
   text(ws, r++, 0, t_.get("titles", "quarry_governing"), section());
   headings(ws, r, 0, "quarry_governing", {"quantity", "value_h", "value"});
-  check(worksheet_merge_range(ws, r, 3, r, 9, h("quarry_governing", "how").c_str(), heading()),
-        "worksheet_merge_range");
+  merged(ws, r, 3, 9, h("quarry_governing", "how"), heading());
   ++r;
   auto gov = [&](std::string_view key, double vh, const std::string& how) {
     text(ws, r, 0, h("quarry_governing", key), bold());
@@ -382,8 +381,7 @@ Row Report::quarry_zones(lxw_worksheet* ws, Row r, const QuarrySections& secs) {
            {"section", "danger_zone", "first_impact_zone", "bench_width", "retention",
             "ritchie_width"},
            60);
-  check(worksheet_merge_range(ws, r, 6, r, 9, h("quarry_zones", "work_areas").c_str(), heading()),
-        "worksheet_merge_range");
+  merged(ws, r, 6, 9, h("quarry_zones", "work_areas"), heading());
   ++r;
   for (const auto* s : secs) {
     text(ws, r, 0, s->spec.name, wrap());
@@ -396,7 +394,7 @@ Row Report::quarry_zones(lxw_worksheet* ws, Row r, const QuarrySections& secs) {
     for (const auto& w : s->spec.work_areas)
       areas += fmt::format("{}{} {} m", areas.empty() ? "" : "; ", w.name, format_number(w.distance));
     text(ws, r, 6, keep(areas), wrap());
-    check(worksheet_merge_range(ws, r, 6, r, 9, areas.c_str(), wrap()), "worksheet_merge_range");
+    merged(ws, r, 6, 9, areas, wrap());
     fit_row(ws, r, {{&strings_.back(), 52}, {&s->spec.name, 30}});
     ++r;
   }

@@ -56,11 +56,7 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
   label("version");
   text(ws, r++, 2, d_.pierre_version);
   label("seed");
-  if (d_.seed <= (std::uint64_t{1} << 53)) {  // exact as a double
-    num(ws, r++, 2, static_cast<double>(d_.seed), number("general", 2));
-  } else {
-    text(ws, r++, 2, std::to_string(d_.seed));  // a double would round it
-  }
+  seed(ws, r++, 2, d_.seed, number("general", 2));
   label("throws");
   num(ws, r++, 2, d_.throws, number("count", 2));
   label("trajectories");

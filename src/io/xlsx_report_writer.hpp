@@ -102,6 +102,11 @@ class Report {
   void count(lxw_worksheet* ws, Row r, Col c, std::uint64_t v) {
     num(ws, r, c, static_cast<double>(v), number("count"));
   }
+  // A seed: a number where a double holds it exactly (up to 2^53), else text (a double would
+  // round it).
+  void seed(lxw_worksheet* ws, Row r, Col c, std::uint64_t v, lxw_format* f);
+  // Text across the columns c0 … c1 of row r (a merged range).
+  void merged(lxw_worksheet* ws, Row r, Col c0, Col c1, const std::string& s, lxw_format* f);
   // A heading row: the template's headings of `table` for `keys`, from column `c0`.
   void headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
                 std::initializer_list<std::string_view> keys, double height = 30);
