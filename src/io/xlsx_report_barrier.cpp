@@ -150,8 +150,7 @@ Report::BarrierSample Report::barrier_sample(const design::BarrierDesign& b) con
 // Statistics: one row per statistic, one column per quantity (the observed ones when given).
 Row Report::barrier_statistics(lxw_worksheet* ws, Row r, const design::BarrierDesign& b,
                                const BarrierSample& sample) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "statistics"), section());
+  r = table_title(ws, r, "statistics");
   std::vector<StatisticsColumn> qs = {
       {&b.speed, &b.speed.summary, "speed", "speed", &sample.speed},
       {&b.height, &b.height.summary, "height", "length", &sample.height},
@@ -208,8 +207,7 @@ void Report::statistic(lxw_worksheet* ws, Row r, Col c, std::string_view s,
 
 // Bootstrap intervals of v_k, h_k, E_d and h_i.
 Row Report::barrier_bootstrap(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "bootstrap"), section());
+  r = table_title(ws, r, "bootstrap");
   headings(ws, r++, 0, "bootstrap",
            {"quantity", "estimate", "lower", "upper", "half_width", "confidence", "resamples"});
   struct BI {
@@ -238,8 +236,7 @@ Row Report::barrier_bootstrap(lxw_worksheet* ws, Row r, const design::BarrierDes
 
 // The design values (Table 4.1's columns).
 Row Report::barrier_design_values(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "design"), section());
+  r = table_title(ws, r, "design");
   headings(ws, r++, 1, "design", {"v_d", "m_d", "E_d", "sel_req", "mel_req", "h_i", "energy_class"},
            45);
   text(ws, r, 0, b.spec.name, bold());
@@ -258,8 +255,7 @@ Row Report::barrier_design_values(lxw_worksheet* ws, Row r, const design::Barrie
 
 // The factors and design quantities, with how each was obtained.
 Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "factors"), section());
+  r = table_title(ws, r, "factors");
   headings(ws, r, 0, "factors", {"quantity", "value", "unit"});
   merged(ws, r, 3, 8, h("factors", "how"), heading());
   ++r;
@@ -307,8 +303,7 @@ Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesig
 
 // The probabilities of exceeding the barrier's capacities (Table 4.2's columns).
 Row Report::barrier_exceedance(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "exceedance"), section());
+  r = table_title(ws, r, "exceedance");
   headings(ws, r++, 0, "exceedance",
            {"what", "threshold", "unit", "simulated_weibull", "simulated_empirical",
             "observed_weibull"});
@@ -327,14 +322,12 @@ Row Report::barrier_exceedance(lxw_worksheet* ws, Row r, const design::BarrierDe
 // This barrier's check lines, then the design's notes.
 Row Report::barrier_checks(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
   if (!b.checks.empty()) {
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "barrier_checks"), section());
+    r = table_title(ws, r, "barrier_checks");
     // id in A (wide), what in B.. would be cut: keep Summary's columns minus the subject.
     r = check_table(ws, r, b.checks, false);
   }
   if (!b.notes.empty()) {
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "notes"), section());
+    r = table_title(ws, r, "notes");
     for (const auto& n : b.notes) text(ws, r++, 0, n, note());
   }
   return r;

@@ -52,8 +52,7 @@ Row Report::inputs_simulation(lxw_worksheet* ws, Row r, const LoadedScenario& sc
 
 Row Report::inputs_materials(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
   const auto& s = sc.scenario;
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "materials"), section());
+  r = table_title(ws, r, "materials");
   if (!sc.materials_file.empty()) {
     text(ws, r, 0, t_.get("labels", "materials_file"), bold());
     text(ws, r++, 1, sc.materials_file.string());
@@ -76,8 +75,7 @@ Row Report::inputs_materials(lxw_worksheet* ws, Row r, const LoadedScenario& sc)
 }
 
 Row Report::inputs_blocks(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "blocks"), section());
+  r = table_title(ws, r, "blocks");
   headings(ws, r++, 0, "blocks",
            {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"});
   each_section(ws, r, sc, [&](const std::vector<BlockGroup>& groups, const sim::Scenario&) {
@@ -95,8 +93,7 @@ Row Report::inputs_blocks(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
 }
 
 Row Report::inputs_sources(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "sources"), section());
+  r = table_title(ws, r, "sources");
   headings(ws, r++, 0, "sources", {"name", "x", "z", "vx", "vz", "omega"});
   each_section(ws, r, sc, [&](const std::vector<BlockGroup>&, const sim::Scenario& sec) {
     for (const auto& so : sec.sources) {
@@ -114,8 +111,7 @@ Row Report::inputs_sources(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
 // The section as read: every vertex with the material of the segment that starts there (the last
 // vertex ends the profile).
 Row Report::inputs_vertices(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "profile_vertices"), section());
+  r = table_title(ws, r, "profile_vertices");
   headings(ws, r++, 0, "profile_vertices", {"x", "z", "material"});
   each_section(ws, r, sc, [&](const std::vector<BlockGroup>&, const sim::Scenario& sec) {
     const auto& segs = sec.profile.segments();
@@ -136,8 +132,7 @@ Row Report::inputs_vertices(lxw_worksheet* ws, Row r, const LoadedScenario& sc) 
 
 Row Report::inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
   const auto& s = sc.scenario;
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "observation_lines"), section());
+  r = table_title(ws, r, "observation_lines");
   headings(ws, r++, 0, "observation_lines", {"name", "x"});
   for (const auto& l : s.lines) {
     text(ws, r, 0, l.name);
@@ -149,8 +144,7 @@ Row Report::inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
 // The barriers' inputs: one column per barrier, one row per input.
 Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
   if (d_.barriers.empty()) return r;
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "barrier_inputs"), section());
+  r = table_title(ws, r, "barrier_inputs");
   text(ws, r, 0, h("barrier_inputs", "field"), heading());
   for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i)
     text(ws, r, static_cast<Col>(1 + i), d_.barriers[i].spec.name, heading());
@@ -206,8 +200,7 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
 
 // The scenario file as read, one line per row.
 void Report::inputs_scenario_text(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "scenario_text"), section());
+  r = table_title(ws, r, "scenario_text");
   text(ws, r++, 0, sc.file.string(), note());
   std::size_t line_no = 1, p = 0;
   const std::string& s = sc.text;

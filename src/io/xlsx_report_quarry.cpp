@@ -22,8 +22,7 @@ void Report::distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f) 
 
 Row Report::quarry_summary(lxw_worksheet* ws, Row r) {
   const design::QuarryDesign& q = *d_.quarry;
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "quarry_summary"), section());
+  r = table_title(ws, r, "quarry_summary");
   headings(ws, r++, 0, "quarry_summary",
            {"row", "source", "height", "thrown", "rd_gov", "id_gov", "rd50_h", "rd95_h",
             "rdmax_h", "id50_h", "id95_h", "idmax_h"},
@@ -159,8 +158,7 @@ Row Report::quarry_overview(lxw_worksheet* ws, Row r, const design::QuarryRow& r
 // Geometry: crest, toe, H (given or found), and the seed of each section's run.
 Row Report::quarry_geometry(lxw_worksheet* ws, Row r, const QuarrySections& secs) {
   lxw_format *xf = number("coordinate"), *lf = number("length"), *af = number("angle");
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "quarry_geometry"), section());
+  r = table_title(ws, r, "quarry_geometry");
   headings(ws, r++, 0, "quarry_geometry",
            {"section", "crest_x", "crest_z", "crest_origin", "toe_x", "toe_z", "toe_origin",
             "height", "height_derived", "height_origin", "floor_angle", "floor_length", "seed"},
@@ -187,8 +185,7 @@ Row Report::quarry_geometry(lxw_worksheet* ws, Row r, const QuarrySections& secs
 // How many blocks were thrown and where they went, per section and in total.
 Row Report::quarry_counts(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
                           const QuarrySections& secs) {
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "quarry_counts"), section());
+  r = table_title(ws, r, "quarry_counts");
   headings(ws, r++, 0, "quarry_counts",
            {"section", "thrown", "reached_floor", "not_reached_floor", "above_toe",
             "left_profile", "left_upslope", "abnormal"},
@@ -217,8 +214,7 @@ Row Report::quarry_counts(lxw_worksheet* ws, Row r, const design::QuarryRow& row
 Row Report::quarry_statistics(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
                               const QuarrySections& secs) {
   lxw_format *lf = number("length"), *hf = number("factor");
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "quarry_statistics"), section());
+  r = table_title(ws, r, "quarry_statistics");
   headings(ws, r++, 0, "quarry_statistics",
            {"distance", "source", "count", "zeros", "censored", "p50", "p95", "p99", "max",
             "p50_h", "p95_h", "p99_h", "max_h"},
@@ -262,8 +258,7 @@ Row Report::quarry_statistics(lxw_worksheet* ws, Row r, const design::QuarryRow&
 // The log-normal mixture fits and the comparison with the observed values.
 Row Report::quarry_fits(lxw_worksheet* ws, Row r, const design::QuarryRow& row) {
   lxw_format *hf = number("factor"), *pf = number("parameter");
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "quarry_fits"), section());
+  r = table_title(ws, r, "quarry_fits");
   headings(ws, r++, 0, "quarry_fits",
            {"distance", "zero_share", "mu", "sigma", "observed", "censored", "ks_d", "ks_p",
             "ks_below", "cdf_rmse", "observed_ks_d", "observed_ks_p", "fit_error"},
@@ -302,8 +297,7 @@ Row Report::quarry_exceedance(lxw_worksheet* ws, Row r, const design::QuarryRow&
                               const QuarrySections& secs) {
   lxw_format *lf = number("length"), *hf = number("factor");
   if (!row.exceedance.empty()) {
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "quarry_exceedance"), section());
+    r = table_title(ws, r, "quarry_exceedance");
     headings(ws, r++, 0, "quarry_exceedance",
              {"probability", "rd_fit_h", "rd_empirical_h", "rd_fit", "rd_empirical", "id_fit_h",
               "id_empirical_h", "id_fit", "id_empirical"},
@@ -349,8 +343,7 @@ Row Report::quarry_exceedance(lxw_worksheet* ws, Row r, const design::QuarryRow&
 // The governing distances, with how each was obtained.
 Row Report::quarry_governing(lxw_worksheet* ws, Row r, const design::QuarryRow& row) {
   lxw_format *lf = number("length"), *hf = number("factor");
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "quarry_governing"), section());
+  r = table_title(ws, r, "quarry_governing");
   headings(ws, r, 0, "quarry_governing", {"quantity", "value_h", "value"});
   merged(ws, r, 3, 9, h("quarry_governing", "how"), heading());
   ++r;
@@ -375,8 +368,7 @@ Row Report::quarry_governing(lxw_worksheet* ws, Row r, const design::QuarryRow& 
 // The zones of each section, its bench and its work areas.
 Row Report::quarry_zones(lxw_worksheet* ws, Row r, const QuarrySections& secs) {
   lxw_format* lf = number("length");
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "quarry_zones"), section());
+  r = table_title(ws, r, "quarry_zones");
   headings(ws, r, 0, "quarry_zones",
            {"section", "danger_zone", "first_impact_zone", "bench_width", "retention",
             "ritchie_width"},
@@ -411,8 +403,7 @@ Row Report::quarry_checks(lxw_worksheet* ws, Row r, const design::QuarryRow& row
     if (mine) lines.push_back(l);
   }
   if (!lines.empty()) {
-    ++r;
-    text(ws, r++, 0, t_.get("titles", "barrier_checks"), section());
+    r = table_title(ws, r, "barrier_checks");
     r = check_table(ws, r, lines, false);
   }
   return r;

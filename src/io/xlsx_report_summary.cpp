@@ -81,8 +81,7 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
 // The recommended barriers, and how each energy class was chosen.
 Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
   if (d_.barriers.empty()) return r;
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "barriers"), section());
+  r = table_title(ws, r, "barriers");
   headings(ws, r++, 0, "barriers",
            {"name", "line", "rules", "chainage", "energy_class", "class_mel", "class_sel",
             "mel_req", "sel_req", "interception_height"},
@@ -117,8 +116,7 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
 // The statistics at the observation lines.
 Row Report::summary_lines(lxw_worksheet* ws, Row r) {
   if (d_.statistics.lines.empty()) return r;
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "lines"), section());
+  r = table_title(ws, r, "lines");
   headings(ws, r++, 0, "lines",
            {"name", "chainage", "count", "not_reached", "speed_mean", "speed_p95",
             "height_p95", "energy_p95", "energy_max"},
@@ -148,8 +146,7 @@ void Report::summary_checks(lxw_worksheet* ws, Row r) {
             return c.subject == l.subject && c.id == l.id;
           }))
         lines.push_back(l);
-  ++r;
-  text(ws, r++, 0, t_.get("titles", "checks"), section());
+  r = table_title(ws, r, "checks");
   // The verdict first: how many lines FAIL, as `pierre check` counts them.
   std::size_t n[4] = {0, 0, 0, 0};  // pass, fail, warn, N/A
   for (const auto& l : lines) ++n[static_cast<int>(l.status)];

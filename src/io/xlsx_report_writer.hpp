@@ -107,6 +107,11 @@ class Report {
   void seed(lxw_worksheet* ws, Row r, Col c, std::uint64_t v, lxw_format* f);
   // Text across the columns c0 … c1 of row r (a merged range).
   void merged(lxw_worksheet* ws, Row r, Col c0, Col c1, const std::string& s, lxw_format* f);
+  // A table's title after a blank row: the template's titles.<key>; returns the row below it.
+  Row table_title(lxw_worksheet* ws, Row r, std::string_view key) {
+    text(ws, r + 1, 0, t_.get("titles", key), section());
+    return r + 2;
+  }
   // A heading row: the template's headings of `table` for `keys`, from column `c0`.
   void headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
                 std::initializer_list<std::string_view> keys, double height = 30);
