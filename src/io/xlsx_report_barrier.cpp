@@ -434,10 +434,7 @@ void Report::barrier_histogram_chart(lxw_worksheet* ws, const std::string& sheet
   if (fit.lognormal)
     xy_series(hc, sheet, r0, rn, 6, 8, h("histogram", "lognormal_pdf"),
               t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
-  chart_axis_set_min(hc->x_axis, cd.lo);
-  chart_axis_set_max(hc->x_axis, cd.hi);
-  chart_axis_set_min(hc->y_axis, 0);
-  chart_axis_set_num_format(hc->x_axis, keep(t_.get("formats", "general")));
+  curve_axes(hc, cd.lo, cd.hi);
   insert_chart(ws, at, hc);
 }
 
@@ -458,11 +455,8 @@ void Report::barrier_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell
   if (fit.lognormal)
     xy_series(cc, sheet, r0, rn, 6, 11, h("histogram", "lognormal_cdf"),
               t_.colour("lognormal"), 1.5f, LXW_CHART_LINE_DASH_DASH);
-  chart_axis_set_min(cc->x_axis, cd.lo);
-  chart_axis_set_max(cc->x_axis, cd.hi);
-  chart_axis_set_min(cc->y_axis, 0);
+  curve_axes(cc, cd.lo, cd.hi);
   chart_axis_set_max(cc->y_axis, 1);
-  chart_axis_set_num_format(cc->x_axis, keep(t_.get("formats", "general")));
   insert_chart(ws, at, cc);
 }
 

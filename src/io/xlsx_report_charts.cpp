@@ -171,6 +171,13 @@ Bounds bounds(const std::vector<geometry::Vec2>& points) {
   return b;
 }
 
+void Report::curve_axes(lxw_chart* c, double lo, double hi) {
+  chart_axis_set_min(c->x_axis, lo);
+  chart_axis_set_max(c->x_axis, hi);
+  chart_axis_set_min(c->y_axis, 0);
+  chart_axis_set_num_format(c->x_axis, keep(t_.get("formats", "general")));
+}
+
 Row Report::outline_rows(lxw_worksheet* ws, Row r0, Col xc, double lo, double width,
                          const std::vector<double>& density, lxw_format* xf, lxw_format* yf) {
   Row o = r0;

@@ -171,7 +171,7 @@ void Report::quarry_histogram_chart(lxw_worksheet* ws, const std::string& sheet,
   if (d.st.fit)
     xy_series(hc, sheet, cd.r0, cd.curves_last, 2, 3, h("quarry_chart", "fitted_pdf"),
               t_.colour("lognormal"), 2.0f);
-  distance_axes(hc, cd.hi);
+  curve_axes(hc, 0, cd.hi);
   // A density spike at 0 must not flatten the columns.
   if (cd.dmax > 0 && cd.cmax > 2.5 * cd.dmax) chart_axis_set_max(hc->y_axis, 1.5 * cd.dmax);
   insert_chart(ws, at, hc);
@@ -195,17 +195,9 @@ void Report::quarry_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell 
                                     h("quarry_chart", "observed_cdf"), t_.colour("observed"), 1.0f);
     markers(s, LXW_CHART_MARKER_CIRCLE, 5, t_.colour("observed"), false);
   }
-  distance_axes(cc, cd.hi);
+  curve_axes(cc, 0, cd.hi);
   chart_axis_set_max(cc->y_axis, 1);
   insert_chart(ws, at, cc);
-}
-
-// The axes of a distance's charts: x from 0 to hi (/H), y from 0.
-void Report::distance_axes(lxw_chart* c, double hi) {
-  chart_axis_set_min(c->x_axis, 0);
-  chart_axis_set_max(c->x_axis, hi);
-  chart_axis_set_min(c->y_axis, 0);
-  chart_axis_set_num_format(c->x_axis, keep(t_.get("formats", "general")));
 }
 
 Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row,

@@ -201,6 +201,8 @@ class Report {
   // after each path; returns the row after the last one written.
   Row path_rows(lxw_worksheet* ws, Row r0, const std::vector<std::vector<geometry::Vec2>>& paths,
                 lxw_format* xf);
+  // The axes of a histogram or a CDF chart: x from lo to hi in the general format, y from 0.
+  void curve_axes(lxw_chart* c, double lo, double hi);
   // The outline of histogram columns `width` wide from `lo`, of heights `density`: (e_i, 0),
   // (e_i, d_i), (e_i+1, d_i), (e_i+1, 0), … in columns xc (x) and xc + 1 (y) from row r0;
   // returns the row after the last point.
@@ -303,7 +305,6 @@ class Report {
   void quarry_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
                         const QuarryDistance& d, const DistanceChartData& cd,
                         const std::string& name);
-  void distance_axes(lxw_chart* c, double hi);
   Row quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
                            const design::QuarrySectionResult& s);
   Row quarry_section_marks(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart, Row r0,
