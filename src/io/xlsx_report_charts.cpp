@@ -1,4 +1,5 @@
-// Chart helpers: scatter charts, series, markers, labels, equal scales, drawn paths.
+// Chart helpers: scatter charts, series, markers, labels, axes at one scale or over a curve,
+// and the data they draw (trajectory paths, histogram outlines, curve grids).
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>

@@ -1,4 +1,6 @@
-// A quarry row's sheet (design-checks.md §2), and the rows' table on Summary.
+// A quarry row's sheet (design-checks.md §2): the rules, the sections' geometry and counts,
+// Tables 6.2/6.3, the fits, the exceedance distances, the governing distances, the zones and the
+// check lines; its charts are in xlsx_report_quarry_charts.cpp. And the rows' table on Summary.
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>

@@ -1,4 +1,6 @@
-// The charts of a quarry row's sheet: its sections, and RD and ID.
+// The charts of a quarry row's sheet, on a page of their own: each section drawn at one scale
+// with its zones and work areas, then RD and ID (histogram with the fitted density, empirical
+// against fitted CDF with the observed points), from a data block below them.
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>

@@ -1,12 +1,17 @@
 // The writer of report.xlsx (pierre/io/xlsx_report.hpp), internal to the io layer: the class
-// Report that lays a ReportData out on a libxlsxwriter workbook by the template, and the small
-// helpers its files share. Its members are spread over one file per purpose:
-//   xlsx_report.cpp         write_report and Report::write (properties, sheets in the tab order)
-//   xlsx_report_cells.cpp   formats, cells, rows, page set-up, names, the check table
-//   xlsx_report_charts.cpp  chart helpers and the drawn paths
-//   xlsx_report_summary.cpp, _inputs.cpp, _barrier.cpp, _profile.cpp   a sheet each
-//   xlsx_report_quarry.cpp, _quarry_charts.cpp   a quarry row's sheet and its Summary table
-//   xlsx_report_data_sheets.cpp   Trajectories and Crossings
+// Report that lays a ReportData out on a libxlsxwriter workbook as the template says, and the
+// small helpers its files share. One file per purpose:
+//   xlsx_report.cpp              write_report, and Report::write: properties, sheets in tab order
+//   xlsx_report_cells.cpp        formats, cells, rows and columns, names, the check table
+//   xlsx_report_charts.cpp       chart helpers: scatter charts, series, axes, drawn paths
+//   xlsx_report_summary.cpp      Summary
+//   xlsx_report_inputs.cpp       Inputs
+//   xlsx_report_barrier.cpp      a barrier's sheet
+//   xlsx_report_profile.cpp      Profile
+//   xlsx_report_quarry.cpp       a quarry row's sheet, and the rows' table on Summary
+//   xlsx_report_quarry_charts.cpp  a quarry row's charts
+//   xlsx_report_data_sheets.cpp  Trajectories and Crossings
+// A member that writes a table takes the row it starts at and returns the row after it.
 #pragma once
 
 #include <xlsxwriter.h>
@@ -14,6 +19,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <optional>
@@ -74,7 +80,7 @@ class Report {
   void write();
 
  private:
-  // -- formats
+  // -- formats (xlsx_report_cells.cpp)
   lxw_format* add_format() { return check_ptr(workbook_add_format(wb_), "workbook_add_format"); }
   // A number format of the template, cached; `align`: 0 as Excel does (right), 1 centred,
   // 2 left.
@@ -93,7 +99,7 @@ class Report {
   lxw_format* centred_bold();
   lxw_format* status_format(std::string_view status);  // for the conditional formats
 
-  // -- cells
+  // -- cells, rows and columns (xlsx_report_cells.cpp)
   void text(lxw_worksheet* ws, Row r, Col c, const std::string& s, lxw_format* f = nullptr);
   void num(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
   void opt(lxw_worksheet* ws, Row r, Col c, const std::optional<double>& v, lxw_format* f) {
@@ -169,7 +175,7 @@ class Report {
   void page_setup(lxw_worksheet* ws);
   void status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c);
 
-  // -- charts
+  // -- charts (xlsx_report_charts.cpp)
   // A scatter chart of the template's chart.<key>: its title with {name} replaced (11 pt, not
   // bold), its axis names, light gridlines, the legend below and blanks drawn as gaps.
   lxw_chart* scatter_chart(std::string_view chart_key, const std::string& name);
@@ -209,17 +215,27 @@ class Report {
   Row outline_rows(lxw_worksheet* ws, Row r0, Col xc, double lo, double width,
                    const std::vector<double>& density, lxw_format* xf, lxw_format* yf);
 
-  // -- sheets
+  // -- names (xlsx_report_cells.cpp)
   // The sheet of a barrier or a quarry row: the template's sheets.<key> with {name} replaced.
   std::string item_sheet_name(std::string_view key, const std::string& item,
                               std::vector<std::string>& used);
+  std::string line_name(std::uint32_t i) const;
+  double line_chainage(std::uint32_t i) const;
+  std::optional<std::uint32_t> line_index(const std::string& name) const;
+
+  // -- check lines (xlsx_report_cells.cpp): with `subject`, Summary's table of every field;
+  // without, a barrier's or a quarry row's, its text in merged columns
+  Row check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
+                  bool subject);
+
+  // -- Summary (xlsx_report_summary.cpp); its quarry rows' table is quarry_summary below
   void summary(lxw_worksheet* ws);
   Row summary_run(lxw_worksheet* ws, Row r);
   Row summary_barriers(lxw_worksheet* ws, Row r);
   Row summary_lines(lxw_worksheet* ws, Row r);
   void summary_checks(lxw_worksheet* ws, Row r);
-  Row check_table(lxw_worksheet* ws, Row r, const std::vector<design::CheckLine>& lines,
-                  bool subject);
+
+  // -- Inputs (xlsx_report_inputs.cpp)
   void inputs(lxw_worksheet* ws);
   template <class Write>
   void each_section(lxw_worksheet* ws, Row& r, const LoadedScenario& sc, Write&& write);
@@ -231,7 +247,9 @@ class Report {
   Row inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
   Row inputs_barriers(lxw_worksheet* ws, Row r);
   void inputs_scenario_text(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
-  // A barrier's sheet (xlsx_report_barrier.cpp): its tables, then its charts.
+
+  // -- a barrier's sheet (xlsx_report_barrier.cpp, which defines the types it passes): its
+  // tables, then its charts on a page of their own
   void barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b);
   struct BarrierSample;
   struct StatisticsColumn;
@@ -256,7 +274,8 @@ class Report {
   void barrier_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
                          const BarrierPlot& pl, const BarrierChartData& cd,
                          const std::string& name);
-  // The Profile sheet (xlsx_report_profile.cpp).
+
+  // -- Profile (xlsx_report_profile.cpp)
   void profile(lxw_worksheet* ws, const std::string& sheet);
   bool profile_ground(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart, Row r0,
                       const Bounds& ext);
@@ -267,11 +286,13 @@ class Report {
                                    Row r0, Col c, const std::vector<Mark>& marks,
                                    std::string_view key, float line_width,
                                    std::uint8_t dash = LXW_CHART_LINE_DASH_SOLID);
-  // Quarry danger zones (xlsx_report_quarry.cpp).
+
+  // -- quarry danger zones (design-checks.md §2): the rows' table on Summary and a row's sheet
+  // (xlsx_report_quarry.cpp), the row's charts (xlsx_report_quarry_charts.cpp)
   Row quarry_summary(lxw_worksheet* ws, Row r);
   Row quarry_averages(lxw_worksheet* ws, Row r);
-  // A quarry row's sheet (xlsx_report_quarry.cpp): its tables, then its charts
-  // (xlsx_report_quarry_charts.cpp).
+  // A distance (m or /H): a number, or "beyond the profile" for +infinity.
+  void distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
   void quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t row);
   using QuarrySections = std::vector<const design::QuarrySectionResult*>;  // a row's sections
   Row quarry_overview(lxw_worksheet* ws, Row r, const design::QuarryRow& row,
@@ -290,8 +311,10 @@ class Report {
                     const QuarrySections& secs);
   void quarry_charts(lxw_worksheet* ws, const std::string& sheet, Row r,
                      const design::QuarryRow& row, const QuarrySections& secs);
-  // A distance (m or /H): a number, or "beyond the profile" for +infinity.
-  void distance(lxw_worksheet* ws, Row r, Col c, double v, lxw_format* f);
+  Row quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
+                           const design::QuarrySectionResult& s);
+  Row quarry_section_marks(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart, Row r0,
+                           const design::QuarrySectionResult& s, const geometry::Profile& prof);
   // The histogram, CDF and fitted curves of one distance of a row (data block at `data_row`,
   // charts at `at` and beside it); returns the next free data row.
   Row quarry_distance_charts(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
@@ -305,10 +328,8 @@ class Report {
   void quarry_cdf_chart(lxw_worksheet* ws, const std::string& sheet, Cell at,
                         const QuarryDistance& d, const DistanceChartData& cd,
                         const std::string& name);
-  Row quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Row data_row, Cell at,
-                           const design::QuarrySectionResult& s);
-  Row quarry_section_marks(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart, Row r0,
-                           const design::QuarrySectionResult& s, const geometry::Profile& prof);
+
+  // -- data sheets (xlsx_report_data_sheets.cpp)
   void trajectories(lxw_worksheet* ws);
   void crossings(lxw_worksheet* ws);
   Row cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
@@ -317,10 +338,6 @@ class Report {
                       std::uint64_t total, const char* csv,
                       std::initializer_list<std::string_view> keys);
   void data_sheet_print_area(lxw_worksheet* ws, Row head, Row r, Col last_col);
-
-  std::string line_name(std::uint32_t i) const;
-  double line_chainage(std::uint32_t i) const;
-  std::optional<std::uint32_t> line_index(const std::string& name) const;
 
   lxw_workbook* wb_;
   const ReportData& d_;
