@@ -34,8 +34,9 @@ std::chrono::year_month_day parse_date(const std::string& s) {
 
 // ---- the whole workbook ----------------------------------------------------------------
 
-void Report::write() {
-  // Properties: a fixed creation time (the run's date at 00:00 UTC) for reproducible bytes.
+// The document's properties, with a fixed creation time (the run's date at 00:00 UTC) for
+// reproducible bytes.
+void Report::properties() {
   const auto ymd = parse_date(d_.date);
   const auto created = std::chrono::sys_days(ymd).time_since_epoch();
   lxw_doc_properties props{};
@@ -49,7 +50,10 @@ void Report::write() {
   props.created =
       static_cast<time_t>(std::chrono::duration_cast<std::chrono::seconds>(created).count());
   check(workbook_set_properties(wb_, &props), "workbook_set_properties");
+}
 
+void Report::write() {
+  properties();
   // Create the sheets in the template's order (the tab order), then fill them.
   std::vector<std::string> used;
   auto add = [&](const std::string& name) {

@@ -80,6 +80,8 @@ class Report {
   void write();
 
  private:
+  void properties();
+
   // -- formats (xlsx_report_cells.cpp)
   lxw_format* add_format() { return check_ptr(workbook_add_format(wb_), "workbook_add_format"); }
   // A number format of the template, cached; `align`: 0 as Excel does (right), 1 centred,
