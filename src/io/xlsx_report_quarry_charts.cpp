@@ -65,7 +65,23 @@ void Report::quarry_charts(lxw_worksheet* ws, const std::string& sheet, Row r,
   Row data_row = chart_row + n_sections * rows_per_section + 2 * rows_per_chart + 1;
   text(ws, data_row++, 0, t_.get("titles", "chart_data"), section());
   check(worksheet_print_area(ws, 0, 0, data_row - 3, 13), "worksheet_print_area");
-  auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row, 0});
+  // Page breaks between charts, never through one: a page holds what a lone section's page
+  // does (its section, RD and ID), so a group's charts go on as many pages as they need.
+  auto& breaks = breaks_.emplace_back(std::vector<lxw_row_t>{chart_row});
+  {
+    const Row page = rows_per_section + 2 * rows_per_chart;
+    Row page_start = chart_row, end = chart_row;
+    std::vector<Row> heights(secs.size(), rows_per_section);
+    heights.insert(heights.end(), 2, rows_per_chart);  // RD, then ID
+    for (const Row height : heights) {
+      if (end + height - page_start > page) {
+        breaks.push_back(end);
+        page_start = end;
+      }
+      end += height;
+    }
+  }
+  breaks.push_back(0);
   check(worksheet_set_h_pagebreaks(ws, breaks.data()), "worksheet_set_h_pagebreaks");
 
   Row at = chart_row;

@@ -217,6 +217,47 @@ TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
   EXPECT_EQ(order, kOrder);
 }
 
+// Every number between `open` and the next '<' after each occurrence of `open`.
+std::vector<long> numbers_after(const std::string& xml, const std::string& open) {
+  std::vector<long> out;
+  for (auto p = xml.find(open); p != std::string::npos; p = xml.find(open, p + 1))
+    out.push_back(std::stol(xml.substr(p + open.size())));
+  return out;
+}
+
+// Printed, a quarry sheet's charts start on a new page, and a page holds what a lone section's
+// does (its section, RD and ID): a group of two sections puts its RD and ID charts on a page of
+// their own, instead of cutting the ID charts in two at the page's foot (seen on Pauliberg).
+TEST(XlsxQuarryReport, PageBreaksFallBetweenChartsNotThroughThem) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  const auto f = make_fixture();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  // Sheets 2 and 3 are "Quarry Face A" and "Quarry East" (kOrder), drawings 1 and 2 theirs.
+  for (int k : {1, 2}) {
+    SCOPED_TRACE(kOrder[static_cast<std::size_t>(k)]);
+    const auto breaks = numbers_after(
+        zip_entry(xlsx, "xl/worksheets/sheet" + std::to_string(k + 1) + ".xml", dir.path()),
+        "<brk id=\"");
+    const std::string drawing =
+        zip_entry(xlsx, "xl/drawings/drawing" + std::to_string(k) + ".xml", dir.path());
+    const auto from = numbers_after(drawing, "<xdr:from><xdr:col>0</xdr:col><xdr:colOff>38100</xdr:colOff><xdr:row>");
+    const auto all_from = numbers_after(drawing, "</xdr:colOff><xdr:row>");  // from and to rows
+    ASSERT_FALSE(from.empty());
+    const std::size_t sections = k == 1 ? 1 : 2;
+    ASSERT_EQ(from.size(), sections + 2);  // the sections, then RD and ID (histogram | CDF)
+    if (k == 1) {
+      EXPECT_EQ(breaks, (std::vector<long>{from[0]}));
+    } else {
+      EXPECT_EQ(breaks, (std::vector<long>{from[0], from[sections]}));
+    }
+    // No chart spans a break: each anchor's rows [from, to] hold no break but at its top.
+    for (std::size_t a = 0; a + 1 < all_from.size(); a += 2)
+      for (long b : breaks) EXPECT_FALSE(all_from[a] < b && b <= all_from[a + 1]) << b;
+  }
+}
+
 TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
   PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
