@@ -2,8 +2,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 
+#include <fmt/format.h>
+
+#include "pierre/design/bootstrap_size.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io::detail {
@@ -14,11 +18,14 @@ inline void read_bootstrap_size(const TomlTable& t, std::string_view confidence_
                                 std::string_view resamples_key, double& confidence,
                                 std::size_t& resamples) {
   confidence = t.number(confidence_key, confidence);
-  t.check(confidence_key, confidence >= 0.9 && confidence < 1,
-          "a confidence from 0.9 to below 1 (design-checks.md §1 step 8: a 90 % interval)");
+  t.check(confidence_key, confidence >= design::kMinBootstrapConfidence && confidence < 1,
+          fmt::format("a confidence from {} to below 1 (design-checks.md §1 step 8: a 90 % "
+                      "interval)", design::kMinBootstrapConfidence));
   if (const auto n = t.integer(resamples_key)) {
-    t.check(resamples_key, *n >= 1000 && *n <= 1'000'000,
-            "an integer from 1000 to 1000000 (design-checks.md §1 step 8: at least 1000)");
+    const auto least = static_cast<std::int64_t>(design::kMinBootstrapResamples);
+    t.check(resamples_key, *n >= least && *n <= 1'000'000,
+            fmt::format("an integer from {} to 1000000 (design-checks.md §1 step 8: at least "
+                        "{})", least, least));
     resamples = static_cast<std::size_t>(*n);
   }
 }

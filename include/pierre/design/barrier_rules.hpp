@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pierre/design/bootstrap_size.hpp"
 #include "pierre/stats/outcome.hpp"
 
 namespace pierre::design {
@@ -76,8 +77,8 @@ struct BarrierRuleSet {
   double sample_tolerance = 0.05;  // CI half-width / value above which sample.size WARNs
   // The bootstrap of step 8 (design-checks.md §1): a 90 % interval from 1000 resamples at
   // least; a rule set may ask for more, not for less.
-  double sample_confidence = 0.90;
-  std::size_t sample_resamples = 1000;
+  double sample_confidence = kMinBootstrapConfidence;
+  std::size_t sample_resamples = kMinBootstrapResamples;
   double fit_p_value = 0.05;       // KS p-value below which fit.* WARNs
   double min_crossings = 30;       // crossings below which reach WARNs
   std::string classes = "etag027-classes";  // energy class table (rules/<name>.toml)

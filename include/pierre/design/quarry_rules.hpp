@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "pierre/design/bootstrap_size.hpp"
+
 namespace pierre::design {
 
 // One candidate for the governing distance; the governing distance is the LARGEST of the
@@ -33,8 +35,8 @@ struct QuarryRuleSet {
   std::size_t min_reached = 30;       // sample.size: fewest blocks reaching the floor
   double sample_percentile = 95;      // sample.size: percentile whose bootstrap CI is judged
   double sample_tolerance = 0.05;     // sample.size: CI half-width / value above which it WARNs
-  double sample_confidence = 0.90;    // of the bootstrap interval
-  std::size_t sample_resamples = 1000;
+  double sample_confidence = kMinBootstrapConfidence;  // of the bootstrap interval
+  std::size_t sample_resamples = kMinBootstrapResamples;
   double fit_p_value = 0.05;          // fit.ID, fit.RD: KS p-value below which they WARN
   std::map<std::string, std::string> clauses;  // check id ("zone", "bench.retention", …) -> clause
 };
