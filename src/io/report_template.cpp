@@ -237,6 +237,44 @@ void fill_missing(toml::table& t, const toml::table& base, const std::string& pr
   }
 }
 
+// A copy's sheet order made before a sheet was added lacks it: each missing sheet goes in
+// after the sheet it follows in the built-in order (first if none does), and is listed.
+void complete_order(Keys& order, std::vector<std::string>& filled) {
+  for (std::size_t i = 0; i < kOrderKeys.size(); ++i) {
+    if (std::find(order.begin(), order.end(), kOrderKeys[i]) != order.end()) continue;
+    auto at = order.begin();
+    for (std::size_t k = i; k-- > 0;) {
+      if (const auto p = std::find(order.begin(), order.end(), kOrderKeys[k]); p != order.end()) {
+        at = p + 1;
+        break;
+      }
+    }
+    order.insert(at, kOrderKeys[i]);
+    filled.push_back("sheets.order: " + kOrderKeys[i]);
+  }
+}
+
+// Distinct fixed sheet names (the per-item sheets are made distinct when written). A clash
+// with a name the built-in layout supplied is blamed on the copy's own key, at its own line.
+void check_distinct_sheet_names(const TomlTable& t,
+                                const std::map<std::string, std::string, std::less<>>& names,
+                                const std::vector<std::string>& filled) {
+  auto built_in = [&](const std::string& key) {
+    return std::find(filled.begin(), filled.end(), "sheets." + key) != filled.end();
+  };
+  for (std::size_t i = 0; i < kSheetKeys.size(); ++i)
+    for (std::size_t j = i + 1; j < kSheetKeys.size(); ++j) {
+      const std::string &a = kSheetKeys[i], &b = kSheetKeys[j];
+      if (per_item_sheet(a) || per_item_sheet(b) || names.at(a) != names.at(b)) continue;
+      const bool blame_a = built_in(b);
+      const std::string& other = blame_a ? b : a;
+      t.fail(blame_a ? a : b,
+             fmt::format("a name other than sheets.{}'s{}", other,
+                         built_in(other) ? " (the copy leaves it out: the built-in layout gives it)"
+                                         : ""));
+    }
+}
+
 }  // namespace
 
 const std::map<std::string, std::vector<std::string>, std::less<>>& report_template_sections() {
@@ -322,24 +360,20 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
       names[k] = t.required_string(k, "a string: the sheet's name");
       check_sheet_name(t, k, names[k]);
     }
-    const std::string expected = fmt::format("an array holding each of {} once", joined(kOrderKeys));
+    const std::string expected =
+        fmt::format("an array holding each of {} at most once", joined(kOrderKeys));
     const toml::array* order = t.array("order");
     if (!order) t.missing("order", expected);
     for (const auto& e : *order) {
       const auto* s = e.as_string();
       if (!s) t.fail("order", expected);
+      const bool known = std::find(kOrderKeys.begin(), kOrderKeys.end(), s->get()) != kOrderKeys.end();
+      const bool again = std::find(tpl.order.begin(), tpl.order.end(), s->get()) != tpl.order.end();
+      t.check("order", known && !again, expected);
       tpl.order.push_back(s->get());
     }
-    Keys sorted = tpl.order, want = kOrderKeys;
-    std::sort(sorted.begin(), sorted.end());
-    std::sort(want.begin(), want.end());
-    t.check("order", sorted == want, expected);
-    // Distinct fixed names (the barrier sheets are made distinct when written).
-    for (std::size_t i = 0; i < kSheetKeys.size(); ++i)
-      for (std::size_t j = i + 1; j < kSheetKeys.size(); ++j)
-        if (!per_item_sheet(kSheetKeys[i]) && !per_item_sheet(kSheetKeys[j]) &&
-            names[kSheetKeys[i]] == names[kSheetKeys[j]])
-          t.fail(kSheetKeys[j], fmt::format("a name other than sheets.{}'s", kSheetKeys[i]));
+    complete_order(tpl.order, tpl.built_in_keys);
+    check_distinct_sheet_names(t, names, tpl.built_in_keys);
   }
   {
     const TomlTable t = required_table(top, "rows");

@@ -92,7 +92,9 @@ INSTANTIATE_TEST_SUITE_P(
             "profile = \"Pro[file]\"", "sheets.profile", "Pro[file]"},
         Bad{"sheet_name_a_cell", "profile = \"Profile\"", "profile = \"P1\"", 0,
             "profile = \"P1\"", "sheets.profile", "P1"},
-        Bad{"order_incomplete", "\"crossings\"]", "\"summary\"]", 0, "order =", "sheets.order",
+        Bad{"order_twice", "\"crossings\"]", "\"summary\"]", 0, "order =", "sheets.order",
+            "an array"},
+        Bad{"order_unknown", "\"crossings\"]", "\"crossing\"]", 0, "order =", "sheets.order",
             "an array"},
         Bad{"heading_not_string", "count = \"Crossings\"", "count = 3", 0, "count = 3",
             "headings.lines.count", "3"},
@@ -134,6 +136,48 @@ TEST(ReportTemplate, KeysACopyLeavesOutComeFromTheBuiltInLayout) {
   std::sort(keys.begin(), keys.end());
   EXPECT_EQ(keys, (std::vector<std::string>{"chart.profile", "headings.checks.status",
                                             "sheets.summary"}));
+}
+
+// A copy's sheet order made before a sheet was added: the sheet goes in after the one it
+// follows in the built-in order, the copy's own order of the rest is kept, and it is listed.
+TEST(ReportTemplate, SheetsACopysOrderLeavesOutGoInAfterTheirBuiltInPredecessor) {
+  const std::string text = shipped_with(
+      "order = [\"summary\", \"barriers\", \"quarries\", \"profile\", \"inputs\", \"trajectories\", "
+      "\"crossings\"]",
+      "order = [\"crossings\", \"summary\", \"barriers\", \"profile\", \"trajectories\"]");
+  TempDir dir;
+  const auto t = load_report_template(dir.write("report.toml", text));
+  EXPECT_EQ(t.order, (std::vector<std::string>{"crossings", "summary", "barriers", "quarries",
+                                               "profile", "inputs", "trajectories"}));
+  EXPECT_EQ(t.built_in_keys,
+            (std::vector<std::string>{"sheets.order: quarries", "sheets.order: inputs"}));
+  // The first sheet of the built-in order, left out, goes first.
+  const auto first = load_report_template(dir.write(
+      "first.toml", shipped_with("order = [\"summary\", ", "order = [")));
+  EXPECT_EQ(first.order, load_report_template(kTemplate).order);
+  EXPECT_EQ(first.built_in_keys, (std::vector<std::string>{"sheets.order: summary"}));
+}
+
+// The copy's sheet name equal to one the built-in layout filled in: the error is at the copy's
+// own key and line, not at a line of the built-in text.
+TEST(ReportTemplate, ANameClashingWithABuiltInNameIsTheCopysKeysError) {
+  // sheets.crossings comes after sheets.summary: the clash is met at the built-in key.
+  std::string text = shipped_with("crossings = \"Crossings\"\n", "");
+  const std::string from = "summary = \"Summary\"", to = "summary = \"Crossings\"";
+  const auto p = text.find(from);
+  ASSERT_NE(p, std::string::npos);
+  text.replace(p, from.size(), to);
+  TempDir dir;
+  const auto file = dir.write("report.toml", text);
+  try {
+    (void)load_report_template(file);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), file);
+    EXPECT_EQ(e.line(), line_of(text, to));
+    EXPECT_EQ(e.field(), "sheets.summary");
+    EXPECT_NE(std::string(e.what()).find("built-in"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ReportTemplate, AnEmptyCopyIsTheBuiltInLayout) {
