@@ -231,7 +231,7 @@ TEST(BarrierCheckLines, ReachWarnsBelowThirty) {
 TEST(BarrierCheckLines, WithoutCandidateOnlyTheAdvisoryLines) {
   auto d = base();
   d.spec.candidate.reset();
-  d.energy_class = design::EnergyClass{6, 1500, 4500, false};  // the class the design recommends
+  d.energy_class = design::EnergyClass{7, 1500, 4500, false};  // the class the design recommends
   d.spec.acceptable_height_exceedance = 1e-6;  // would fail with a candidate
   const auto lines = design::barrier_check_lines(d, rules());
   std::vector<std::string> ids;

@@ -232,7 +232,7 @@ TEST(BarrierProcedure, ObservedDataGiveTheObservedColumn) {
 TEST(BarrierProcedure, CandidateCapacitiesFromClassOrDeclared) {
   auto b = spec();
   b.candidate = design::CandidateBarrier{};
-  b.candidate->energy_class = 5;
+  b.candidate->energy_class = 6;  // MEL 3000, SEL 1000 kJ
   b.candidate->height = 6;
   b.candidate->residual_height = 2.5;
   auto out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);

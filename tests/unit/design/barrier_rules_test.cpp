@@ -69,10 +69,12 @@ TEST(BarrierFactors, QuestionsAreTheChoicesOfEveryPartOnce) {
 
 TEST(EnergyClassSelection, BoundsAreInclusive) {
   const auto t = test::etag027();
-  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 3000, 0)->number, 5);
-  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 3000.001, 0)->number, 6);
-  EXPECT_EQ(design::select_energy_class(t, DesignOn::sel, 0, 1000)->number, 5);
-  EXPECT_EQ(design::select_energy_class(t, DesignOn::sel, 0, 1000.001)->number, 6);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 3000, 0)->number, 6);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 3000.001, 0)->number, 7);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::sel, 0, 1000)->number, 6);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::sel, 0, 1000.001)->number, 7);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 1500, 0)->number, 4);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 1500.001, 0)->number, 5);
 }
 
 TEST(EnergyClassSelection, ClassZeroHasNoSel) {
@@ -84,20 +86,20 @@ TEST(EnergyClassSelection, ClassZeroHasNoSel) {
 
 TEST(EnergyClassSelection, BothTakesTheStricterOfMelAndSel) {
   const auto t = test::etag027();
-  // MEL 900 alone: class 3; SEL 900 alone: class 5 (1000); both: 5.
+  // MEL 900 alone: class 3; SEL 900 alone: class 6 (1000); both: 6.
   EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 900, 900)->number, 3);
-  EXPECT_EQ(design::select_energy_class(t, DesignOn::both, 900, 900)->number, 5);
-  // MEL 2500 with SEL 500: MEL governs (class 5, SEL 1000 >= 500).
-  EXPECT_EQ(design::select_energy_class(t, DesignOn::both, 2500, 500)->number, 5);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::both, 900, 900)->number, 6);
+  // MEL 2500 with SEL 500: MEL governs (class 6, SEL 1000 >= 500).
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::both, 2500, 500)->number, 6);
 }
 
 TEST(EnergyClassSelection, AboveTheClosedClassesIsTheOpenEndedOne) {
   const auto t = test::etag027();
   const auto c = design::select_energy_class(t, DesignOn::mel, 4500.5, 0);
   ASSERT_TRUE(c);
-  EXPECT_EQ(c->number, 7);
+  EXPECT_EQ(c->number, 8);
   EXPECT_TRUE(c->open_ended);
-  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 4500, 0)->number, 6);
+  EXPECT_EQ(design::select_energy_class(t, DesignOn::mel, 4500, 0)->number, 7);
   auto closed = t;
   closed.classes.pop_back();
   EXPECT_FALSE(design::select_energy_class(closed, DesignOn::mel, 4500.5, 0));

@@ -81,7 +81,7 @@ TEST(BarrierReader, ReadsEveryField) {
   EXPECT_EQ(l.barrier_observed[0]->height, (std::vector<double>{1.2, 2.0}));
   EXPECT_EQ(l.barrier_observed[0]->energy, (std::vector<double>{300e3, 410.5e3}));  // J
   EXPECT_EQ(l.barrier_rules[0].name, "peila-ronco-2009");
-  EXPECT_EQ(l.barrier_classes[0].classes.size(), 8u);
+  EXPECT_EQ(l.barrier_classes[0].classes.size(), 9u);  // ETAG 027 classes 0 to 8
   // The second: defaults.
   const design::BarrierSpec& c = l.barriers[1];
   EXPECT_EQ(l.barrier_rules[1].name, "thesis-2015");
@@ -188,9 +188,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"free_board_negative", kThesis + "free_board_diameter = -1.0\n", {}, "", 32,
              "barriers[0].free_board_diameter", "-1.0", "> 0"},
         Case{"class_unknown", kThesis + "[barriers.candidate]\nenergy_class = 9\n", {}, "", 33,
-             "barriers[0].candidate.energy_class", "9", "0, 1, 2, 3, 4, 5, 6, 7"},
-        Case{"class_open_ended", kThesis + "[barriers.candidate]\nenergy_class = 7\nmel = 6000.0\n", {}, "", 33,
-             "barriers[0].candidate.energy_class", "7", "mel and sel"},
+             "barriers[0].candidate.energy_class", "9", "0, 1, 2, 3, 4, 5, 6, 7, 8"},
+        Case{"class_open_ended", kThesis + "[barriers.candidate]\nenergy_class = 8\nmel = 6000.0\n", {}, "", 33,
+             "barriers[0].candidate.energy_class", "8", "mel and sel"},
         Case{"class_float", kThesis + "[barriers.candidate]\nenergy_class = 5.0\n", {}, "", 33,
              "barriers[0].candidate.energy_class", "5.0", "integer"},
         Case{"sel_above_mel", kThesis + "[barriers.candidate]\nmel = 100.0\nsel = 5000.0\n", {}, "", 34,

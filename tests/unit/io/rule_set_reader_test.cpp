@@ -58,7 +58,8 @@ TEST(ShippedRuleSets, Thesis2015FileReproducesTable41) {
   EXPECT_NEAR(d->SEL_req_kJ, 1148.4, 0.05);
   EXPECT_NEAR(d->MEL_req_kJ, 1492.9, 0.05);
   EXPECT_NEAR(d->h_i, 4.16, 1e-12);
-  EXPECT_EQ(d->energy_class->number, 6);
+  // SEL 1500 ≥ 1148 kJ: ETAG class 7 (design-checks.md's eight-class table numbers it 6).
+  EXPECT_EQ(d->energy_class->number, 7);
 }
 
 TEST(ShippedRuleSets, PeilaRonco2009PartsAndFactors) {
@@ -116,10 +117,12 @@ TEST(ShippedRuleSets, VerifyMarksWhereTheSpecAsksForThem) {
 
 TEST(ShippedRuleSets, Etag027ClassTableWhole) {
   const auto t = io::load_energy_classes("etag027-classes", kRules);
-  const double sel[] = {NAN, 85, 170, 330, 660, 1000, 1500, 1500};
-  const double mel[] = {100, 250, 500, 1000, 2000, 3000, 4500, 4500};
-  ASSERT_EQ(t.classes.size(), 8u);
-  for (int i = 0; i < 8; ++i) {
+  // ETAG 027's nine classes (Peila & Ronco 2009 Table 1): SEL = MEL / 3 from class 1 up, to
+  // the kJ the table rounds to. design-checks.md §1 prints eight, without class 4.
+  const double sel[] = {NAN, 85, 170, 330, 500, 660, 1000, 1500, 1500};
+  const double mel[] = {100, 250, 500, 1000, 1500, 2000, 3000, 4500, 4500};
+  ASSERT_EQ(t.classes.size(), 9u);
+  for (int i = 0; i < 9; ++i) {
     SCOPED_TRACE(i);
     EXPECT_EQ(t.classes[static_cast<std::size_t>(i)].number, i);
     EXPECT_DOUBLE_EQ(t.classes[static_cast<std::size_t>(i)].mel_kJ, mel[i]);
@@ -127,7 +130,7 @@ TEST(ShippedRuleSets, Etag027ClassTableWhole) {
       EXPECT_TRUE(std::isnan(t.classes[0].sel_kJ));
     else
       EXPECT_DOUBLE_EQ(t.classes[static_cast<std::size_t>(i)].sel_kJ, sel[i]);
-    EXPECT_EQ(t.classes[static_cast<std::size_t>(i)].open_ended, i == 7);
+    EXPECT_EQ(t.classes[static_cast<std::size_t>(i)].open_ended, i == 8);
   }
   ASSERT_TRUE(t.residual_height);
   EXPECT_DOUBLE_EQ(t.residual_height->a_min, 0.5);
@@ -202,8 +205,8 @@ data_quality = { consequence = "CC2" }
   ASSERT_TRUE(d.ok()) << d.error;
   EXPECT_DOUBLE_EQ(d->v_d, 22.0);                       // γCC(CC2) = 1.1
   EXPECT_DOUBLE_EQ(d->E_d_kJ, 0.5 * 5000 * 22 * 22 / 1000);
-  EXPECT_DOUBLE_EQ(d->SEL_req_kJ, 2 * d->E_d_kJ);        // 2420 kJ: above class 6's SEL
-  EXPECT_EQ(d->energy_class->number, 7);
+  EXPECT_DOUBLE_EQ(d->SEL_req_kJ, 2 * d->E_d_kJ);        // 2420 kJ: above class 7's SEL
+  EXPECT_EQ(d->energy_class->number, 8);
   EXPECT_DOUBLE_EQ(d->h_i, 2 * 1.25 + 1.0);
 }
 
