@@ -42,8 +42,9 @@ void set(CheckLine& l, CheckStatus s, std::string reason) {
 }
 
 // `declares_energy`: the candidate gives some capacity (a class, a MEL or a SEL). One that gives
-// none is checked on its height alone; one that gives a capacity but not the one the rule set
-// designs on cannot pass that check.
+// none is checked on its height alone, and the line WARNs that its capacity was not compared
+// (an N/A would read, in a pipeline, like a check that does not apply); one that gives a capacity
+// but not the one the rule set designs on cannot pass that check.
 void capacity_line(Builder& b, const char* id, const char* name, bool needed, double declared,
                    double required, bool declares_energy) {
   CheckLine& l = b.add(id, std::string("candidate ") + name + " against the required " + name +
@@ -57,7 +58,7 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
                                 (std::string(name) == "MEL" ? "mel" : "sel") +
                                 ", or an energy_class whose " + name + " the class table holds)";
     if (!declares_energy)
-      set(l, CheckStatus::not_applicable, missing);
+      set(l, CheckStatus::warn, missing + ": required " + num(required) + " kJ not compared");
     else
       set(l, CheckStatus::fail,
           "the rule set designs on " +
@@ -222,8 +223,9 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
       CheckLine& l = b.add("height.interception",
                            "candidate's vertical interception height against h_i = h_k γh + f",
                            value, d.h_i, "m");
-      if (!c.height)
-        set(l, CheckStatus::not_applicable, "the candidate declares no height");
+      if (!c.height)  // WARN, not N/A: the check applies, it could not be made
+        set(l, CheckStatus::warn, "the candidate declares no height (give height, m): h_i " +
+                                      num(d.h_i) + " m not compared");
       else if (at_least(*c.height, d.h_i))
         set(l, CheckStatus::pass, "height " + num(*c.height) + " m >= h_i " + num(d.h_i) + " m");
       else

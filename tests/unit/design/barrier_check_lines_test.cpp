@@ -116,17 +116,23 @@ TEST(BarrierCheckLines, EnergySelPassFailAndNotApplicable) {
   auto mel_rules = rules();
   mel_rules.design_on = design::DesignOn::mel;
   EXPECT_EQ(status(d, mel_rules, "energy.sel"), CheckStatus::not_applicable);
-  d.candidate_sel_kJ = std::nan("");  // declares no SEL
-  EXPECT_EQ(status(d, rules(), "energy.sel"), CheckStatus::not_applicable);
+  d.candidate_sel_kJ = std::nan("");  // declares no SEL (nor any other capacity): not compared
+  EXPECT_EQ(status(d, rules(), "energy.sel"), CheckStatus::warn);
 }
 
-TEST(BarrierCheckLines, InterceptionHeightPassFail) {
+// A candidate without a height: the check applies but cannot be made, so it WARNs (printed with
+// its reason) rather than reading N/A; it does not fail `check`.
+TEST(BarrierCheckLines, InterceptionHeightPassFailAndWarnWithoutAHeight) {
   auto d = base();
   EXPECT_EQ(status(d, rules(), "height.interception"), CheckStatus::pass);
   d.spec.candidate->height = 3.99;
   EXPECT_EQ(status(d, rules(), "height.interception"), CheckStatus::fail);
   d.spec.candidate->height.reset();
-  EXPECT_EQ(status(d, rules(), "height.interception"), CheckStatus::not_applicable);
+  const auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "height.interception").status, CheckStatus::warn);
+  EXPECT_NE(line(lines, "height.interception").reason.find("declares no height"), std::string::npos)
+      << line(lines, "height.interception").reason;
+  EXPECT_FALSE(design::any_failure(lines));
 }
 
 TEST(BarrierCheckLines, ElongationPassFailAndNotApplicable) {
@@ -251,7 +257,7 @@ TEST(BarrierCheckLines, WithoutCandidateOnlyTheAdvisoryLines) {
 }
 
 // A candidate that declares a capacity, but not the one the rule set designs on, cannot pass
-// that check; one that declares no capacity at all is checked on its height alone.
+// that check; one that declares no capacity at all is checked on its height alone (WARN lines).
 TEST(BarrierCheckLines, AMissingCapacityFailsOnlyWhenTheCandidateDeclaresAnother) {
   auto d = base();
   d.spec.candidate->energy_class.reset();
@@ -266,9 +272,10 @@ TEST(BarrierCheckLines, AMissingCapacityFailsOnlyWhenTheCandidateDeclaresAnother
       << line(lines, "energy.sel").reason;
   d.spec.candidate->mel_kJ.reset();
   d.candidate_mel_kJ = std::numeric_limits<double>::quiet_NaN();
-  lines = design::barrier_check_lines(d, rules());  // a height only
-  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::not_applicable);
-  EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::not_applicable);
+  lines = design::barrier_check_lines(d, rules());  // a height only: capacities not compared
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::warn);
+  EXPECT_FALSE(design::any_failure(lines));
 }
 
 }  // namespace
