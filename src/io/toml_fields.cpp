@@ -175,9 +175,15 @@ toml::table parse_toml(const std::filesystem::path& file, const std::string& tex
   try {
     return toml::parse(text, file.string());
   } catch (const toml::parse_error& e) {
+    std::string expected = "valid TOML (https://toml.io)";
+    // The one syntax error a reader of our docs is led into: rows ([[a.b.rows]]) or a sub-table
+    // added to a table written inline (`b = { … }`), which TOML closes where it ends.
+    if (e.description().find("existing inline table") != std::string_view::npos)
+      expected += "; an inline table `name = { … }` cannot take rows or sub-tables later: write it "
+                  "as a table, `[name]` with its keys on the lines below";
     throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
                      fmt::format("{} (column {})", e.description(), e.source().begin.column),
-                     "valid TOML (https://toml.io)");
+                     expected);
   }
 }
 

@@ -63,6 +63,30 @@ TEST_P(ScenarioError, NamesFileLineFieldAndValue) {
   }
 }
 
+// Rows added to a table written inline: a TOML syntax error whose expectation says what to write.
+TEST(ScenarioSyntax, RowsAfterAnInlineTableSayToWriteATable) {
+  TempDir dir;
+  const auto file = dir.write("q.toml",
+                              "[scenario]\nname = \"x\"\n[[quarries]]\nblocks = { density = 2650.0 }\n"
+                              "[[quarries.blocks.table]]\nmass = 1.0\n");
+  try {
+    (void)load_scenario(file, kRules);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "TOML syntax");
+    EXPECT_NE(e.found().find("inline table"), std::string::npos) << e.found();
+    EXPECT_NE(e.expected().find("write it as a table"), std::string::npos) << e.expected();
+  }
+  // Any other syntax error keeps the plain expectation.
+  const auto other = dir.write("o.toml", "[scenario]\nname = = 1\n");
+  try {
+    (void)load_scenario(other, kRules);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.expected(), "valid TOML (https://toml.io)");
+  }
+}
+
 const std::string kCsvProfile = "file = \"p.csv\"";
 const std::string kCrossingRows = "x,z,material\n0,10,rock\n10,0,rock\n10,10,rock\n0,0,\n";
 
