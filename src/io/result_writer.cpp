@@ -546,6 +546,10 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                         {"failed_check", b.failed_check}, {"reason", b.reason}});
       j["barriers_without_design"] = none;
     }
+  }
+  {
+    // Always written, empty when the scenario has nothing to check, so that a script reads them
+    // without a guard.
     json checks = json::array();
     for (const auto& c : results.checks)
       checks.push_back({{"subject", c.subject},

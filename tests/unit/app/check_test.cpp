@@ -92,6 +92,19 @@ TEST_F(Check, RunExitsZeroWhateverTheChecksSay) {
   EXPECT_EQ(check(summary(out), "energy.mel")["status"], "FAIL");
 }
 
+// A scenario with nothing to check: exit 0, said in words, and the summary's check keys are
+// there (empty) for a script to read.
+TEST_F(Check, NothingToCheckSaysSoAndExitsZero) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " PIERRE_TEST_DATA "/small/scenario.toml --quiet --out '" +
+                          out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Nothing to check"), std::string::npos) << r.out;
+  const auto j = summary(out);
+  EXPECT_TRUE(j["checks"].empty());
+  EXPECT_EQ(j["checks_failed"], false);
+}
+
 TEST_F(Check, BadBarrierInputExitsTwoAndWritesNothing) {
   const fs::path out = dir_ / "out";
   const Result r = pierre("check " + kData + "bad.toml --out '" + out.string() + "'");

@@ -189,6 +189,11 @@ TEST(SummaryJson, CarriesRunInfoAndStatistics) {
   EXPECT_TRUE(j["lines"][1]["speed_m_s"]["mean"].is_null());  // no crossing: null, not 0
   EXPECT_DOUBLE_EQ(j["runout_m"]["max"].get<double>(), 20.0);
   EXPECT_DOUBLE_EQ(j["runout_m"]["p50"].get<double>(), 17.75);
+  // Nothing to check: the keys a script reads are there all the same.
+  ASSERT_TRUE(j.contains("checks"));
+  EXPECT_TRUE(j["checks"].is_array());
+  EXPECT_TRUE(j["checks"].empty());
+  EXPECT_EQ(j["checks_failed"], false);
 }
 
 TEST(OutputFolder, CommitMovesFilesAndRemovesStaging) {
