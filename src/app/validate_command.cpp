@@ -16,7 +16,7 @@ class ValidateCommand final : public Command {
     CLI::App* c = parent.add_subcommand("validate", "Check a scenario without running it");
     c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
         ->required();
-    c->add_option("--rules", rules_, "Rules folder holding materials.toml");
+    c->add_option("--rules", rules_, "Rules folder holding materials.toml and the barrier and quarry rule sets");
     c->footer(
         "Example:\n"
         "  pierre validate examples/vaujany-2d/scenario.toml\n"

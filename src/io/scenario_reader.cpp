@@ -417,12 +417,16 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
     std::error_code ec;
     if (!fs::is_regular_file(rules_file, ec)) {
       const auto names = barrier_rule_set_names(rules_dir);
-      const std::string expected =
-          fmt::format("a rule set of {} ({}) or a path to a rule-set TOML file", rules_dir.string(),
-                      quoted_list(names));
+      const std::string held = names.empty() ? "it holds none" : "it holds " + quoted_list(names);
+      const std::string expected = fmt::format(
+          "a rule set of {} ({}) or a path to a rule-set TOML file", rules_dir.string(), held);
       if (t.has("rules"))
         t.fail("rules", expected + fmt::format(" ({} does not exist)", rules_file.string()));
-      t.missing("rules", expected);
+      // The default was looked for: say which, and how a rules folder of one's own gets it.
+      t.missing("rules", fmt::format("the default rule set \"{}\" in {} ({}): copy {}.toml and the "
+                                     "class table it names (etag027-classes.toml) there, or give "
+                                     "rules = a name or a path",
+                                     b.rules, rules_dir.string(), held, b.rules));
     }
     auto cached = cache.find(rules_file);
     if (cached == cache.end()) {  // read once per file, however many barriers name it

@@ -239,6 +239,24 @@ data_quality = { consequence = "CC3" }
   EXPECT_DOUBLE_EQ(design::resolve_factor(l.barrier_rules[0].gamma_F, l.barriers[0].data_quality)->value, 1.2);
 }
 
+// A rules folder of one's own without the default rule set: the error names the default that was
+// looked for and how to get it there.
+TEST(TemporaryRuleSet, AFolderWithoutTheDefaultSaysWhichWasLookedFor) {
+  TempDir rules, dir;
+  rules.write("materials.toml", test::read_file(kRules / "materials.toml"));
+  const auto s = dir.write("s.toml", with_barrier("[[barriers]]\nname = \"B1\"\nline = \"L\"\n"));
+  try {
+    (void)io::load_scenario(s, rules.path());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "barriers[0].rules");
+    EXPECT_EQ(e.found(), "nothing");
+    EXPECT_NE(e.expected().find("the default rule set \"peila-ronco-2009\""), std::string::npos)
+        << e.expected();
+    EXPECT_NE(e.expected().find("it holds none"), std::string::npos) << e.expected();
+  }
+}
+
 TEST(TemporaryRuleSet, AnswerOutsideItsOptionsNamesThem) {
   TempDir dir;
   dir.write("onr-like.toml", kOnrLike);
