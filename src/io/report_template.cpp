@@ -254,6 +254,12 @@ void complete_order(Keys& order, std::vector<std::string>& filled) {
   }
 }
 
+bool same_ignoring_case(std::string_view x, std::string_view y) {
+  return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin(), [](char a, char b) {
+           return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+         });
+}
+
 // Distinct fixed sheet names (the per-item sheets are made distinct when written). A clash
 // with a name the built-in layout supplied is blamed on the copy's own key, at its own line.
 void check_distinct_sheet_names(const TomlTable& t,
@@ -265,7 +271,9 @@ void check_distinct_sheet_names(const TomlTable& t,
   for (std::size_t i = 0; i < kSheetKeys.size(); ++i)
     for (std::size_t j = i + 1; j < kSheetKeys.size(); ++j) {
       const std::string &a = kSheetKeys[i], &b = kSheetKeys[j];
-      if (per_item_sheet(a) || per_item_sheet(b) || names.at(a) != names.at(b)) continue;
+      // Excel compares sheet names without regard to case.
+      if (per_item_sheet(a) || per_item_sheet(b) || !same_ignoring_case(names.at(a), names.at(b)))
+        continue;
       const bool blame_a = built_in(b);
       const std::string& other = blame_a ? b : a;
       t.fail(blame_a ? a : b,
@@ -369,7 +377,9 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
       if (!s) t.fail("order", expected);
       const bool known = std::find(kOrderKeys.begin(), kOrderKeys.end(), s->get()) != kOrderKeys.end();
       const bool again = std::find(tpl.order.begin(), tpl.order.end(), s->get()) != tpl.order.end();
-      t.check("order", known && !again, expected);
+      t.check("order", known && !again,
+              fmt::format("{} (\"{}\" is {})", expected, s->get(),
+                          known ? "there twice" : "not a sheet of the report"));
       tpl.order.push_back(s->get());
     }
     complete_order(tpl.order, tpl.built_in_keys);
@@ -390,7 +400,16 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
     if (!l) t.missing("landscape", "true or false");
     tpl.landscape = *l;
     tpl.paper = static_cast<int>(required_integer(t, "paper", 0, 118));
-    tpl.text["page"]["footer"] = t.required_string("footer", "a string: the page footer");
+    const std::string footer = t.required_string("footer", "a string: the page footer");
+    // Excel's limit, and no picture codes: pierre gives the footer no image, and libxlsxwriter
+    // fails (or worse) on a &G without one.
+    t.check("footer", footer.size() <= 255, "a footer of at most 255 characters (Excel's limit)");
+    std::string upper = footer;
+    for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    t.check("footer",
+            upper.find("&G") == std::string::npos && upper.find("&[PICTURE]") == std::string::npos,
+            "a footer without picture codes (&G, &[Picture]): the report puts no image in it");
+    tpl.text["page"]["footer"] = footer;
   }
   {
     const TomlTable t = required_table(top, "charts");

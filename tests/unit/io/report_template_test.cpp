@@ -102,7 +102,15 @@ INSTANTIATE_TEST_SUITE_P(
             "2.5"},
         Bad{"missing_table", "[chart.profile]", "[chart.profil]", 0, "[chart.profil]",
             "chart.profil", "unknown key"},
-        Bad{"syntax", "[sheets]", "[sheets", 0, "[sheets", "TOML syntax", ""}));
+        Bad{"syntax", "[sheets]", "[sheets", 0, "[sheets", "TOML syntax", ""},
+        // Found by running the real report writer: each crashed (&G) or ended in exit 3 after a
+        // whole simulation while validate passed the layout.
+        Bad{"footer_picture", "footer = \"&L&A&Rpage &P of &N\"", "footer = \"&L&g\"", 0,
+            "footer = \"&L&g\"", "page.footer", "&L&g"},
+        Bad{"footer_too_long", "footer = \"&L&A&Rpage &P of &N\"",
+            "footer = \"" + std::string(256, 'x') + "\"", 0, "footer = \"xxx", "page.footer", "xxx"},
+        Bad{"sheet_names_differ_in_case", "inputs = \"Inputs\"", "inputs = \"SUMMARY\"", 0,
+            "inputs = \"SUMMARY\"", "sheets.inputs", "SUMMARY"}));
 
 // The program carries the layout it was built with: the text of templates/report.toml.
 TEST(ReportTemplate, BuiltInLayoutIsTheShippedFile) {
@@ -177,6 +185,21 @@ TEST(ReportTemplate, ANameClashingWithABuiltInNameIsTheCopysKeysError) {
     EXPECT_EQ(e.line(), line_of(text, to));
     EXPECT_EQ(e.field(), "sheets.summary");
     EXPECT_NE(std::string(e.what()).find("built-in"), std::string::npos) << e.what();
+  }
+}
+
+// The order's error names the entry at fault.
+TEST(ReportTemplate, AnOrderErrorNamesTheEntry) {
+  TempDir dir;
+  for (const auto& [to, says] : std::vector<std::pair<std::string, std::string>>{
+           {"\"summary\"]", "\"summary\" is there twice"},
+           {"\"crossing\"]", "\"crossing\" is not a sheet of the report"}}) {
+    try {
+      (void)load_report_template(dir.write("r.toml", shipped_with("\"crossings\"]", to)));
+      FAIL() << "no InputError for " << to;
+    } catch (const InputError& e) {
+      EXPECT_NE(e.expected().find(says), std::string::npos) << e.expected();
+    }
   }
 }
 
