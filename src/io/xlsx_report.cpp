@@ -35,7 +35,8 @@ std::chrono::year_month_day parse_date(const std::string& s) {
 // ---- the whole workbook ----------------------------------------------------------------
 
 // The document's properties, with a fixed creation time (the run's date at 00:00 UTC) for
-// reproducible bytes.
+// reproducible bytes. libxlsxwriter takes a creation time of 0 for "now": 1970-01-01 (a
+// SOURCE_DATE_EPOCH below 86400) is written one second later, still that date and fixed.
 void Report::properties() {
   const auto ymd = parse_date(d_.date);
   const auto created = std::chrono::sys_days(ymd).time_since_epoch();
@@ -47,8 +48,8 @@ void Report::properties() {
   props.subject = const_cast<char*>(t_.get("titles", "summary").c_str());
   props.author = const_cast<char*>("pierre");
   props.comments = const_cast<char*>(comments.c_str());
-  props.created =
-      static_cast<time_t>(std::chrono::duration_cast<std::chrono::seconds>(created).count());
+  props.created = std::max<time_t>(
+      1, static_cast<time_t>(std::chrono::duration_cast<std::chrono::seconds>(created).count()));
   check(workbook_set_properties(wb_, &props), "workbook_set_properties");
 }
 

@@ -268,6 +268,18 @@ TEST(XlsxReport, SameInputsSameBytes) {
   EXPECT_EQ(read_file(dir.path() / "a.xlsx"), read_file(dir.path() / "b.xlsx"));
 }
 
+// SOURCE_DATE_EPOCH=0, common in reproducible pipelines, is 1970-01-01: a creation time of 0,
+// which libxlsxwriter replaced by the current time, so two reports differed.
+TEST(XlsxReport, TheFirstDayOf1970IsAFixedDateToo) {
+  TempDir dir;
+  auto f = make_fixture();
+  f->data.date = "1970-01-01";
+  const auto tpl = io::load_report_template(kTemplate);
+  io::write_report(dir.path() / "a.xlsx", f->data, tpl);
+  const std::string core = zip_entry(dir.path() / "a.xlsx", "docProps/core.xml", dir.path());
+  EXPECT_NE(core.find("1970-01-01T00:00:01Z"), std::string::npos) << core;
+}
+
 // A block bouncing in place until the impact limit records hundreds of thousands of path
 // points. Four such paths (1.2 million rows unthinned) overflowed the Profile sheet's
 // 1 048 576 rows and the report failed. Now a path is drawn with the points closer than 1/10 000
