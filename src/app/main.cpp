@@ -1,6 +1,7 @@
 // pierre: the command line. Sub-commands live in their own files (commands.hpp); this file
 // parses, dispatches and turns every failure into a message and an exit code:
 // help and --version 0, usage errors and bad input 2, anything unexpected 3.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -47,6 +48,13 @@ int main(int argc, char** argv) {
       app.exit(e);
       return kExitOk;
     } catch (const CLI::ParseError& e) {
+      // A misspelt command: CLI11 says only that one is required. Name it and the commands.
+      if (argc > 1 && argv[1][0] != '-' &&
+          std::none_of(subs.begin(), subs.end(), [&](CLI::App* c) { return c->check_name(argv[1]); })) {
+        std::fprintf(stderr, "%s: not a command; expected run, check or validate (pierre --help)\n",
+                     argv[1]);
+        return kExitInput;
+      }
       app.exit(e);
       return kExitInput;
     }

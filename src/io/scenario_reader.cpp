@@ -421,7 +421,9 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
       const std::string expected = fmt::format(
           "a rule set of {} ({}) or a path to a rule-set TOML file", rules_dir.string(), held);
       if (t.has("rules"))
-        t.fail("rules", expected + fmt::format(" ({} does not exist)", rules_file.string()));
+        t.fail("rules", expected + fmt::format(" ({} {})", rules_file.string(),
+                                               fs::exists(rules_file, ec) ? "is not a file"
+                                                                          : "does not exist"));
       // The default was looked for: say which, and how a rules folder of one's own gets it.
       t.missing("rules", fmt::format("the default rule set \"{}\" in {} ({}): copy {}.toml and the "
                                      "class table it names (etag027-classes.toml) there, or give "

@@ -206,6 +206,9 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_FALSE(r.err.empty()) << args;
   }
   EXPECT_FALSE(fs::exists(dir_ / "x"));
+  // A misspelt command is named, with the commands there are.
+  EXPECT_NE(pierre("chek " + kScenario).err.find("chek: not a command; expected run, check or validate"),
+            std::string::npos);
   // A seed is a whole number from 0 to 2^63 - 1, said in whole numbers (not as 1.8e308 written
   // out in full); a larger one is refused, not clamped to the largest (two seeds, one run).
   for (const char* seed : {"-1", "9223372036854775808", "18446744073709551615", "1e3", "12x"}) {
