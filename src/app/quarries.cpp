@@ -77,7 +77,7 @@ void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint6
   if (throws) loaded.scenario.settings.throws = *throws;
   for (std::size_t i = 0; i < loaded.quarries.size(); ++i) {
     sim::SimulationSettings& s = loaded.quarries[i].scenario.settings;
-    if (seed && !loaded.quarries[i].seed_given) s.seed = *seed + i;
+    if (seed && !loaded.quarries[i].seed_given) s.seed = io::section_seed(*seed, i);
     if (throws) s.throws = *throws;
   }
 }

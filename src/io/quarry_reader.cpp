@@ -309,7 +309,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
       sc.settings.seed = static_cast<std::uint64_t>(*seed);
       s.seed_given = true;
     } else {
-      sc.settings.seed = settings.seed + i;  // independent streams for sections pooled together
+      sc.settings.seed = section_seed(settings.seed, i);  // independent streams, pooled sections
     }
     sc.profile = detail::read_profile(q, materials, "quarries");
     detail::read_blocks(q, s.block_groups, sc.blocks, "quarries");

@@ -6,6 +6,7 @@
 // what was expected.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,6 +35,12 @@ struct QuarrySection {
   std::filesystem::path rules_file;
   bool seed_given = false;  // `seed` was written (else [simulation].seed + the section's index)
 };
+
+// The seed of section `index` that gives none: the run's seed + index, wrapped into 0 to 2^63 − 1
+// so that every seed a report shows can be given back (TOML and --seed stop at 2^63 − 1).
+inline std::uint64_t section_seed(std::uint64_t run_seed, std::size_t index) {
+  return (run_seed + index) & 0x7FFF'FFFF'FFFF'FFFFull;
+}
 
 // A rule set by name ("quarry-thesis-2015" → rules_dir/quarry-thesis-2015.toml) or by path (a
 // value ending in ".toml" or holding a '/'; used as given).

@@ -92,6 +92,16 @@ InputError error_of(const std::string& text) {
   return InputError("", 0, "", "", "");
 }
 
+// A section without a seed gets the run's + its index, wrapped so that it stays a seed a user
+// can give back (up to 2^63 − 1): --seed 9223372036854775807 made sections ...808, ...809.
+TEST(QuarryReader, SectionSeedsStaySeedsAUserCanGiveBack) {
+  constexpr std::uint64_t kMax = 9223372036854775807ull;
+  EXPECT_EQ(pierre::io::section_seed(500, 1), 501u);
+  EXPECT_EQ(pierre::io::section_seed(kMax, 0), kMax);
+  EXPECT_EQ(pierre::io::section_seed(kMax, 1), 0u);
+  EXPECT_EQ(pierre::io::section_seed(kMax - 1, 3), 1u);
+}
+
 TEST(QuarryReader, ReadsASection) {
   test::TempDir dir;
   const auto q = read(dir, kSection + "\n" + section_with(2, "name = \"Preg 2\""));
