@@ -210,6 +210,13 @@ struct GroupSource {  // where a block group was written, for messages
   std::string field;  // of the id
 };
 
+// The expectation of a block heavier than the model's limit (given by mass or by volume).
+std::string block_mass_limit() {
+  return fmt::format("a block of at most {:g} kg (volume × density; larger is a rock avalanche, "
+                     "beyond a lumped-mass model)",
+                     ModelDefaults::max_block_mass);
+}
+
 void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
                      std::vector<BlockGroup>& groups, std::vector<GroupSource>& where) {
   const CsvTable t = detail::read_csv(
@@ -250,6 +257,9 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
         throw InputError(file, r.line, "volume", r.cells[*c_vol], "a volume > 0 (m³)");
       g.mass = g.volume * g.density;
     }
+    if (!(g.mass <= ModelDefaults::max_block_mass))
+      throw InputError(file, r.line, has_mass ? "mass" : "volume",
+                       r.cells[has_mass ? *c_mass : *c_vol], block_mass_limit());
     g.shape_min = present(r, c_smin) ? t.number(r, *c_smin) : shape.min;
     g.shape_max = present(r, c_smax) ? t.number(r, *c_smax) : shape.max;
     if (!shape_ok(g.shape_min, g.shape_max))
@@ -308,6 +318,7 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
         g.volume = *volume;
         g.mass = g.volume * g.density;
       }
+      t.check(mass ? "mass" : "volume", g.mass <= ModelDefaults::max_block_mass, block_mass_limit());
       const ShapeRange s = read_shape(t).value_or(shape);
       g.shape_min = s.min;
       g.shape_max = s.max;
@@ -396,6 +407,12 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     s.velocity.x = t.number("vx", 0.0);
     s.velocity.z = t.number("vz", 0.0);
     s.omega = t.number("omega", 0.0);
+    const std::string speed = fmt::format("a speed from −{0:g} to {0:g} m/s",
+                                          ModelDefaults::max_source_speed);
+    t.check("vx", std::abs(s.velocity.x) <= ModelDefaults::max_source_speed, speed);
+    t.check("vz", std::abs(s.velocity.z) <= ModelDefaults::max_source_speed, speed);
+    t.check("omega", std::abs(s.omega) <= ModelDefaults::max_source_spin,
+            fmt::format("a spin from −{0:g} to {0:g} rad/s", ModelDefaults::max_source_spin));
     sc.sources.push_back(std::move(s));
   }
 }

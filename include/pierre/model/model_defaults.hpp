@@ -25,6 +25,12 @@ struct ModelDefaults {
   static constexpr double max_sliding_speed = 5.0;        // m/s (§3.2.2)
   static constexpr double max_time = 600.0;               // s of simulated time
   static constexpr long max_impacts = 100000;             // impacts (and vertex events)
+  // Input limits, far beyond any rockfall, that keep every energy a finite double (a mass of
+  // 1e300 kg or a speed of 1e200 m/s gave inf in the CSV files): a block of 10⁸ kg (about
+  // 40 000 m³) is a rock avalanche, beyond a lumped-mass model.
+  static constexpr double max_block_mass = 1e8;    // kg
+  static constexpr double max_source_speed = 1e3;  // m/s, each of vx and vz
+  static constexpr double max_source_spin = 1e4;   // rad/s
   static constexpr double rebound_sliding_threshold = 1e-6;  // m/s: v⁺·n at or below → slide (model-2d.md §3 step 7; a numerical tolerance, not a scenario setting)
 };
 

@@ -131,6 +131,12 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"distribution_name", {{6, "throws = 2\nroughness_distribution = \"normal\""}}, {}, "s.toml", 7, "simulation.roughness_distribution", "\"normal\""},
         // out of range
         Case{"mass_negative", {{18, "mass = -5.0"}}, {}, "s.toml", 18, "blocks.table[0].mass", "-5.0"},
+        // Absurd but finite values that made inf energies in the CSV files.
+        Case{"mass_absurd", {{18, "mass = 1e300"}}, {}, "s.toml", 18, "blocks.table[0].mass", "1e+300"},
+        Case{"volume_absurd", {{18, "volume = 1e5"}}, {}, "s.toml", 18, "blocks.table[0].volume", "100000"},
+        Case{"blocks_csv_mass_absurd", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,mass\na,1e300\n"}}, "b.csv", 2, "mass", "1e300"},
+        Case{"source_speed_absurd", {{23, "vx = 1e200"}}, {}, "s.toml", 23, "sources[0].vx", "1e+200"},
+        Case{"source_spin_absurd", {{23, "omega = -2e4"}}, {}, "s.toml", 23, "sources[0].omega", "-20000"},
         Case{"mass_zero", {{18, "mass = 0.0"}}, {}, "s.toml", 18, "blocks.table[0].mass", "0.0"},
         Case{"volume_zero", {{18, "volume = 0.0"}}, {}, "s.toml", 18, "blocks.table[0].volume", "0.0"},
         Case{"density_negative", {{16, "[blocks]\ndensity = -2650.0"}}, {}, "s.toml", 17, "blocks.density", "-2650.0"},
