@@ -317,6 +317,13 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     read_work_areas(q, spec);
     read_observed(q, s);
 
+    // A toe or crest off the section is the value's own error, at its own key.
+    for (const auto& [key, x] : {std::pair{"toe", spec.geometry.toe_x},
+                                 std::pair{"crest", spec.geometry.crest_x}})
+      if (x)
+        q.check(key, *x >= sc.profile.x_min() && *x <= sc.profile.x_max(),
+                fmt::format("a {} x inside the section, {:g} to {:g} m", key, sc.profile.x_min(),
+                            sc.profile.x_max()));
     auto g = design::quarry_geometry(sc.profile, spec.geometry);
     if (g && !g->toe_vertex) {
       // A toe given inside a segment: the floor is the profile past the toe (design-checks.md

@@ -241,7 +241,9 @@ std::vector<ErrorCase> error_cases() {
   std::vector<ErrorCase> v;
   for (const auto& c : kErrors)
     if (std::string(c.name) != "toe_outside") v.push_back(c);
-  v.push_back({"toe_outside", 4, "toe = 120.0", 4, "quarries[0].toe", "outside the section"});
+  // The value found is the number, the section's extent is in what was expected.
+  v.push_back({"toe_outside", 4, "toe = 120.0", 4, "quarries[0].toe", "120.0"});
+  v.push_back({"crest_outside", 4, "crest = -5.0", 4, "quarries[0].crest", "-5.0"});
   return v;
 }
 
