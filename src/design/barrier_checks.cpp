@@ -166,7 +166,7 @@ void sample_line(Builder& b) {
   }
   const double tol = b.r.sample_tolerance;
   CheckLine& l = b.add("sample.size",
-                       "largest half-width of the " + num(100 * b.r.sample_confidence) +
+                       "largest half-width of the " + num(100 * b.r.sample_confidence, 6) +
                            " % bootstrap interval of v_k, h_k, E_d, h_i relative to its value" + (which.empty() ? std::string() : " (" + which + ")"),
                        100 * worst, 100 * tol, "%");  // in % as the quarries' sample.size
   if (!missing.empty()) {

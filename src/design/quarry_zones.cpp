@@ -319,7 +319,7 @@ CheckLine sample_size_line(const QuarryRow& row, const QuarryRuleSet& rules) {
   const double rd_sampled = censored_percentile(row.rd_sample.normalized,
                                                 row.rd_sample.censored_at, rules.sample_percentile);
   CheckLine l = line(row.name, "sample.size", rules);
-  l.what = "half-width of the " + num(100 * rules.sample_confidence) + " % bootstrap interval of RD" +
+  l.what = "half-width of the " + num(100 * rules.sample_confidence, 6) + " % bootstrap interval of RD" +
            num(rules.sample_percentile) + " / RD" + num(rules.sample_percentile) +
            ", and blocks reaching the floor (>= " + std::to_string(rules.min_reached) + ")";
   l.limit = 100.0 * rules.sample_tolerance;
@@ -331,7 +331,7 @@ CheckLine sample_size_line(const QuarryRow& row, const QuarryRuleSet& rules) {
     // Resamples with more blocks off the end than the percentile allows: the interval's
     // upper end is beyond the profile, and no number of throws on this section closes it.
     warn = true;
-    why = "the " + num(100 * rules.sample_confidence) + " % interval of RD" +
+    why = "the " + num(100 * rules.sample_confidence, 6) + " % interval of RD" +
           num(rules.sample_percentile) + " reaches beyond the profile (" +
           std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
           " blocks left the section): extend the section";

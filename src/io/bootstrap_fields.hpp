@@ -28,6 +28,15 @@ inline void read_bootstrap_size(const TomlTable& t, std::string_view confidence_
                         "{})", least, least));
     resamples = static_cast<std::size_t>(*n);
   }
+  // The interval's ends are the type-7 percentiles (1 ∓ c)/2 of the replicates: with fewer
+  // than one replicate beyond each end, they are the extreme replicates, not an estimate of
+  // the percentile. So R (1 − c)/2 ≥ 1, i.e. R ≥ 2 / (1 − c).
+  const double tail = static_cast<double>(resamples) * (1 - confidence) / 2;
+  t.check(confidence_key, tail >= 1 - 1e-9,
+          fmt::format("at most {:.6g} with {} resamples (each end of the interval needs at least one "
+                      "resample beyond it: resamples ≥ 2 / (1 − confidence)); for a higher "
+                      "confidence, raise {}",
+                      1 - 2.0 / static_cast<double>(resamples), resamples, resamples_key));
 }
 
 }  // namespace pierre::io::detail

@@ -359,7 +359,7 @@ Row Report::quarry_governing(lxw_worksheet* ws, Row r, const design::QuarryRow& 
   gov("id_gov", row.id_gov.value_h, row.id_gov.how);
   if (row.rd_interval) {
     const auto& iv = *row.rd_interval;
-    const std::string how = fmt::format("{:.0f} % bootstrap interval, {} resamples (estimate {:.3f} H)",
+    const std::string how = fmt::format("{:.6g} % bootstrap interval, {} resamples (estimate {:.3f} H)",
                                         100 * iv.confidence, iv.resamples, iv.estimate);
     gov("rd_lower", iv.lower, how);
     gov("rd_upper", iv.upper, how);

@@ -391,6 +391,16 @@ TEST(QuarryRules, Errors) {
   EXPECT_EQ(err(edited("resamples = 2000", "resamples = 999")).field(), "sample.resamples");
   EXPECT_EQ(err(edited("min_reached = 50", "min_reached = 50\nconfidence = 0.5")).field(),
             "sample.confidence");
+  // resamples ≥ 2 / (1 − confidence): 2000 resamples carry 99.9 % (one beyond each end), not
+  // 99.95 %.
+  EXPECT_DOUBLE_EQ(load_quarry_rules(dir.write("ok.toml", edited("min_reached = 50",
+                                                                  "min_reached = 50\nconfidence = 0.999"))
+                                          .string(),
+                                      dir.path())
+                       .sample_confidence,
+                   0.999);
+  EXPECT_EQ(err(edited("min_reached = 50", "min_reached = 50\nconfidence = 0.9995")).field(),
+            "sample.confidence");
   // [toe], [retention] and [ritchie] left out: the spec's defaults (15°, 90 %, 0.2·H + 4.5 m).
   std::string bare = kCustom;
   for (const char* t : {"[toe]\nfloor_angle = 10.0\n", "[retention]\ntarget = 0.95\n",

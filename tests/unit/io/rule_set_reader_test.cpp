@@ -320,6 +320,8 @@ INSTANTIATE_TEST_SUITE_P(
         RuleCase{"percentile", "percentile = 98.0", "percentile = 100.0", 5, "rule_set.percentile", "100"},
         RuleCase{"confidence", "design_on = \"SEL\"", "design_on = \"SEL\"\nsample_confidence = 0.5", 8, "rule_set.sample_confidence", "0.5"},
         RuleCase{"resamples", "design_on = \"SEL\"", "design_on = \"SEL\"\nsample_resamples = 999", 8, "rule_set.sample_resamples", "999"},
+        // 99.9 % from the default 1000 resamples: half a replicate beyond each end.
+        RuleCase{"confidence_for_resamples", "design_on = \"SEL\"", "design_on = \"SEL\"\nsample_confidence = 0.999", 8, "rule_set.sample_confidence", "0.999"},
         RuleCase{"unknown_part", "gamma_F = [\"gamma_cc\"]", "gamma_F = [\"gamma_xx\"]", 10, "factors.gamma_F", "\"gamma_xx\""},
         RuleCase{"factor_type", "gamma_h = 1.25", "gamma_h = \"1.25\"", 12, "factors.gamma_h", "\"1.25\""},
         RuleCase{"factor_zero", "gamma_E_SEL = 2.0", "gamma_E_SEL = 0.0", 14, "factors.gamma_E_SEL", "0.0"},
