@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <climits>
 #include <cerrno>
 #include <system_error>
 
@@ -14,6 +15,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kStagingPrefix = ".pierre-partial-";
+// Longer than any result's name (trajectories.csv, report.xlsx, ...), with room to spare.
+constexpr const char* kLongestResultName = "a-result-file-name-of-32-chars.x";
 
 // The staging folders of runs that were killed (kill -9, out of memory, power loss) before they
 // could take them away: their process is gone. A run still going in the same folder keeps its.
@@ -44,10 +47,20 @@ OutputFolder::OutputFolder(fs::path dir) : dir_(std::move(dir)) {
     throw fs::filesystem_error("the output path exists and is not a folder", dir_,
                                std::make_error_code(std::errc::not_a_directory));
   }
-  remove_abandoned_staging(dir_);
-  staging_ = dir_ / (kStagingPrefix + std::to_string(::getpid()));
-  fs::remove_all(staging_);  // a left-over of a killed run with the same process id
-  fs::create_directory(staging_);
+  try {
+    remove_abandoned_staging(dir_);
+    staging_ = dir_ / (kStagingPrefix + std::to_string(::getpid()));
+    // The longest path a run uses is a result moved aside at commit (staging/.previous/name):
+    // refused now if the system could not open it, not after the whole simulation.
+    if ((staging_ / ".previous" / kLongestResultName).native().size() >= PATH_MAX)
+      throw fs::filesystem_error("the output path is too long for the files a run writes in it",
+                                 dir_, std::make_error_code(std::errc::filename_too_long));
+    fs::remove_all(staging_);  // a left-over of a killed run with the same process id
+    fs::create_directory(staging_);
+  } catch (...) {
+    discard();  // the folder created above, if any, goes again
+    throw;
+  }
 }
 
 OutputFolder::~OutputFolder() {

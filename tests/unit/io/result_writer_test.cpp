@@ -293,4 +293,29 @@ TEST(OutputFolder, OutputPathThatIsAFileIsRefused) {
   EXPECT_THROW(io::OutputFolder{f}, std::filesystem::filesystem_error);
 }
 
+// A folder whose results' paths the system cannot open is refused when opened (before the run),
+// and the folder it created for the purpose is taken away again.
+TEST(OutputFolder, OutputPathTooLongForItsFilesIsRefused) {
+  TempDir dir;
+  std::filesystem::path deep = dir.path();
+  // Folders of 200 characters (each within NAME_MAX) until the path is ~40 short of PATH_MAX:
+  // it can be created, but not staging/.previous/<result>.
+  while (deep.native().size() + 201 < PATH_MAX - 40) deep /= std::string(200, 'a');
+  std::filesystem::create_directories(deep);
+  deep /= std::string(PATH_MAX - 40 - deep.native().size() - 1, 'b');
+  ASSERT_LT(deep.native().size(), static_cast<std::size_t>(PATH_MAX));
+  try {
+    io::OutputFolder out{deep};
+    FAIL() << "no error for a path of " << deep.native().size() << " characters";
+  } catch (const std::filesystem::filesystem_error& e) {
+    EXPECT_EQ(e.code(), std::make_error_code(std::errc::filename_too_long)) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(deep));
+  // Two hundred characters shorter it works.
+  const std::filesystem::path fits = deep.parent_path().parent_path() / "c";
+  ASSERT_GT(fits.native().size(), static_cast<std::size_t>(PATH_MAX - 300));
+  io::OutputFolder ok{fits};
+  EXPECT_TRUE(std::filesystem::is_directory(ok.staging()));
+}
+
 }  // namespace
