@@ -264,6 +264,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
 
   // The bootstrap streams of row k: [simulation].seed + k.
   design::QuarryOutcome outcome = design::design_quarry(inputs, loaded.scenario.settings.seed);
+  if (interrupt.interrupted()) return report_interrupted(o.out.c_str());  // (as run_command)
   if (!outcome.design) throw std::runtime_error("quarry danger zones: " + outcome.error);
   io::DesignResults results;
   results.checks = outcome.design->checks;

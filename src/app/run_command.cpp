@@ -147,6 +147,9 @@ class RunCommand final : public Command {
 
     const design::RunStatistics stats = design::run_statistics(sc.lines, files.samples());
     const io::DesignResults design_results = compute_barriers(loaded, files.samples());
+    // The statistics and bootstraps of a large run take seconds: a Ctrl-C during them stops
+    // here rather than after the report is written.
+    if (interrupt.interrupted()) return report_interrupted(out_.c_str());
     const io::RunInfo info = run_info(loaded, total, sc.blocks.size(), sc.sources.size(), used,
                                       all_crossings_);
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
