@@ -21,15 +21,13 @@ void DistanceSample::add(std::span<const double> values_m, double height, double
   for (double v : values_m) {
     metres.push_back(v);
     normalized.push_back(v / height);
-    if (std::isinf(v)) {
-      censored_at.push_back(censor_distance / height);
-      censored_at_m.push_back(censor_distance);
-    }
+    if (std::isinf(v)) censored_at.push_back(censor_distance / height);
   }
+  beyond = std::max(beyond, censor_distance / height);
+  beyond_m = std::max(beyond_m, censor_distance);
 }
 
-std::vector<double> censored_percentiles(std::span<const double> values,
-                                         std::span<const double> censored_at,
+std::vector<double> censored_percentiles(std::span<const double> values, double beyond,
                                          std::span<const double> ps) {
   std::vector<double> bounded;
   bounded.reserve(values.size());
@@ -37,7 +35,7 @@ std::vector<double> censored_percentiles(std::span<const double> values,
   for (double v : values) {
     if (std::isnan(v)) continue;
     if (std::isinf(v)) {
-      bounded.push_back(k < censored_at.size() ? censored_at[k] : kInf);
+      bounded.push_back(beyond);
       ++k;
     } else {
       bounded.push_back(v);
@@ -61,10 +59,9 @@ std::vector<double> censored_percentiles(std::span<const double> values,
   return out;
 }
 
-double censored_percentile(std::span<const double> values, std::span<const double> censored_at,
-                           double p) {
+double censored_percentile(std::span<const double> values, double beyond, double p) {
   const double ps[] = {p};
-  return censored_percentiles(values, censored_at, ps).front();
+  return censored_percentiles(values, beyond, ps).front();
 }
 
 stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
@@ -110,8 +107,8 @@ DistanceStatistics distance_statistics(const DistanceSample& s) {
     if (std::isinf(v)) ++out.censored;
   }
   const double ps[] = {50, 95, 99, 100};
-  const auto m = censored_percentiles(s.metres, s.censored_at_m, ps);
-  const auto h = censored_percentiles(s.normalized, s.censored_at, ps);
+  const auto m = censored_percentiles(s.metres, s.beyond_m, ps);
+  const auto h = censored_percentiles(s.normalized, s.beyond, ps);
   out.p50 = m[0], out.p95 = m[1], out.p99 = m[2], out.max = m[3];
   out.p50_h = h[0], out.p95_h = h[1], out.p99_h = h[2], out.max_h = h[3];
   if (out.count == 0) {
@@ -135,7 +132,7 @@ DistanceStatistics distance_statistics(const DistanceSample& s) {
 
 double empirical_at_exceedance(const DistanceSample& sample, double q) {
   if (!(q >= 0 && q <= 1)) return kNaN;
-  return censored_percentile(sample.normalized, sample.censored_at, 100.0 * (1.0 - q));
+  return censored_percentile(sample.normalized, sample.beyond, 100.0 * (1.0 - q));
 }
 
 double empirical_exceedance(std::span<const double> sample, double d) {

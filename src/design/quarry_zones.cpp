@@ -66,7 +66,7 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
   for (QuarryGoverning c : rules.governing) {
     switch (c) {
       case QuarryGoverning::percentile:
-        g.percentile_h = censored_percentile(sample.normalized, sample.censored_at, rules.percentile);
+        g.percentile_h = censored_percentile(sample.normalized, sample.beyond, rules.percentile);
         take(g.percentile_h, labelled("P" + num(rules.percentile), g.percentile_h));
         break;
       case QuarryGoverning::maximum:
@@ -201,7 +201,7 @@ void pool_row(QuarryDesign& d, std::size_t r, const std::vector<QuarrySectionInp
   row.id_gov = governing_distance(row.id_sample, row.id, rules);
   // A bootstrap of one value has no spread and says nothing: two at least.
   const double rd_sampled = censored_percentile(row.rd_sample.normalized,
-                                                row.rd_sample.censored_at, rules.sample_percentile);
+                                                row.rd_sample.beyond, rules.sample_percentile);
   if (row.rd_sample.normalized.size() >= 2 && std::isfinite(rd_sampled)) {
     stats::BootstrapOptions opt;
     opt.resamples = rules.sample_resamples;
@@ -274,10 +274,10 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
         l.reason = "no runout sample";
       } else if (std::isinf(sr.danger_zone)) {
         l.status = CheckStatus::fail;
-        l.reason = "the danger zone reaches beyond the profile's end: more than " +
-                   num(100 - rules.percentile) + " % of the blocks left the section (" +
+        // The cause is the governing rule's (a percentile, the maximum), said by its `how`.
+        l.reason = "the danger zone reaches beyond the profile's end (" + row.rd_gov.how + "; " +
                    std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
-                   "); extend the section";
+                   " blocks left the section); extend the section";
       } else if (!at_least(value, sr.danger_zone)) {
         l.status = CheckStatus::fail;
         l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text;
@@ -317,7 +317,7 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
 // tolerance, and the blocks that reached the floor against the minimum.
 CheckLine sample_size_line(const QuarryRow& row, const QuarryRuleSet& rules) {
   const double rd_sampled = censored_percentile(row.rd_sample.normalized,
-                                                row.rd_sample.censored_at, rules.sample_percentile);
+                                                row.rd_sample.beyond, rules.sample_percentile);
   CheckLine l = line(row.name, "sample.size", rules);
   l.what = "half-width of the " + num(100 * rules.sample_confidence, 6) + " % bootstrap interval of RD" +
            num(rules.sample_percentile) + " / RD" + num(rules.sample_percentile) +

@@ -31,7 +31,11 @@ struct DistanceSample {
   std::vector<double> metres;      // m; +infinity: censored
   std::vector<double> normalized;  // / H of its own section; +infinity: censored
   std::vector<double> censored_at;  // / H: the censoring threshold of each censored value
-  std::vector<double> censored_at_m;  // m: the same thresholds
+  // The largest threshold of the sections added, / H and in m: where a censored value stands
+  // in a percentile, beyond every stop (design-checks.md §2: "beyond every distance"; in a
+  // pool, a short floor's end can lie below another section's stops).
+  double beyond = 0;
+  double beyond_m = 0;
   // Appends a section's values (m) with its H and the distance where its censored values
   // were censored (the floor length, m).
   void add(std::span<const double> values_m, double height, double censor_distance);
@@ -63,15 +67,13 @@ DistanceStatistics distance_statistics(const DistanceSample& sample);
 stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
                                      const stats::CensoredLognormalFit& fit, double below);
 
-// The type-7 percentile p (0 to 100) of `values`, whose +infinity are right-censored at the
-// thresholds `censored_at` (in their order): +infinity, beyond the profile, when more than
-// (1 − p/100) of the values are censored; else the percentile with each censored value at its
-// threshold. NaN for an empty sample or a p outside [0, 100].
-double censored_percentile(std::span<const double> values, std::span<const double> censored_at,
-                           double p);
+// The type-7 percentile p (0 to 100) of `values`, whose +infinity are right-censored:
+// +infinity, beyond the profile, when more than (1 − p/100) of the values are censored; else the
+// percentile with every censored value at `beyond` (a DistanceSample's beyond or beyond_m).
+// NaN for an empty sample or a p outside [0, 100].
+double censored_percentile(std::span<const double> values, double beyond, double p);
 // The same for several p, sorting the sample once.
-std::vector<double> censored_percentiles(std::span<const double> values,
-                                         std::span<const double> censored_at,
+std::vector<double> censored_percentiles(std::span<const double> values, double beyond,
                                          std::span<const double> ps);
 
 // The empirical distance (/H) exceeded with probability q: censored_percentile at 100 (1 − q)

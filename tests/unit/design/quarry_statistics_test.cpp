@@ -107,17 +107,23 @@ TEST(QuarryStatistics, ExactlyOneMinusPLeftIsNotBeyondTheProfile) {
   // p = 99.9 with 1 of 1000 out: 100 − 99.9 is not exact in binary, the limit still holds.
   auto u = one_to(999);
   u.push_back(kInf);
-  EXPECT_TRUE(std::isfinite(censored_percentile(u, std::vector<double>{2000.0}, 99.9)));
+  EXPECT_TRUE(std::isfinite(censored_percentile(u, 2000.0, 99.9)));
   u[998] = kInf;  // 2 of 1000 out
-  EXPECT_TRUE(std::isinf(censored_percentile(u, std::vector<double>{2000.0, 2000.0}, 99.9)));
-  // Pooled sections censor at their own ends: each censored value at its own threshold.
+  EXPECT_TRUE(std::isinf(censored_percentile(u, 2000.0, 99.9)));
+  // Pooled sections: the five that left the short section (60 m floor) are beyond every
+  // distance (design-checks.md §2), also beyond the 61..95 m stops on the long one. Sorted:
+  // 1..95, then the five: ranks 94 and 95 (from 0) hold 95 m and a censored one, placed at the
+  // pool's largest threshold (120 m), so P95 = 95 + 0.05 · 25 = 96.25 m. At its own 60 m end
+  // a censored block would sort below the stops past 60 m: 90.05 m, a zone 6 m short.
   DistanceSample pooled;
   pooled.add(one_to(95), 20, 120);
   pooled.add(std::vector<double>{kInf, kInf, kInf, kInf, kInf}, 10, 60);
-  EXPECT_EQ(pooled.censored_at_m, (std::vector<double>{60, 60, 60, 60, 60}));
-  // Sorted: 1..60, the five censored at 60 m, 61..95: ranks 94 and 95 (from 0) hold 90 and
-  // 91 m, so P95 = 90.05 m (at 120 m, the first section's end, it would be 95.05 m).
-  EXPECT_NEAR(distance_statistics(pooled).p95, 90.05, 1e-12);
+  EXPECT_EQ(pooled.censored_at, (std::vector<double>{6, 6, 6, 6, 6}));
+  EXPECT_EQ(pooled.beyond_m, 120);
+  EXPECT_NEAR(distance_statistics(pooled).p95, 96.25, 1e-12);
+  // In /H the long section's stops reach 95/20 = 4.75 and the short floor's end is 60/10 = 6:
+  // the censored ones stand at 6 (the largest threshold), above every stop either way.
+  EXPECT_NEAR(distance_statistics(pooled).p95_h, 4.75 + 0.05 * (6 - 4.75), 1e-12);
 }
 
 TEST(QuarryStatistics, CensoredLognormalRecoversKnownParameters) {

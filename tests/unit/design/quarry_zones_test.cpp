@@ -144,6 +144,22 @@ TEST(QuarryZones, DangerZoneBeyondTheProfileFails) {
   const CheckLine* extent = find(*out.design, "Face B", "zone.extent");
   ASSERT_TRUE(extent);
   EXPECT_EQ(extent->status, CheckStatus::fail);
+  // The reason names the rule that reached beyond: here P95 (10 of 100 left, more than 5 %).
+  EXPECT_NE(office->reason.find("P95 beyond the profile; 10 of 100 blocks left"), std::string::npos)
+      << office->reason;
+  // Under the conservative rule one block out of 100 is enough (the maximum): the reason says
+  // so, not "more than 5 % left".
+  auto one_out = one_to(99);
+  one_out.push_back(kInf);
+  auto c = section("Face C", one_out, conservative());
+  c.spec.work_areas = {{"office", 390}};
+  const auto outc = design_quarry({c}, 1);
+  ASSERT_TRUE(outc.design) << outc.error;
+  const CheckLine* office_c = find(*outc.design, "Face C", "zone.office");
+  ASSERT_TRUE(office_c);
+  EXPECT_EQ(office_c->status, CheckStatus::fail);
+  EXPECT_NE(office_c->reason.find("maximum beyond the profile"), std::string::npos) << office_c->reason;
+  EXPECT_NE(office_c->reason.find("1 of 100 blocks left"), std::string::npos) << office_c->reason;
 }
 
 // A finite danger zone longer than the floor the section models (a log-normal extrapolation, or
