@@ -56,7 +56,12 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
                    const std::vector<std::filesystem::path>& files) {
   fmt::print(out, "{} trajectories in {:.1f} s\n\n", s.trajectories, seconds);
   if (!s.lines.empty()) {
-    fmt::print(out, "Observation lines (first crossing of each trajectory in the main direction)\n");
+    std::fputs(s.every_crossing
+                        ? "Observation lines (every crossing, in both directions: --all-crossings; "
+                          "missed: trajectories without a crossing in the main direction)\n"
+                        : "Observation lines (first crossing of each trajectory in the main "
+                          "direction)\n",
+               out);
     fmt::print(out, "{:<16} {:>9} {:>8} {:>8}  {:<26} {:>10} {:>10} {:>10} {:>10}\n", "line",
                "x (m)", "count", "missed", "quantity", "mean", "P50", "P95", "max");
     for (const auto& l : s.lines) {

@@ -69,8 +69,9 @@ class RunCommand final : public Command {
                        : "No progress bar and no results table");
     c->add_flag("--impacts", impacts_, "Also write impacts.csv (every impact; large)");
     c->add_flag("--all-crossings", all_crossings_,
-                "Write every crossing of the observation lines to crossings.csv, not only the "
-                "first in the main direction (the statistics still use the first)");
+                "Record every crossing of the observation lines, in both directions, not only "
+                "each trajectory's first in the main direction: crossings.csv holds them all and "
+                "the lines' statistics count them all (the barrier checks still use the first)");
     c->add_option("--rules", rules_,
                   "Rules folder holding materials.toml and the barrier and quarry rule sets");
     if (check_)
@@ -131,7 +132,7 @@ class RunCommand final : public Command {
     opt.stop = interrupt.flag();
     const std::unique_ptr<io::OutputFolder> folder = open_output_folder(out_);
     if (!folder) return kExitInput;
-    io::ResultFiles files(folder->staging(), sc, impacts_);
+    io::ResultFiles files(folder->staging(), sc, impacts_, all_crossings_);
     // The report's data sheets: as many rows as its layout shows (the CSVs hold every row).
     FirstRows first(files, layout.trajectory_rows, layout.crossing_rows);
     ProgressBar bar(!quiet_ && ::isatty(2));

@@ -11,8 +11,21 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }
 
-RunSamples::RunSamples(std::size_t line_count, int main_direction)
-    : lines_(line_count), last_kept_(line_count, 0), main_direction_(main_direction) {}
+RunSamples::RunSamples(std::size_t line_count, int main_direction, bool every_crossing)
+    : lines_(line_count),
+      every_crossing_(every_crossing),
+      every_(every_crossing ? line_count : 0),
+      last_kept_(line_count, 0),
+      main_direction_(main_direction) {}
+
+namespace {
+void keep(LineSamples& l, const sim::Crossing& c) {
+  l.speed.push_back(c.speed);
+  l.height.push_back(c.height);
+  l.translational_energy.push_back(c.translational_energy);
+  l.rotational_energy.push_back(c.rotational_energy);
+}
+}  // namespace
 
 void RunSamples::add(const sim::TrajectorySummary& t) {
   runout_.push_back(t.runout());
@@ -21,14 +34,12 @@ void RunSamples::add(const sim::TrajectorySummary& t) {
 }
 
 void RunSamples::add(const sim::Crossing& c) {
-  if (c.line >= lines_.size() || c.direction != main_direction_) return;
+  if (c.line >= lines_.size()) return;
+  if (every_crossing_) keep(every_[c.line], c);
+  if (c.direction != main_direction_) return;
   if (last_kept_[c.line] == c.trajectory + 1) return;  // not the first of its trajectory
   last_kept_[c.line] = c.trajectory + 1;
-  LineSamples& l = lines_[c.line];
-  l.speed.push_back(c.speed);
-  l.height.push_back(c.height);
-  l.translational_energy.push_back(c.translational_energy);
-  l.rotational_energy.push_back(c.rotational_energy);
+  keep(lines_[c.line], c);
 }
 
 QuantityStatistics quantity_statistics(std::vector<double> v) {
@@ -52,12 +63,15 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
                              const RunSamples& samples) {
   RunStatistics s;
   s.trajectories = samples.trajectories();
+  s.every_crossing = samples.every_crossing();
   for (std::size_t i = 0; i < lines.size(); ++i) {
     LineStatistics l;
     l.name = lines[i].name;
     l.chainage = lines[i].x;
+    std::uint64_t reached = 0;
     if (i < samples.lines().size()) {
-      const LineSamples& ls = samples.lines()[i];
+      reached = samples.lines()[i].speed.size();
+      const LineSamples& ls = s.every_crossing ? samples.every()[i] : samples.lines()[i];
       l.speed = quantity_statistics(ls.speed);
       l.height = quantity_statistics(ls.height);
       l.translational_energy = quantity_statistics(ls.translational_energy);
@@ -65,7 +79,7 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
       l.speed = l.height = l.translational_energy = quantity_statistics({});
     }
     l.count = l.speed.count;
-    l.not_reached = s.trajectories >= l.count ? s.trajectories - l.count : 0;
+    l.not_reached = s.trajectories >= reached ? s.trajectories - reached : 0;
     s.lines.push_back(std::move(l));
   }
   std::vector<double> r = samples.runout();

@@ -55,7 +55,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
                  "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
                  "id",            "beyond_profile", "pooled",    "observed_source", "total",
-                 "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor"};
+                 "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor",
+                 "lines_every_crossing"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};

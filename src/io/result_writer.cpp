@@ -84,9 +84,9 @@ class ResultFiles::Csv {
 };
 
 ResultFiles::ResultFiles(const std::filesystem::path& folder, const sim::Scenario& scenario,
-                         bool impacts)
+                         bool impacts, bool every_crossing)
     : scenario_(&scenario),
-      samples_(scenario.lines.size(), scenario.profile.main_direction()) {
+      samples_(scenario.lines.size(), scenario.profile.main_direction(), every_crossing) {
   open(folder, impacts);
 }
 
@@ -506,7 +506,9 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["sources"] = info.sources;
   j["trajectories"] = info.trajectories;
   j["threads"] = info.threads;
-  j["crossing_statistics"] = "first crossing of each trajectory in the main travel direction";
+  j["crossing_statistics"] =
+      s.every_crossing ? "every crossing, in both directions (--all-crossings)"
+                       : "first crossing of each trajectory in the main travel direction";
   j["all_crossings_in_csv"] = info.all_crossings;
   json stops = json::object();
   for (const auto& r : s.stop_reasons) stops[std::string(sim::to_string(r.reason))] = r.count;

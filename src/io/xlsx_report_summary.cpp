@@ -133,6 +133,7 @@ Row Report::summary_lines(lxw_worksheet* ws, Row r) {
     num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy", 1));
     ++r;
   }
+  if (d_.statistics.every_crossing) text(ws, r++, 0, t_.get("labels", "lines_every_crossing"), note());
   return r;
 }
 

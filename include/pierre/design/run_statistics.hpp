@@ -1,6 +1,7 @@
 // Statistics of a run for the console table and summary.json: per observation line the
 // speed, passing height and translational energy of the crossings (model-2d.md §5: the first
-// crossing of each trajectory in the main travel direction), the runout distribution and the
+// crossing of each trajectory in the main travel direction, or every crossing when the user
+// asks for all crossings), the runout distribution and the
 // stop-reason counts. Pure: samples in, plain structs out. Percentiles are the empirical
 // type-7 estimator (Hyndman & Fan 1996; R's and NumPy's default).
 #pragma once
@@ -29,20 +30,28 @@ class RunSamples {
  public:
   RunSamples() = default;
   // `main_direction`: +1 when the profile runs towards increasing x (Profile::main_direction).
-  RunSamples(std::size_t line_count, int main_direction);
+  // `every_crossing`: the statistics use every crossing given (model-2d.md §5: when the user
+  // asks for all crossings); the first ones are kept beside them for the barrier design.
+  RunSamples(std::size_t line_count, int main_direction, bool every_crossing = false);
 
   void add(const sim::TrajectorySummary& t);
-  // Keeps the crossing when it is its trajectory's first on that line in the main direction.
-  // Crossings must arrive in trajectory order (as the runner delivers them).
+  // Keeps the crossing in lines() when it is its trajectory's first on that line in the main
+  // direction, and in every() when every crossing is asked for. Crossings must arrive in
+  // trajectory order (as the runner delivers them).
   void add(const sim::Crossing& c);
 
+  // First crossings in the main direction: the barrier design's sample (design-checks.md §1).
   const std::vector<LineSamples>& lines() const { return lines_; }
+  bool every_crossing() const { return every_crossing_; }
+  const std::vector<LineSamples>& every() const { return every_; }  // empty unless asked for
   const std::vector<double>& runout() const { return runout_; }  // m, one per trajectory
   const std::array<std::uint64_t, kStopReasonCount>& stop_reasons() const { return stops_; }
   std::uint64_t trajectories() const { return runout_.size(); }
 
  private:
   std::vector<LineSamples> lines_;
+  bool every_crossing_ = false;
+  std::vector<LineSamples> every_;
   std::vector<std::uint64_t> last_kept_;  // per line: 1 + trajectory of the last kept crossing
   int main_direction_ = 1;
   std::vector<double> runout_;
@@ -58,8 +67,9 @@ struct QuantityStatistics {
 struct LineStatistics {
   std::string name;
   double chainage = 0;            // m
-  std::uint64_t count = 0;        // trajectories that crossed in the main direction
-  std::uint64_t not_reached = 0;  // trajectories that did not
+  std::uint64_t count = 0;        // crossings in the statistics (= trajectories that crossed in
+                                  // the main direction, unless every crossing is counted)
+  std::uint64_t not_reached = 0;  // trajectories that did not cross in the main direction
   QuantityStatistics speed;                 // m/s
   QuantityStatistics height;                // m
   QuantityStatistics translational_energy;  // J
@@ -77,6 +87,7 @@ struct StopReasonCount {
 
 struct RunStatistics {
   std::uint64_t trajectories = 0;
+  bool every_crossing = false;  // the lines' statistics count every crossing, both directions
   std::vector<LineStatistics> lines;
   RunoutStatistics runout;
   std::vector<StopReasonCount> stop_reasons;  // every reason, in enum order, zeros included

@@ -48,8 +48,10 @@ inline constexpr const char* kSummaryJson = "summary.json";
 class ResultFiles final : public sim::ResultSink {
  public:
   // Opens the CSV files in `folder` and writes their headers; `impacts` adds impacts.csv.
-  // Throws std::runtime_error when a file cannot be opened.
-  ResultFiles(const std::filesystem::path& folder, const sim::Scenario& scenario, bool impacts);
+  // `every_crossing`: the run records all crossings and the lines' statistics use them all
+  // (design::RunSamples). Throws std::runtime_error when a file cannot be opened.
+  ResultFiles(const std::filesystem::path& folder, const sim::Scenario& scenario, bool impacts,
+              bool every_crossing = false);
   // The files of a quarry scenario: every row led by a `section` column. Call begin_section
   // before each section's chunks.
   ResultFiles(const std::filesystem::path& folder, bool impacts);

@@ -56,4 +56,45 @@ TEST(RunStatistics, LinesRunoutAndStops) {
   EXPECT_EQ(st.stop_reasons[1].count, 1u);
 }
 
+// model-2d.md §5: asked for all crossings, the statistics count every crossing in either
+// direction; the first ones in the main direction stay the barrier design's sample, and
+// "not reached" still counts trajectories without one.
+TEST(RunStatistics, EveryCrossingWhenAskedFor) {
+  for (const bool every : {false, true}) {
+    SCOPED_TRACE(every);
+    design::RunSamples s(1, +1, every);
+    for (std::uint64_t i = 0; i < 3; ++i) {
+      sim::TrajectorySummary t;
+      t.trajectory = i;
+      s.add(t);
+    }
+    auto crossing = [&](std::uint64_t traj, int dir, double speed) {
+      sim::Crossing c;
+      c.trajectory = traj;
+      c.line = 0;
+      c.direction = dir;
+      c.speed = speed;
+      s.add(c);
+    };
+    crossing(0, +1, 10);  // trajectory 0: down, back up, down again
+    crossing(0, -1, 2);
+    crossing(0, +1, 3);
+    crossing(1, +1, 20);
+    crossing(2, -1, 1);  // trajectory 2 only ever crosses against the main direction
+    const auto st = design::run_statistics({{"A", 5}}, s);
+    EXPECT_EQ(st.every_crossing, every);
+    EXPECT_EQ(st.lines[0].not_reached, 1u);  // trajectory 2 either way
+    ASSERT_EQ(s.lines()[0].speed, (std::vector<double>{10, 20}));
+    if (every) {
+      EXPECT_EQ(st.lines[0].count, 5u);
+      EXPECT_DOUBLE_EQ(st.lines[0].speed.mean, 36.0 / 5);
+      EXPECT_DOUBLE_EQ(st.lines[0].speed.p50, 3.0);
+    } else {
+      EXPECT_EQ(st.lines[0].count, 2u);
+      EXPECT_DOUBLE_EQ(st.lines[0].speed.mean, 15.0);
+      EXPECT_TRUE(s.every().empty());
+    }
+  }
+}
+
 }  // namespace
