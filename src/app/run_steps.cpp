@@ -19,7 +19,10 @@ std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out) {
   try {
     return std::make_unique<io::OutputFolder>(out);
   } catch (const std::filesystem::filesystem_error& e) {
-    fmt::print(stderr, "error: cannot create the output folder {}: {}\n", out, e.code().message());
+    std::error_code ec;
+    const bool exists = std::filesystem::is_directory(out, ec);
+    fmt::print(stderr, "error: cannot {} the output folder {}: {}\n",
+               exists ? "write in" : "create", out, e.code().message());
     return nullptr;
   }
 }

@@ -1,6 +1,7 @@
 #include "pierre/io/output_folder.hpp"
 
-#include <signal.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,47 +19,102 @@ constexpr const char* kStagingPrefix = ".pierre-partial-";
 // Longer than any result's name (trajectories.csv, report.xlsx, ...), with room to spare.
 constexpr const char* kLongestResultName = "a-result-file-name-of-32-chars.x";
 
-// The staging folders of runs that were killed (kill -9, out of memory, power loss) before they
-// could take them away: their process is gone. A run still going in the same folder keeps its.
+// An exclusive flock(2) on a folder, held while the object lives. Runs writing into one DIR
+// take DIR's for their set-up (the sweep below, making their staging folder) and their commit,
+// so two runs' commits cannot interleave: the last one's files are there as a set. Best effort:
+// where the file system has no flock (some network file systems), it goes on without.
+class FolderLock {
+ public:
+  explicit FolderLock(const fs::path& folder, bool wait = true) noexcept
+      : fd_(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    if (fd_ < 0) return;
+    int r;
+    do r = ::flock(fd_, LOCK_EX | (wait ? 0 : LOCK_NB));
+    while (r != 0 && errno == EINTR && wait);
+    if (r == 0) locked_ = true;
+    else busy_ = errno == EWOULDBLOCK;
+  }
+  ~FolderLock() {
+    if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+  }
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+  bool locked() const { return locked_; }
+  bool busy() const { return busy_; }  // another holds it
+  int fd() const { return fd_; }
+  int release() {  // the descriptor, still locked, for the caller to close
+    const int fd = fd_;
+    fd_ = -1;
+    return fd;
+  }
+
+ private:
+  int fd_;
+  bool locked_ = false, busy_ = false;
+};
+
+// The staging folders of runs that ended without taking them away (kill -9, out of memory,
+// power loss): a live run holds a lock on its own (whatever its process id or PID namespace),
+// so a staging folder whose lock can be taken is abandoned. Where locks cannot be taken at
+// all, nothing is removed.
 void remove_abandoned_staging(const fs::path& dir) noexcept {
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.rfind(kStagingPrefix, 0) != 0) continue;
-    const std::string id = name.substr(std::string_view(kStagingPrefix).size());
-    if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos || id.size() > 9)
-      continue;
-    const auto pid = static_cast<pid_t>(std::stol(id));
-    if (::kill(pid, 0) == -1 && errno == ESRCH) {
+    std::error_code st;
+    if (!it->is_directory(st) || st) continue;
+    const FolderLock probe(it->path(), false);
+    if (probe.locked()) {
       std::error_code rm;
       fs::remove_all(it->path(), rm);
     }
   }
 }
 
+// Writes a file's data to the disk, so that a power loss after the rename cannot leave an
+// empty or truncated file under a result's name.
+void sync_file(const fs::path& file) noexcept {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
 }  // namespace
 
 OutputFolder::OutputFolder(fs::path dir) : dir_(std::move(dir)) {
   if (!fs::exists(dir_)) {
-    // Remember the topmost folder we create, so that a failure can take it away again.
+    // The topmost folder this creates, so that a failure can take them all away again.
+    for (fs::path p = dir_; !p.empty() && !fs::exists(p); p = p.parent_path()) {
+      created_top_ = p;
+      if (p == p.parent_path()) break;
+    }
     fs::create_directories(dir_);
-    created_dir_ = true;
   } else if (!fs::is_directory(dir_)) {
     throw fs::filesystem_error("the output path exists and is not a folder", dir_,
                                std::make_error_code(std::errc::not_a_directory));
   }
   try {
-    remove_abandoned_staging(dir_);
-    staging_ = dir_ / (kStagingPrefix + std::to_string(::getpid()));
     // The longest path a run uses is a result moved aside at commit (staging/.previous/name):
     // refused now if the system could not open it, not after the whole simulation.
-    if ((staging_ / ".previous" / kLongestResultName).native().size() >= PATH_MAX)
+    const fs::path longest =
+        dir_ / (std::string(kStagingPrefix) + "XXXXXX") / ".previous" / kLongestResultName;
+    if (longest.native().size() >= PATH_MAX)
       throw fs::filesystem_error("the output path is too long for the files a run writes in it",
                                  dir_, std::make_error_code(std::errc::filename_too_long));
-    fs::remove_all(staging_);  // a left-over of a killed run with the same process id
-    fs::create_directory(staging_);
+    const FolderLock lock(dir_);
+    remove_abandoned_staging(dir_);
+    // A name of its own (not the process id: runs in other PID namespaces share those).
+    std::string name = (dir_ / (std::string(kStagingPrefix) + "XXXXXX")).native();
+    if (!::mkdtemp(name.data()))
+      throw fs::filesystem_error("cannot make a staging folder in the output folder", dir_,
+                                 std::error_code(errno, std::generic_category()));
+    staging_ = name;
+    FolderLock mine(staging_, false);  // held until the run commits or discards
+    staging_lock_ = mine.release();
   } catch (...) {
-    discard();  // the folder created above, if any, goes again
+    discard();  // the folders created above, if any, go again
     throw;
   }
 }
@@ -72,6 +128,9 @@ std::vector<fs::path> OutputFolder::commit(const std::vector<std::string>& stale
   for (const auto& e : fs::directory_iterator(staging_))
     if (e.is_regular_file()) names.push_back(e.path().filename());
   std::sort(names.begin(), names.end());
+  for (const auto& n : names) sync_file(staging_ / n);  // before the lock: it can take a while
+  // One commit in DIR at a time: two runs into one folder leave the last one's set, not a mix.
+  const FolderLock lock(dir_);
   // Every file of DIR this commit replaces or removes: first checked, then moved aside into the
   // staging folder, so that the new files go in together or, when one cannot, the old ones all
   // come back (a report held open by another program must not leave half a run behind).
@@ -111,10 +170,12 @@ std::vector<fs::path> OutputFolder::commit(const std::vector<std::string>& stale
     step(staging_ / n, dir_ / n, dir_ / n);
     installed.push_back(n);
   }
+  if (lock.fd() >= 0) ::fsync(lock.fd());  // the renames themselves
   std::vector<fs::path> out;
   for (const auto& n : names) out.push_back(dir_ / n);
   std::error_code ec;
   fs::remove_all(staging_, ec);
+  release_staging();
   done_ = true;
   return out;
 }
@@ -125,10 +186,22 @@ CommitError::CommitError(const fs::path& file, const std::string& why)
       file_(file) {}
 
 void OutputFolder::discard() noexcept {
-  std::error_code ec;
-  fs::remove_all(staging_, ec);
-  if (created_dir_ && fs::is_empty(dir_, ec) && !ec) fs::remove(dir_, ec);
   done_ = true;
+  std::error_code ec;
+  if (!staging_.empty()) fs::remove_all(staging_, ec);
+  release_staging();
+  if (created_top_.empty()) return;
+  // The folders this run created, from DIR up, each only while empty (another run may have
+  // begun in one): under DIR's lock, so that none is taken from under a run setting up in it.
+  const FolderLock lock(dir_);
+  for (fs::path p = dir_;; p = p.parent_path()) {
+    if (!fs::remove(p, ec) || ec || p == created_top_ || p == p.parent_path()) break;
+  }
+}
+
+void OutputFolder::release_staging() noexcept {
+  if (staging_lock_ >= 0) ::close(staging_lock_);
+  staging_lock_ = -1;
 }
 
 }  // namespace pierre::io

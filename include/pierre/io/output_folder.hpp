@@ -1,9 +1,11 @@
-// Atomic output: a run writes into a staging folder inside the output folder
-// (`DIR/.pierre-partial-<pid>/`) and moves each file into DIR only once the run has succeeded
-// (commit). Without a commit — an exception, a failed sink — the destructor removes the
-// staging folder, and DIR too when this object created it and it is left empty, so a failed
-// run leaves nothing behind. The staging folders of killed runs (their process gone) are taken
-// away by the next run in the same folder.
+// Atomic output: a run writes into a staging folder of its own inside the output folder
+// (`DIR/.pierre-partial-XXXXXX/`, locked with flock while the run lives) and moves each file
+// into DIR only once the run has succeeded (commit). Without a commit — an exception, a failed
+// sink — the destructor removes the staging folder, and the folders this object created for
+// DIR when they are left empty, so a failed run leaves nothing behind. The staging folders of
+// killed runs (no lock on them) are taken away by the next run in the same folder. Runs into
+// one DIR at the same time commit one after the other (a lock on DIR): the last one's files
+// are there as a set. Files are synced to the disk before they are renamed into place.
 #pragma once
 
 #include <filesystem>
@@ -27,7 +29,8 @@ class CommitError : public std::runtime_error {
 class OutputFolder {
  public:
   // Creates DIR (and its parents) when missing, then the staging folder. Throws
-  // std::filesystem::filesystem_error when DIR cannot be created or is not a folder.
+  // std::filesystem::filesystem_error when DIR cannot be created, is not a folder, cannot be
+  // written in, or is too long a path for the files of a run.
   explicit OutputFolder(std::filesystem::path dir);
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
@@ -47,8 +50,11 @@ class OutputFolder {
   void discard() noexcept;
 
  private:
+  void release_staging() noexcept;
+
   std::filesystem::path dir_, staging_;
-  bool created_dir_ = false;
+  std::filesystem::path created_top_;  // the topmost folder created for DIR; empty: none
+  int staging_lock_ = -1;              // the staging folder, flock'ed while the run lives
   bool done_ = false;
 };
 

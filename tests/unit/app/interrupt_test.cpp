@@ -46,9 +46,15 @@ class Interrupt : public pierre::test::PierreCli {
     const int rc = posix_spawn(&pid, bin.c_str(), &fa, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&fa);
     if (rc != 0) return -2;
-    const fs::path staging = out / (".pierre-partial-" + std::to_string(pid));
-    for (int i = 0; i < 3000 && !fs::exists(staging); ++i) std::this_thread::sleep_for(10ms);
-    staged_ = fs::exists(staging);
+    // Its staging folder (a name of its own: .pierre-partial-XXXXXX).
+    auto staging = [&] {
+      std::error_code ec;
+      for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().filename().string().rfind(".pierre-partial-", 0) == 0) return true;
+      return false;
+    };
+    for (int i = 0; i < 3000 && !staging(); ++i) std::this_thread::sleep_for(10ms);
+    staged_ = staging();
     std::this_thread::sleep_for(200ms);  // into the simulation
     ::kill(pid, sig);
     int status = 0;

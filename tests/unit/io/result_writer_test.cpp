@@ -2,8 +2,14 @@
 // converted (J → kJ), empty first-impact cells, CSV quoting; the samples kept for the
 // statistics; summary.json; the atomic output folder.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -265,26 +271,83 @@ TEST(OutputFolder, CommitIsAllOrNothing) {
 }
 
 // A run killed outright (kill -9, out of memory) cannot take its staging folder away: the next
-// run in the folder does, when that process is gone. A run still going keeps its own.
+// run in the folder does, as nothing holds its lock. A run still going (its lock held, here by
+// this test, whatever its process id or PID namespace) keeps its own.
 TEST(OutputFolder, TheStagingOfAKilledRunIsTakenAway) {
   TempDir dir;
   const auto out = dir.path() / "out";
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ASSERT_GT(child, 0);
-  ::waitpid(child, nullptr, 0);  // gone: its process id is free
-  const auto dead = out / (".pierre-partial-" + std::to_string(child));
-  const auto alive = out / (".pierre-partial-" + std::to_string(::getppid()));
+  const auto dead = out / ".pierre-partial-dead01";
+  const auto alive = out / ".pierre-partial-alive1";
   for (const auto& p : {dead, alive}) {
     std::filesystem::create_directories(p);
     std::ofstream(p / "trajectories.csv") << "partial\n";
   }
+  const int held = ::open(alive.c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(held, 0);
+  ASSERT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
   {
     io::OutputFolder f(out);
     f.commit();
   }
+  ::close(held);
   EXPECT_FALSE(std::filesystem::exists(dead));
   EXPECT_TRUE(std::filesystem::exists(alive / "trajectories.csv"));
+}
+
+// Two runs into one folder at once, here in one process (as two runs with the same process id
+// in two containers): each has its own staging folder, and neither takes the other's away.
+// Before, the staging folder was named by the process id and the second run emptied the first's.
+TEST(OutputFolder, TwoRunsAtOnceKeepTheirOwnStaging) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  io::OutputFolder a(out);
+  std::ofstream(a.staged("x.csv")) << "a\n";
+  io::OutputFolder b(out);
+  std::ofstream(b.staged("x.csv")) << "b\n";
+  EXPECT_NE(a.staging(), b.staging());
+  EXPECT_EQ(read_file(a.staged("x.csv")), "a\n");
+  a.commit();
+  EXPECT_EQ(read_file(out / "x.csv"), "a\n");
+  b.commit();
+  EXPECT_EQ(read_file(out / "x.csv"), "b\n");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), {}), 1);
+}
+
+// A commit waits while another run commits into the same folder (its lock on the folder, here
+// held by the test), so the two sets cannot interleave file by file.
+TEST(OutputFolder, ACommitWaitsForAnotherRunsCommit) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  io::OutputFolder f(out);
+  std::ofstream(f.staged("x.csv")) << "new\n";
+  const int held = ::open(out.c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(held, 0);
+  ASSERT_EQ(::flock(held, LOCK_EX), 0);
+  std::atomic<bool> committed{false};
+  std::thread t([&] {
+    f.commit();
+    committed = true;
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_FALSE(committed.load());  // cannot have gone on while the lock is held
+  EXPECT_FALSE(std::filesystem::exists(out / "x.csv"));
+  ::close(held);  // the other commit is done
+  t.join();
+  EXPECT_TRUE(committed.load());
+  EXPECT_EQ(read_file(out / "x.csv"), "new\n");
+}
+
+// A run that fails takes away every folder it created for DIR, not only DIR itself.
+TEST(OutputFolder, AFailedRunTakesAwayTheFoldersItCreated) {
+  TempDir dir;
+  const auto out = dir.path() / "new" / "a" / "b";
+  std::filesystem::create_directories(dir.path() / "kept");
+  {
+    io::OutputFolder f(out);
+    std::ofstream(f.staged("x.csv")) << "x\n";
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "new"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "kept"));
 }
 
 TEST(OutputFolder, OutputPathThatIsAFileIsRefused) {
