@@ -399,7 +399,15 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     const TomlTable t(top.file(), *node.as_table(), fmt::format("{}[{}]", top.field("sources"), i), line_of(node),
                       {"name", "x", "z", "vx", "vz", "omega"});
     sim::Source s;
-    s.name = t.string("name").value_or(fmt::format("S{}", i + 1));
+    const auto given = t.string("name");
+    s.name = given.value_or(fmt::format("S{}", i + 1));
+    // The source column of trajectories.csv and the report name it: one name, one source.
+    for (std::size_t k = 0; k < sc.sources.size(); ++k)
+      t.check("name", sc.sources[k].name != s.name,
+              given ? fmt::format("a name not used by another source ({}[{}] has it)",
+                                  top.field("sources"), k)
+                    : fmt::format("a name for this source: unnamed it would be {}, the name of "
+                                  "{}[{}]", s.name, top.field("sources"), k));
     s.position.x = t.required_number("x", "a number (m)");
     t.check("x", s.position.x >= sc.profile.x_min() && s.position.x <= sc.profile.x_max(),
             "an x " + extent(sc.profile));

@@ -32,7 +32,9 @@ double kolmogorov_survival(double x) {
   if (x <= 0) return 1.0;
   if (std::isinf(x)) return 0.0;
   const boost::math::kolmogorov_smirnov_distribution<double, MathPolicy> k(1.0);
-  return std::clamp(boost::math::cdf(boost::math::complement(k, x)), 0.0, 1.0);
+  // + 0.0 turns a −0 from the far tail into 0: clamp keeps −0 (it is not less than 0), and a
+  // p-value printed "-0" reads as a fault.
+  return std::clamp(boost::math::cdf(boost::math::complement(k, x)), 0.0, 1.0) + 0.0;
 }
 
 }  // namespace

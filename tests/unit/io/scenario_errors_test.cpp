@@ -137,6 +137,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"blocks_csv_mass_absurd", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "id,mass\na,1e300\n"}}, "b.csv", 2, "mass", "1e300"},
         Case{"source_speed_absurd", {{23, "vx = 1e200"}}, {}, "s.toml", 23, "sources[0].vx", "1e+200"},
         Case{"source_spin_absurd", {{23, "omega = -2e4"}}, {}, "s.toml", 23, "sources[0].omega", "-20000"},
+        // Two sources of one name (the source column of trajectories.csv would not tell them
+        // apart), also an unnamed one whose S2 another source took.
+        Case{"source_name_twice", {{23, "name = \"crest\"\n[[sources]]\nname = \"crest\"\nx = 2.0\nz = 11.0"}}, {}, "s.toml", 25, "sources[1].name", "\"crest\""},
+        Case{"source_default_name_taken", {{23, "name = \"S2\"\n[[sources]]\nx = 2.0\nz = 11.0"}}, {}, "s.toml", 24, "sources[1].name", "nothing"},
         Case{"mass_zero", {{18, "mass = 0.0"}}, {}, "s.toml", 18, "blocks.table[0].mass", "0.0"},
         Case{"volume_zero", {{18, "volume = 0.0"}}, {}, "s.toml", 18, "blocks.table[0].volume", "0.0"},
         Case{"density_negative", {{16, "[blocks]\ndensity = -2650.0"}}, {}, "s.toml", 17, "blocks.density", "-2650.0"},

@@ -41,6 +41,17 @@ TEST(KolmogorovSmirnov, PValueAtClassicalCriticalValues) {
   EXPECT_EQ(kolmogorov_p_value(0.0, 10), 1.0);
 }
 
+// Far in the tail (a million crossings and a poor fit) the p-value underflows to zero: +0, not
+// −0, which the report and the console would print as "-0".
+TEST(KolmogorovSmirnov, FarTailPValueIsPlusZero) {
+  for (const double d : {0.05, 0.2, 0.5}) {
+    const double p = kolmogorov_p_value(d, 1e6);
+    EXPECT_EQ(p, 0.0) << d;
+    EXPECT_FALSE(std::signbit(p)) << d;
+    EXPECT_FALSE(std::signbit(kolmogorov_p_value_stephens(d, 1e6))) << d;
+  }
+}
+
 TEST(KolmogorovSmirnov, TrueDistributionIsNotRejectedShiftedOneIs) {
   const double k = 1.37, lambda = 1.55;
   const auto cdf = [&](double x) { return x <= 0 ? 0.0 : 1 - std::exp(-std::pow(x / lambda, k)); };
