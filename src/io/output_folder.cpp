@@ -5,8 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <climits>
 #include <cerrno>
+#include <climits>
 #include <system_error>
 
 namespace pierre::io {
@@ -31,8 +31,7 @@ class FolderLock {
     int r;
     do r = ::flock(fd_, LOCK_EX | (wait ? 0 : LOCK_NB));
     while (r != 0 && errno == EINTR && wait);
-    if (r == 0) locked_ = true;
-    else busy_ = errno == EWOULDBLOCK;
+    locked_ = r == 0;
   }
   ~FolderLock() {
     if (fd_ >= 0) ::close(fd_);  // closing releases the lock
@@ -40,7 +39,6 @@ class FolderLock {
   FolderLock(const FolderLock&) = delete;
   FolderLock& operator=(const FolderLock&) = delete;
   bool locked() const { return locked_; }
-  bool busy() const { return busy_; }  // another holds it
   int fd() const { return fd_; }
   int release() {  // the descriptor, still locked, for the caller to close
     const int fd = fd_;
@@ -50,7 +48,7 @@ class FolderLock {
 
  private:
   int fd_;
-  bool locked_ = false, busy_ = false;
+  bool locked_ = false;
 };
 
 // The staging folders of runs that ended without taking them away (kill -9, out of memory,
