@@ -2,7 +2,9 @@
 // parses, dispatches and turns every failure into a message and an exit code:
 // help and --version 0, usage errors and bad input 2, anything unexpected 3.
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <string>
@@ -58,8 +60,19 @@ int main(int argc, char** argv) {
       app.exit(e);
       return kExitInput;
     }
-    for (std::size_t i = 0; i < commands.size(); ++i)
-      if (subs[i]->parsed()) return commands[i]->run();
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+      if (!subs[i]->parsed()) continue;
+      const int code = commands[i]->run();
+      // What the command printed must have reached stdout (a full disk, a closed pipe): else a
+      // script reading it would take a lost verdict for a given one.
+      if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fputs(("error: cannot write to standard output: " + std::string(std::strerror(errno)) +
+                    "\n").c_str(),
+                   stderr);
+        return kExitInternal;
+      }
+      return code;
+    }
     return kExitInput;
   } catch (const pierre::io::InputError& e) {
     std::fflush(stdout);

@@ -417,4 +417,20 @@ TEST_F(Cli, BlocksLeavingTheProfileAreNoted) {
   EXPECT_EQ(r.out.find("cut off by"), std::string::npos) << r.out;  // no limit was reached
 }
 
+// A verdict that never reached stdout (a full disk, here /dev/full) is not a success: exit 3
+// and a message on stderr, not 0 with the output lost.
+TEST_F(Cli, OutputThatCannotBeWrittenIsAnError) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  const fs::path e = dir_ / "stderr.txt";
+  const std::string cmd = std::string("'") + PIERRE_BINARY + "' validate " + q(kScenario) +
+                          " >/dev/full 2>" + q(e);
+  const int st = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), 3);
+  EXPECT_NE(slurp(e).find("cannot write to standard output"), std::string::npos)
+      << slurp(e);
+  // The same command into a file that can be written: 0.
+  EXPECT_EQ(pierre("validate " + q(kScenario)).code, 0);
+}
+
 }  // namespace
