@@ -193,7 +193,7 @@ void OutputFolder::discard() noexcept {
   // begun in one): under DIR's lock, so that none is taken from under a run setting up in it.
   const FolderLock lock(dir_);
   for (fs::path p = dir_;; p = p.parent_path()) {
-    if (!fs::remove(p, ec) || ec || p == created_top_ || p == p.parent_path()) break;
+    if (!fs::remove(p, ec) || p == created_top_ || p == p.parent_path()) break;
   }
 }
 

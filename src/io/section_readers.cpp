@@ -402,12 +402,16 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     const auto given = t.string("name");
     s.name = given.value_or(fmt::format("S{}", i + 1));
     // The source column of trajectories.csv and the report name it: one name, one source.
-    for (std::size_t k = 0; k < sc.sources.size(); ++k)
-      t.check("name", sc.sources[k].name != s.name,
-              given ? fmt::format("a name not used by another source ({}[{}] has it)",
-                                  top.field("sources"), k)
-                    : fmt::format("a name for this source: unnamed it would be {}, the name of "
-                                  "{}[{}]", s.name, top.field("sources"), k));
+    // (The message is made only for a clash: many sources must not cost a text per pair.)
+    const auto clash = std::find_if(sc.sources.begin(), sc.sources.end(),
+                                    [&](const sim::Source& o) { return o.name == s.name; });
+    if (clash != sc.sources.end()) {
+      const auto k = clash - sc.sources.begin();
+      t.fail("name", given ? fmt::format("a name not used by another source ({}[{}] has it)",
+                                         top.field("sources"), k)
+                           : fmt::format("a name for this source: unnamed it would be {}, the "
+                                         "name of {}[{}]", s.name, top.field("sources"), k));
+    }
     s.position.x = t.required_number("x", "a number (m)");
     t.check("x", s.position.x >= sc.profile.x_min() && s.position.x <= sc.profile.x_max(),
             "an x " + extent(sc.profile));
