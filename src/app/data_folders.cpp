@@ -20,6 +20,19 @@ struct DataFolder {
   std::vector<std::string> searched;  // every place looked at, in order, for error messages
 };
 
+// A folder found under the working folder, named relative to it: the report records the rules
+// files' paths, and a firm whose pipeline runs each job in a fresh workspace (a different
+// absolute path each time) then gets the same bytes from the same inputs. Anywhere else, the
+// path as found.
+fs::path as_shown(const fs::path& found) {
+  std::error_code ec;
+  const fs::path cwd = fs::current_path(ec);
+  if (ec || !found.is_absolute()) return found;
+  const fs::path rel = found.lexically_normal().lexically_relative(cwd.lexically_normal());
+  if (rel.empty() || rel == "." || *rel.begin() == "..") return found;
+  return rel;
+}
+
 DataFolder find(const char* name, const char* env_var, const char* probe) {
   DataFolder f;
   if (const char* env = std::getenv(env_var); env && *env) {
@@ -43,7 +56,7 @@ DataFolder find(const char* name, const char* env_var, const char* probe) {
   for (const fs::path& c : candidates) {
     f.searched.push_back(c.string());
     if (fs::is_regular_file(c / probe, ec)) {
-      f.path = c;
+      f.path = as_shown(c);
       return f;
     }
   }

@@ -13,7 +13,8 @@ namespace pierre::app {
 
 // The rules folder: `option` (--rules) when given; else $PIERRE_RULES when set; else the first
 // of <executable>/../rules, <executable>/../share/pierre/rules, ./rules and the source tree's
-// rules/ (when built from source) that holds materials.toml (the last when none does).
+// rules/ (when built from source) that holds materials.toml (the last when none does). A folder
+// found under the working folder is named relative to it (the report records the paths).
 std::filesystem::path rules_folder(const std::string& option);
 
 // The report layout, templates/report.toml, with templates/ looked for the same way

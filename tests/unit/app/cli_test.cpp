@@ -231,6 +231,31 @@ TEST_F(Cli, SameSeedSameFiles) {
   EXPECT_NE(slurp(dir_ / "a" / "trajectories.csv"), slurp(dir_ / "c" / "trajectories.csv"));
 }
 
+// A firm's pipeline runs each job in a fresh workspace that holds pierre, its rules and
+// templates and the scenario, from the workspace's root: two workspaces at different absolute
+// paths give the same bytes, because the rules files are recorded relative to the working
+// folder. (They were recorded by absolute path, so no two jobs' reports were the same.)
+TEST_F(Cli, TwoWorkspacesGiveTheSameReport) {
+  for (const char* job : {"job-1", "job-22"}) {
+    const fs::path ws = dir_ / job;
+    fs::create_directories(ws / "bin");
+    fs::copy_file(PIERRE_BINARY, ws / "bin" / "pierre");
+    fs::permissions(ws / "bin" / "pierre", fs::perms::owner_all);
+    for (const char* d : {"rules", "templates"})
+      fs::copy(fs::path(PIERRE_SOURCE_DIR) / d, ws / d, fs::copy_options::recursive);
+    fs::copy(fs::path(kScenario).parent_path(), ws / "input", fs::copy_options::recursive);
+    const std::string cmd = "cd " + q(ws) +
+                            " && SOURCE_DATE_EPOCH=1700000000 bin/pierre run input/scenario.toml "
+                            "--quiet --throws 20 --out out 2>" + q(ws / "err.txt");
+    const int st = std::system(cmd.c_str());
+    ASSERT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 0) << slurp(ws / "err.txt");
+    const auto j = nlohmann::json::parse(slurp(ws / "out" / "summary.json"));
+    EXPECT_EQ(j["scenario"]["materials_file"], "rules/materials.toml") << job;
+  }
+  for (const char* f : {"summary.json", "report.xlsx", "trajectories.csv"})
+    EXPECT_EQ(slurp(dir_ / "job-1" / "out" / f), slurp(dir_ / "job-22" / "out" / f)) << f;
+}
+
 // A rerun that cannot replace one result (here a folder by its name; a report held open in
 // Excel on Windows fails the same way) exits 2, names the file, and leaves every earlier result
 // as it was. It exited 3 with some files of the new run and some of the old.
