@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -240,5 +241,39 @@ TEST(ImpactLaw, RecordedSlopeAngleIsTheDescentInTheTravelDirection) {
       EXPECT_NEAR(det.slope_deg, expect, 1e-12) << descent << " " << vx;
       EXPECT_FALSE(std::signbit(det.slope_deg) && det.slope_deg == 0) << descent << " " << vx;
     }
+  }
+}
+
+// Eq 6.6 inside the impact: tan θ = θ_scale · X · f_size with f_size = max(0.3, 1.36 − 0.3 D),
+// D the block's equivalent diameter. (Every other impact test turns the size reduction off, and
+// dropping f_size from the impact passed every test: Roughness.SizeFactorFollowsEq66AndFloorsAt03
+// checks the factor alone.) Uniform roughness makes X the draw itself; by hand, for ρ = 2650:
+// 50 kg: D = 0.330 m, f_size = 1.261; 2650 kg: D = 1.241 m, 0.988; 20 t: D = 2.434 m, 0.630;
+// 200 t: D = 5.24 m, below the floor: 0.3.
+TEST(ImpactLaw, RoughnessAngleIsScaledByTheBlockSizeFactor) {
+  RoughnessModel rm;
+  rm.distribution = RoughnessDistribution::uniform;
+  rm.size_reduction = true;
+  const ImpactLaw law(rm, 0.25, g);
+  const Material m = pierre::test::make_material(15, 50, 0.8);
+  const Segment s = segment_at(30);
+  const Vec2 v{6, -5};
+  const double u = 0.6;
+  const struct {
+    double mass, f_size;
+  } cases[] = {{50, 1.261}, {2650, 0.988}, {20000, 0.630}, {200000, 0.3}};
+  for (const auto& c : cases) {
+    const Block b = pierre::test::make_block(c.mass);
+    const double d = 2 * std::cbrt(3 * c.mass / (4 * M_PI * 2650));
+    const double f_size = std::max(0.3, 1.36 - 0.3 * d);
+    EXPECT_NEAR(f_size, c.f_size, 1e-3) << c.mass;  // the hand figures above
+    const double tan_theta = 0.8 * u * f_size;
+    ImpactDetail det;
+    law.resolve(v, 0.0, s, law.surface(m), law.block(b), ImpactDraws{u, 0.5, false}, &det);
+    EXPECT_NEAR(det.roughness_deg, std::atan(tan_theta) * 180 / M_PI, 1e-12) << c.mass;
+    // and the plane really tilts by it: v_n' = v · (cos θ n − sin θ t̂), t̂ = d (travel forward).
+    const double th = std::atan(tan_theta);
+    EXPECT_NEAR(det.vn_in_rot, std::cos(th) * dot(v, s.n) - std::sin(th) * dot(v, s.d), 1e-12)
+        << c.mass;
   }
 }
