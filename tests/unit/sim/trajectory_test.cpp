@@ -465,3 +465,28 @@ TEST(Trajectory, SubdividingSegmentsIntoCollinearPiecesChangesNothing) {
   EXPECT_GE(same, 398) << same << " of 400 identical";
   RecordProperty("identical", same);
 }
+
+// model-2d.md §6: every trajectory draws from the stream of its global index, so the split of
+// the work into chunks changes nothing. (The threads test above uses one chunk size for every
+// run, and passed with every chunk restarting the streams or the source/block/throw keys at 0.)
+// Reference: each trajectory simulated on its own by index, outside the runner.
+TEST(Runner, ChunkSizeChangesNothingAndTrajectoryIIsTheStreamOfI) {
+  const Scenario s = slope_scenario();
+  const TrajectoryModel model(s);
+  ObservationTally tally({}, s.profile, false);
+  for (const std::uint32_t chunk : {1u, 7u, 199u, 1000u}) {
+    const auto r = run(s, 2, false, chunk);
+    ASSERT_EQ(r.trajectories.size(), 400u) << chunk;
+    for (std::uint64_t i = 0; i < r.trajectories.size(); ++i) {
+      const auto& a = r.trajectories[i];
+      const TrajectorySummary b = simulate_trajectory(model, i, tally, nullptr);
+      ASSERT_EQ(a.trajectory, i) << chunk;
+      ASSERT_EQ(a.block, b.block) << chunk << " " << i;
+      ASSERT_EQ(a.throw_index, b.throw_index) << chunk << " " << i;
+      ASSERT_EQ(a.mass, s.blocks.at(b.block).mass) << chunk << " " << i;
+      ASSERT_TRUE(same_bits(a.stop.x, b.stop.x) && same_bits(a.stop.z, b.stop.z)) << chunk << " " << i;
+      ASSERT_TRUE(same_bits(a.duration, b.duration)) << chunk << " " << i;
+      ASSERT_EQ(a.impacts, b.impacts) << chunk << " " << i;
+    }
+  }
+}
