@@ -490,3 +490,22 @@ TEST(Runner, ChunkSizeChangesNothingAndTrajectoryIIsTheStreamOfI) {
     }
   }
 }
+
+// model-2d.md §4: the maximum jump height is the largest over the whole trajectory. A block
+// released at rest H above level ground with no roughness bounces straight up and down, each
+// rebound lower (kinetic energy never increases at an impact, §7 test 5): its highest point
+// above the ground is where it started, H. (Keeping only the last arc's maximum passed every
+// test.)
+TEST(Trajectory, MaxJumpHeightIsTheHighestOfAllArcs) {
+  for (const double h : {4.0, 12.5}) {
+    auto level = test::make_profile({{0, 0}, {100, 0}});
+    // E_n = 50 m³/s², k_n = 0.5 there: a 1 m³ block dropped from 4 m (E_d = R v² = 48.7)
+    // rebounds at k_n ≈ 0.51, to about 1 m, well above the stop head 0.25 R = 0.155 m.
+    Scenario s = test::make_scenario(std::move(level), test::make_material(50, 50, 0.0),
+                                     {test::make_block(2650)}, {50, h}, 1);
+    const auto r = run(s, 1, true);
+    ASSERT_EQ(r.trajectories.size(), 1u);
+    ASSERT_GE(r.impacts.size(), 3u) << h;  // it bounced, so the last arc is not the first
+    EXPECT_NEAR(r.trajectories[0].max_jump_height, h, 1e-12 * h) << h;
+  }
+}
