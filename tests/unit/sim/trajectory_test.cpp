@@ -509,3 +509,22 @@ TEST(Trajectory, MaxJumpHeightIsTheHighestOfAllArcs) {
     EXPECT_NEAR(r.trajectories[0].max_jump_height, h, 1e-12 * h) << h;
   }
 }
+
+// model-2d.md §4: the maximum kinetic energy counts rotation, ½ m v² + ½ I ω² with
+// I = 2/5 m R². A block released H above level ground with spin ω₀ gains m g H in free fall
+// and keeps ω₀, and no impact adds energy (§7 test 5): the maximum is m g H + ½ I ω₀², at
+// the first contact. (Leaving the rotational part out of the maximum passed every test.)
+TEST(Trajectory, MaxEnergyIsTranslationalPlusRotational) {
+  const double h = 5.0, omega0 = 12.0, mass = 2650.0;
+  auto level = test::make_profile({{0, 0}, {100, 0}});
+  Scenario s = test::make_scenario(std::move(level), test::make_material(15, 50, 0.3),
+                                   {test::make_block(mass)}, {50, h}, 1);
+  s.sources[0].omega = omega0;
+  const auto r = run(s, 1);
+  ASSERT_EQ(r.trajectories.size(), 1u);
+  const double radius = std::cbrt(3 * mass / (4 * M_PI * 2650));  // 1 m³: 0.6204 m
+  const double rotational = 0.5 * 0.4 * mass * radius * radius * omega0 * omega0;
+  EXPECT_GT(rotational, 0.1 * mass * 9.81 * h);  // large enough to be seen
+  EXPECT_NEAR(r.trajectories[0].max_energy, mass * 9.81 * h + rotational,
+              1e-12 * (mass * 9.81 * h + rotational));
+}
