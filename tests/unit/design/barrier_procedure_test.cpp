@@ -438,3 +438,25 @@ TEST(BarrierProcedure, LargeSampleBootstrapsOnBinsDeterministicallyAndSaysSo) {
 }
 
 }  // namespace
+
+// design-checks.md §1 step 6 with γh ≠ 1: h_d = h_k γh, h_i = h_d + f, and step 8's interval of
+// h_i the image of h_k's. (Every other test of h_i used γh = 1, where using h_k for h_d, or
+// leaving γh out of the interval, passed.) Peila–Ronco with literature trajectories and low-
+// quality topography: γh = γTr γDp = 1.10 × 1.10 = 1.21; f = max(0.5 m, 0.5 · 1.2 m) = 0.6 m.
+TEST(BarrierProcedure, InterceptionHeightCarriesGammaHIntoTheValueAndItsInterval) {
+  auto s = spec();
+  s.data_quality = {{"trajectory", "literature"}, {"topography", "low"}, {"block_volume", "surveyed"}};
+  const auto out = design::design_barrier(s, test::peila_ronco_2009(), test::etag027(), sample(),
+                                          std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const auto& d = *out.design;
+  EXPECT_NEAR(d.gamma_h.value, 1.21, 1e-12);
+  EXPECT_NEAR(d.free_board, 0.6, 1e-12);
+  EXPECT_NEAR(d.h_d, 1.21 * d.h_k.value, 1e-12);
+  EXPECT_NEAR(d.h_i, 1.21 * d.h_k.value + 0.6, 1e-12);
+  ASSERT_TRUE(d.h_k.interval && d.h_i_interval);
+  // The map h ↦ 1.21 h + 0.6 is increasing and affine: it commutes with the type-7 percentiles.
+  EXPECT_NEAR(d.h_i_interval->lower, 1.21 * d.h_k.interval->lower + 0.6, 1e-12);
+  EXPECT_NEAR(d.h_i_interval->upper, 1.21 * d.h_k.interval->upper + 0.6, 1e-12);
+  EXPECT_NEAR(d.h_i_interval->estimate, d.h_i, 1e-12);
+}
