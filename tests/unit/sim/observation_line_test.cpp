@@ -2,6 +2,8 @@
 // (line order, whatever the order of the lines' x), and the first-crossing rule.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "pierre/sim/observation_line.hpp"
 #include "support/builders.hpp"
 
@@ -59,4 +61,37 @@ TEST(ObservationTally, ArcsAreHalfOpenAndEveryCrossingIsKeptWhenAsked) {
   tally.flight({15, 5}, {0, 3}, 0.0, 0.0, 1.0, 9.81);  // vertical: crosses nothing
   tally.flight({12, 5}, {1, 0}, 0.0, 0.0, 1.0, 0.0);   // between lines
   EXPECT_TRUE(out.empty());
+}
+
+// Sliding pieces are half-open as flight arcs are: a line at the vertex where one slide ends and
+// the next begins (a line placed at a profile vertex, which users do) is crossed once, not twice,
+// when every crossing is kept. (Closing the forward slide at its start passed every test.) The
+// crossing time solves w0 τ + a τ²/2 = x_c − x0 by hand: from x = 0 at 10 m/s decelerating at
+// 2 m/s², the line at 10 is reached at τ = 5 − √15 s at 2√15 m/s, the line at 20 at 5 − √5 s at
+// 2√5 m/s.
+TEST(ObservationTally, SlidesAreHalfOpenAndCrossedWhereTheMotionSaysSo) {
+  const auto prof = test::make_profile({{0, 0}, {100, 0}});
+  ObservationTally tally(kUnsorted, prof, true);
+  std::vector<Crossing> out;
+  tally.output(&out);
+  tally.begin(0, 0, 100.0, 2.0);
+  tally.slide({0, 0}, {1, 0}, 10.0, 0.0, 0.0, 0.0, 2.0);  // ends on the line at 20: counted
+  tally.slide({20, 0}, {1, 0}, 10.0, 0.0, 0.0, 2.0, 1.0);  // starts there: not again; reaches 30
+  EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{1, 2, 3, 0}));
+  out.clear();
+  tally.slide({30, 0}, {1, 0}, -10.0, 0.0, 0.0, 3.0, 2.5);  // back from 30 (excluded) to 5
+  EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{1, 2, 3}));
+  for (const auto& c : out) {
+    EXPECT_EQ(c.direction, -1);
+    EXPECT_TRUE(c.sliding);
+    EXPECT_EQ(c.height, 0.0);
+  }
+  out.clear();
+  tally.slide({0, 0}, {1, 0}, 10.0, -2.0, 0.0, 0.0, 5.0);  // comes to rest at 25 after 5 s
+  ASSERT_EQ(lines_of(out), (std::vector<std::uint32_t>{1, 2, 3}));
+  EXPECT_NEAR(out[0].time, 5 - std::sqrt(15.0), 1e-12);
+  EXPECT_NEAR(out[0].velocity.x, 2 * std::sqrt(15.0), 1e-12);
+  EXPECT_NEAR(out[1].time, 5 - std::sqrt(5.0), 1e-12);
+  EXPECT_NEAR(out[1].velocity.x, 2 * std::sqrt(5.0), 1e-12);
+  EXPECT_NEAR(out[1].translational_energy, 0.5 * 100.0 * 20.0, 1e-9);
 }
