@@ -528,3 +528,27 @@ TEST(Trajectory, MaxEnergyIsTranslationalPlusRotational) {
   EXPECT_NEAR(r.trajectories[0].max_energy, mass * 9.81 * h + rotational,
               1e-12 * (mass * 9.81 * h + rotational));
 }
+
+// The mirror image of the 45° test: the slope rises along the vertex order, so the block slides
+// towards −x, against the main direction. It launches at the maximum sliding speed after
+// s = v²/2a, as forwards (the launch time is (−5 − w)/a in that direction: writing +5 launched
+// it at once, from rest, and passed every test).
+TEST(Trajectory, SlidingTowardsTheFirstVertexLaunchesAtTheMaximumSlidingSpeedToo) {
+  auto prof = test::make_profile({{0, 0}, {400, 0}, {600, 200}});
+  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3, 30),
+                                   {test::make_block(1000)}, {590, 150}, 20);
+  const auto r = run(s, 1, true);
+  for (const auto& t : r.trajectories) {
+    EXPECT_NEAR(t.start.z, 190.0, 1e-9);  // placed on the ground
+    EXPECT_LT(t.stop.x, 400.0);           // went all the way down
+    EXPECT_NE(t.stop_reason, StopReason::numerical);
+  }
+  const double a = 9.81 * (std::sin(M_PI / 4) - std::cos(M_PI / 4) * std::tan(M_PI / 6));
+  const double s_launch = 25.0 / (2 * a);
+  ASSERT_FALSE(r.impacts.empty());
+  const auto& first = r.impacts.front();
+  EXPECT_EQ(first.index, 0u);
+  EXPECT_NEAR(first.time, 5.0 / a, 1e-9);
+  EXPECT_NEAR(first.position.x, 590 - s_launch / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(std::hypot(first.detail.vt_in, first.detail.vn_in), 5.0, 1e-9);
+}
