@@ -552,3 +552,22 @@ TEST(Trajectory, SlidingTowardsTheFirstVertexLaunchesAtTheMaximumSlidingSpeedToo
   EXPECT_NEAR(first.position.x, 590 - s_launch / std::sqrt(2.0), 1e-9);
   EXPECT_NEAR(std::hypot(first.detail.vt_in, first.detail.vn_in), 5.0, 1e-9);
 }
+
+// model-2d.md §2 (thesis §3.2.2): a block launches when its speed *exceeds* the maximum
+// sliding speed. One started sliding at exactly 5 m/s on level ground (φ = 30°) slides: it
+// decelerates at g tan φ and stops by friction after v²/(2 g tan φ) = 2.207 m, with no impact.
+// (Launching at a speed ≥ the maximum instead of > passed every test.)
+TEST(Trajectory, SlidingAtExactlyTheMaximumSlidingSpeedDoesNotLaunch) {
+  auto level = test::make_profile({{0, 0}, {100, 0}});
+  Scenario s = test::make_scenario(std::move(level), test::make_material(15, 50, 0.3, 30),
+                                   {test::make_block(1000)}, {50, 0}, 1);
+  s.sources[0].velocity = {5.0, 0.0};
+  const auto r = run(s, 1, true);
+  ASSERT_EQ(r.trajectories.size(), 1u);
+  const auto& t = r.trajectories[0];
+  EXPECT_EQ(t.impacts, 0u);
+  EXPECT_EQ(t.stop_reason, StopReason::friction);
+  const double mu_g = 9.81 * std::tan(M_PI / 6);
+  EXPECT_NEAR(t.stop.x, 50 + 25 / (2 * mu_g), 1e-9);
+  EXPECT_NEAR(t.duration, 5 / mu_g, 1e-9);
+}
