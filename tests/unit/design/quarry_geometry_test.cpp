@@ -137,5 +137,26 @@ TEST(QuarryGeometry, Failures) {
   EXPECT_FALSE(f);
 }
 
+// design-checks.md §2: the floor is where every later segment is *flatter* than the floor angle.
+// A segment exactly at the floor angle is not floor: with a floor angle of 45°, a 1:1 segment
+// (atan2(10, 10) is 45° to the last bit) belongs to the face, and the toe is at its foot.
+// (Treating "at the angle" as flat passed every test.)
+TEST(QuarryGeometry, ASegmentAtExactlyTheFloorAngleIsNotFloor) {
+  const auto p = test::make_profile({{0, 40}, {10, 10}, {20, 0}, {100, 0}});
+  QuarryGeometryInput in;
+  in.floor_angle_deg = 45;
+  const auto g = quarry_geometry(p, in);
+  ASSERT_TRUE(g) << g.error;
+  EXPECT_EQ(g->toe_vertex, 2u);
+  EXPECT_DOUBLE_EQ(g->toe.x, 20);
+  EXPECT_DOUBLE_EQ(g->height, 40);
+  // Just steeper than the segment, the floor angle makes it floor.
+  in.floor_angle_deg = 45.001;
+  const auto h = quarry_geometry(p, in);
+  ASSERT_TRUE(h) << h.error;
+  EXPECT_EQ(h->toe_vertex, 1u);
+  EXPECT_DOUBLE_EQ(h->height, 30);
+}
+
 }  // namespace
 }  // namespace pierre::design
