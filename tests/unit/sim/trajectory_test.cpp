@@ -571,3 +571,21 @@ TEST(Trajectory, SlidingAtExactlyTheMaximumSlidingSpeedDoesNotLaunch) {
   EXPECT_NEAR(t.stop.x, 50 + 25 / (2 * mu_g), 1e-9);
   EXPECT_NEAR(t.duration, 5 / mu_g, 1e-9);
 }
+
+// model-2d.md §2: from rest the block stays when tan β ≤ tan φ, equality included. On level,
+// frictionless ground (φ = 0, which a scenario may give) that is 0 ≤ 0: a block placed there at
+// rest stays where it is, stopped by friction at once. (A strict < passed every test; with it
+// the block was "slid" zero distance to the segment's start vertex and left the profile there.)
+TEST(Trajectory, ABlockAtRestOnFrictionlessLevelGroundStaysPut) {
+  auto level = test::make_profile({{0, 0}, {100, 0}});
+  Scenario s = test::make_scenario(std::move(level), test::make_material(15, 50, 0.3, 0.0),
+                                   {test::make_block(1000)}, {50, 0}, 1);
+  const auto r = run(s, 1);
+  ASSERT_EQ(r.trajectories.size(), 1u);
+  const auto& t = r.trajectories[0];
+  EXPECT_EQ(t.stop_reason, StopReason::friction);
+  EXPECT_EQ(t.impacts, 0u);
+  EXPECT_EQ(t.duration, 0.0);
+  EXPECT_EQ(t.stop.x, 50.0);
+  EXPECT_EQ(t.stop.z, 0.0);
+}
