@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -168,6 +169,41 @@ TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
   EXPECT_EQ(b["crossings"].get<std::uint64_t>(), reached);
   EXPECT_EQ(b["failed_check"], "reach");
   EXPECT_NE(b["reason"].get<std::string>().find("fewer than two"), std::string::npos) << b["reason"];
+}
+
+// design-checks.md §1 step 1: the energy a barrier is designed on is the translational energy
+// ½ m v² of each first crossing, with the block's own mass (not the rotational energy, nor their
+// sum). Recomputed here from crossings.csv (mass and speed, 9 significant digits): the mean over
+// the barrier's line equals the mean of the design's energy sample. (Feeding the barrier the
+// rotational energies passed every test.)
+TEST_F(Check, TheBarrierEnergySampleIsHalfMVSquaredOfTheCrossings) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " + kData + "pass.toml --out '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  const auto j = summary(out);
+  const auto& b = j["barriers"][0];
+  const std::string line = b["line"].get<std::string>();
+  std::istringstream csv(slurp(out / "crossings.csv"));
+  std::string row;
+  std::getline(csv, row);  // the header: trajectory,line,chainage_m,block_id,mass_kg,time_s,
+                           // direction,vx_m_s,vz_m_s,speed_m_s,...
+  ASSERT_EQ(row.rfind("trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,speed_m_s,", 0), 0u) << row;
+  double sum = 0;
+  std::size_t n = 0;
+  while (std::getline(csv, row)) {
+    std::vector<std::string> f;
+    std::stringstream ss(row);
+    for (std::string cell; std::getline(ss, cell, ',');) f.push_back(cell);
+    ASSERT_GE(f.size(), 10u) << row;
+    if (f[1] != line) continue;
+    const double mass = std::stod(f[4]), speed = std::stod(f[9]);
+    sum += 0.5 * mass * speed * speed / 1000.0;
+    ++n;
+  }
+  ASSERT_EQ(n, b["crossings"].get<std::size_t>());
+  ASSERT_GT(n, 100u);
+  const double mean = b["fits"]["translational_energy_kJ"]["mean"].get<double>();
+  EXPECT_NEAR(mean, sum / static_cast<double>(n), 1e-7 * mean);
 }
 
 TEST_F(Check, SameSeedSameChecks) {
