@@ -16,6 +16,8 @@ using geometry::VertexTurn;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // A contact this close to a segment end is at the vertex: its neighbour is departed from too.
 constexpr double kVertexSlack = 1e-9;
+// Points drawn along one flight arc at most (see advance_flight).
+constexpr double kMaxPathPointsPerArc = 1000;
 
 // True when no value is infinite or NaN: x − x is 0 for a finite x and NaN otherwise, so one
 // test of the sum does for all of them.
@@ -186,7 +188,11 @@ class Integrator {
   void advance_flight(double tau, int seg_from, int seg_to) {
     if (!tally_.empty()) tally_.flight(p_, v_, omega_, t_, tau, g_);
     if (path_) {
-      const int n = std::max(1, static_cast<int>(std::ceil(tau / path_step_)));
+      // path_step_ apart, but no more than kMaxPathPointsPerArc: a drawing needs no more, and a
+      // flight of days (a tiny gravity with a long max_time, both valid) asked for billions of
+      // points (bad_alloc), or for more than an int holds (undefined behaviour).
+      const double steps = std::ceil(tau / path_step_);
+      const int n = steps > 1 ? static_cast<int>(std::min(steps, kMaxPathPointsPerArc)) : 1;
       for (int k = 1; k <= n; ++k) {
         const double t = tau * k / n;
         path_->push_back({p_.x + v_.x * t, p_.z + v_.z * t - 0.5 * g_ * t * t});

@@ -51,7 +51,8 @@ std::vector<std::size_t> sources_against_main_direction(const Scenario& s);
 // Runs trajectory `index` of the scenario. Crossings go to the tally (which appends to its
 // output), impact records to `impacts` when it is not null, and the path of the block centre
 // to `path` when it is not null (the start, every impact and sliding event, and points along
-// each flight arc at most `path_step` seconds apart: for drawing, not for analysis).
+// each flight arc at most `path_step` seconds apart, and at most 1000 per arc: for drawing, not
+// for analysis).
 TrajectorySummary simulate_trajectory(const TrajectoryModel& model, std::uint64_t index,
                                       ObservationTally& tally,
                                       std::vector<ImpactRecord>* impacts,

@@ -412,6 +412,38 @@ TEST(Trajectory, PathFollowsTheParabolaAndEndsAtTheStop) {
   EXPECT_GE(before, 100);  // 1.01 s of flight at most 0.01 s apart
 }
 
+// A drop of 5 m that lasts an hour (g = 1e-6) or 3e150 s (g = 1e-300, max_time 1e308; both
+// valid) is drawn with at most 1000 points on its parabola. The path asked for one point per
+// 0.05 s: 63 000 points, or a count past INT_MAX whose conversion was undefined (it gave one
+// point in a Release build, and bad_alloc for g = 1e-15).
+TEST(Trajectory, APathDrawsALongFlightWithABoundedNumberOfPoints) {
+  for (double g : {1e-6, 1e-300}) {
+    SCOPED_TRACE(g);
+    Scenario s = test::make_scenario(test::make_profile({{0, 0}, {100, 0}}),
+                                     test::make_material(5, 50, 0.3), {test::make_block(1000)},
+                                     {50, 5}, 1);
+    s.settings.gravity = g;
+    s.settings.max_time = 1e308;
+    const TrajectoryModel model(s);
+    ObservationTally tally(s.lines, s.profile, false);
+    std::vector<Crossing> cr;
+    tally.output(&cr);
+    std::vector<Vec2> path;
+    const auto t = simulate_trajectory(model, 0, tally, nullptr, &path, 0.05);
+    ASSERT_TRUE(t.has_first_impact);
+    // The fall is one arc: the start, then 1000 points along it, the last at the landing; every
+    // later arc (the slow rebounds) has at most 1000 too, with a point or two per event.
+    ASSERT_GE(path.size(), 1001u);
+    EXPECT_LE(path.size(), 1002u * (t.impacts + 2u));
+    EXPECT_EQ(path.front().z, 5.0);
+    for (std::size_t i = 1; i <= 1000; ++i) {
+      EXPECT_EQ(path[i].x, 50.0);
+      EXPECT_LT(path[i].z, path[i - 1].z);  // falling all the way
+    }
+    EXPECT_NEAR(path[1000].z, t.first_impact.z, 1e-9);
+  }
+}
+
 TEST(Trajectory, FloorContactIsTheFirstImpactPastTheToeOrTheToeWhenSlidingOnto) {
   // A 2 m, 20° ramp onto a floor: a block placed on the ramp slides (φ = 10°) onto the floor
   // through the concave toe at x = 2/tan 20°; one dropped from high lands on the floor.
