@@ -78,7 +78,12 @@ void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint6
   for (std::size_t i = 0; i < loaded.quarries.size(); ++i) {
     sim::SimulationSettings& s = loaded.quarries[i].scenario.settings;
     if (seed && !loaded.quarries[i].seed_given) s.seed = io::section_seed(*seed, i);
-    if (throws) s.throws = *throws;
+    if (throws) {
+      s.throws = *throws;
+      io::check_trajectory_count(loaded.quarries[i].scenario, loaded.file, 0, "--throws",
+                                 std::to_string(*throws),
+                                 fmt::format("quarries[{}] \"{}\"", i, loaded.quarries[i].spec.name));
+    }
   }
 }
 

@@ -29,7 +29,8 @@ struct QuarryRunOptions {
 
 // --seed and --throws on a quarry scenario: the throws of every section; the seed of
 // [simulation], and with it the seed of each section that gives none (seed + its index, as the
-// reader sets it). A section's own `seed` is kept.
+// reader sets it). A section's own `seed` is kept. Throws io::InputError (at --throws) when the
+// throws give a section more trajectories than the reader allows.
 void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
                             std::optional<std::uint32_t> throws);
 

@@ -116,7 +116,11 @@ class RunCommand final : public Command {
     }
     sim::Scenario& sc = loaded.scenario;
     if (seed_opt_->count()) sc.settings.seed = static_cast<std::uint64_t>(seed_);
-    if (throws_opt_->count()) sc.settings.throws = throws_;
+    if (throws_opt_->count()) {
+      sc.settings.throws = throws_;
+      // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
+      io::check_trajectory_count(sc, loaded.file, 0, "--throws", std::to_string(throws_));
+    }
     if (!quiet_) print_source_notes(stdout, sc);
 
     sim::RunOptions opt;

@@ -1,6 +1,7 @@
 // The quarry reader (docs/quarry.md) and quarry rule sets. The profile, blocks and sources of a
 // section are read by the scenario reader's own readers (section_readers.hpp): one format.
 #include "pierre/io/quarry_reader.hpp"
+#include "pierre/io/scenario_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -314,6 +315,14 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     sc.profile = detail::read_profile(q, materials, "quarries");
     detail::read_blocks(q, s.block_groups, sc.blocks, "quarries");
     detail::read_sources(q, sc, "quarries");
+    {
+      // Each section is a run of its own: its count, not the sum, is what must stay countable.
+      // (`settings` may come from elsewhere than `root`: then the message names no line.)
+      const toml::node* throws = root.at_path("simulation.throws").node();
+      check_trajectory_count(sc, file, throws ? line_of(*throws) : 0, "simulation.throws",
+                             std::to_string(settings.throws),
+                             fmt::format("quarries[{}] \"{}\"", i, spec.name));
+    }
     read_work_areas(q, spec);
     read_observed(q, s);
 

@@ -563,21 +563,29 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
   detail::read_blocks(top, out.block_groups, out.scenario.blocks, "");
   detail::read_sources(top, out.scenario, "");
   {
-    // Sources × blocks × throws in a 64-bit count (it wrapped): at most 2^53, exact as a double.
-    const auto& sc = out.scenario;
-    const long double n = static_cast<long double>(sc.sources.size()) * sc.blocks.size() *
-                          sc.settings.throws;
-    if (n > 9007199254740992.0L) {
-      const auto s = top.subtable("simulation", {});
-      s->fail("throws", fmt::format("at most 2^53 trajectories in all ({} sources × {} blocks × "
-                                    "{} throws are {:.3g})",
-                                    sc.sources.size(), sc.blocks.size(), sc.settings.throws,
-                                    static_cast<double>(n)));
-    }
+    const auto s = top.subtable("simulation", {});
+    const toml::node& throws = *s->find("throws");
+    check_trajectory_count(out.scenario, scenario_file, line_of(throws), s->field("throws"),
+                           describe(throws));
   }
   read_lines(top, out.scenario);
   read_barriers(top, rules_dir, out);
   return out;
+}
+
+void check_trajectory_count(const sim::Scenario& sc, const std::filesystem::path& file, long line,
+                            const std::string& field, const std::string& found,
+                            const std::string& what) {
+  // Sources × blocks × throws in a 64-bit count (it wrapped): at most 2^53, exact as a double.
+  const long double n = static_cast<long double>(sc.sources.size()) * sc.blocks.size() *
+                        sc.settings.throws;
+  if (n > 9007199254740992.0L)
+    throw InputError(file, line, field, found,
+                     fmt::format("at most 2^53 trajectories {} ({}{}{} sources × {} blocks × {} "
+                                 "throws are {:.3g})",
+                                 what.empty() ? "in all" : "a section", what,
+                                 what.empty() ? "" : ": ", sc.sources.size(), sc.blocks.size(),
+                                 sc.settings.throws, static_cast<double>(n)));
 }
 
 }  // namespace pierre::io

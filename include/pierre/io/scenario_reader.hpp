@@ -51,4 +51,13 @@ struct LoadedScenario {
 LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
                              const std::filesystem::path& rules_dir);
 
+// A scenario runs at most 2^53 trajectories, sources × blocks × throws (a count a double holds
+// exactly; the 64-bit count wrapped past 2^64). Throws InputError at `field` of `file` (line 0:
+// about the whole file, e.g. `--throws`, found `found`) when `s` asks for more; `what` names the
+// scenario in the message when it is one of several (a quarry section), else "".
+// load_scenario checks simulation.throws; a command that changes the throws checks again.
+void check_trajectory_count(const sim::Scenario& s, const std::filesystem::path& file, long line,
+                            const std::string& field, const std::string& found,
+                            const std::string& what = "");
+
 }  // namespace pierre::io

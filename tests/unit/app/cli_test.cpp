@@ -144,6 +144,32 @@ TEST_F(Cli, BadInputExitsTwoAndCreatesNothing) {
   EXPECT_NE(v.err.find("simulation.throws"), std::string::npos);
 }
 
+// --throws is held to the reader's limit of 2^53 trajectories (simulation.throws is). It was
+// not: 4400 sources × 1e6 blocks × 4294967295 throws wrapped past 2^64 and the run ended in an
+// "internal error" (exit 3); a count between 2^53 and 2^64 started a run of that many.
+TEST_F(Cli, ThrowsOptionIsHeldToTheTrajectoryLimitBeforeAnythingIsWritten) {
+  std::string text =
+      "[scenario]\nname = \"many\"\n[simulation]\nseed = 1\nthrows = 1\n[profile]\n"
+      "file = \"profile.csv\"\n[materials.talus]\npreset = \"talus\"\n[materials.road]\n"
+      "preset = \"talus\"\n[blocks]\n[[blocks.table]]\nmass = 500.0\ncount = 1000000\n";
+  for (int i = 0; i < 4400; ++i) text += "[[sources]]\nx = 5.0\nz = 67.5\n";
+  std::ofstream(dir_ / "many.toml") << text;
+  fs::copy_file(PIERRE_TEST_DATA "/small/profile.csv", dir_ / "profile.csv");
+  ASSERT_EQ(pierre("validate " + q(dir_ / "many.toml")).code, 0);  // 4.4e9 trajectories
+  const fs::path out = dir_ / "out";
+  for (const char* command : {"run", "check"}) {
+    const Result r = pierre(std::string(command) + " " + q(dir_ / "many.toml") + " --out " + q(out) +
+                            " --throws 4294967295");
+    EXPECT_EQ(r.code, 2) << command << "\n" << r.err;
+    EXPECT_NE(r.err.find((dir_ / "many.toml").string() +
+                         ": --throws: found 4294967295, expected at most 2^53 trajectories in all "
+                         "(4400 sources × 1000000 blocks × 4294967295 throws are 1.89e+19)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
 TEST_F(Cli, MissingScenarioExitsTwo) {
   const Result r = pierre("run " + q(dir_ / "none.toml") + " --out " + q(dir_ / "out"));
   EXPECT_EQ(r.code, 2);

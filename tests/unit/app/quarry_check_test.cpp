@@ -178,6 +178,37 @@ TEST_F(QuarryCli, BadQuarryInputExitsTwoAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// --throws on a quarry scenario is held to the reader's limit of 2^53 trajectories a section.
+// It was not: 4400 sources × 1e6 blocks × 4294967295 throws wrapped past 2^64 and the run ended
+// in an "internal error" (exit 3).
+TEST_F(QuarryCli, ThrowsOptionIsHeldToTheTrajectoryLimitOfASection) {
+  std::string sources;
+  for (int i = 0; i < 4400; ++i) sources += (i ? ", " : "") + std::string("{ x = 10.3, z = 20.5 }");
+  const std::string text =
+      "[scenario]\nname = \"many\"\n[simulation]\nseed = 1\nthrows = 1\n"
+      "[materials.face]\npreset = \"quarry-face\"\n[materials.floor]\npreset = \"quarry-floor\"\n"
+      "[[quarries]]\nname = \"North\"\n"
+      "profile = { points = [[0.0, 20.0, \"floor\"], [10.0, 20.0, \"face\"], [20.0, 0.0, \"floor\"], "
+      "[90.0, 0.0, \"\"]] }\n"
+      "blocks = { table = [{ mass = 500.0, count = 1000000 }] }\n"
+      "sources = [" + sources + "]\n";
+  std::ofstream(dir_ / "many.toml") << text;
+  ASSERT_EQ(pierre("validate " + q(dir_ / "many.toml")).code, 0);  // 4.4e9 trajectories
+  const fs::path out = dir_ / "out";
+  for (const char* command : {"run", "check"}) {
+    const Result r = pierre(std::string(command) + " " + q(dir_ / "many.toml") + " --out " + q(out) +
+                            " --throws 4294967295");
+    EXPECT_EQ(r.code, 2) << command << "\n" << r.err;
+    EXPECT_NE(r.err.find((dir_ / "many.toml").string() +
+                         ": --throws: found 4294967295, expected at most 2^53 trajectories a "
+                         "section (quarries[0] \"North\": 4400 sources × 1000000 blocks × "
+                         "4294967295 throws are 1.89e+19)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
 TEST_F(QuarryCli, ValidateListsTheSections) {
   const Result r = pierre("validate " + kData + "pass.toml");
   ASSERT_EQ(r.code, 0) << r.err;

@@ -120,5 +120,27 @@ TEST(QuarryScenario, SectionPartsUseTheScenarioReadersMessages) {
   EXPECT_NE(m.expected().find("face, floor"), std::string::npos) << m.what();
 }
 
+// A section is a run of its own, held to the scenario reader's limit of 2^53 trajectories
+// (2200 sources × 1000 blocks × 4294967295 throws are 9.4e15). It was not checked: validate
+// called the section valid, with a count that had wrapped past 2^64 for larger ones, and the
+// run ended in an internal error (exit 3).
+TEST(QuarryScenario, ASectionOfMoreThan2To53TrajectoriesIsRefusedAtTheThrows) {
+  std::string text = kHead + kSections;
+  text.replace(text.find("throws = 3"), 10, "throws = 4294967295");
+  text.replace(text.find("{ id = \"B\", mass = 800.0 }"), 26, "{ id = \"B\", mass = 800.0, count = 1000 }");
+  std::string sources;
+  for (int i = 0; i < 2200; ++i) sources += (i ? ", " : "") + std::string("{ x = 10.3, z = 20.5 }");
+  const std::size_t west = text.find("name = \"West\"");
+  text.replace(text.find("sources = [{ x = 10.3, z = 20.5 }]", west), 34, "sources = [" + sources + "]");
+  const InputError e = error_of(text);
+  EXPECT_EQ(e.field(), "simulation.throws") << e.what();
+  EXPECT_EQ(e.line(), 6) << e.what();
+  EXPECT_EQ(e.found(), "4294967295") << e.what();
+  EXPECT_NE(e.expected().find("at most 2^53 trajectories a section (quarries[1] \"West\": 2200 "
+                              "sources × 1000 blocks × 4294967295 throws are 9.45e+15)"),
+            std::string::npos)
+      << e.what();
+}
+
 }  // namespace
 }  // namespace pierre::io
