@@ -111,6 +111,16 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
       has_file ? read_profile_csv(*prof->file_path("file", "CSV file with header x,z,material"))
                : read_inline_points(*prof);
 
+  // Beyond a million kilometres the geometry's squares overflow (a segment 1e200 m long has an
+  // infinite length) and the error that followed named the wrong cause. No section comes near.
+  constexpr double kMaxCoordinate = 1e9;
+  for (const Vertex& v : vs)
+    for (const auto& [value, column] : {std::pair{v.p.x, "x"}, std::pair{v.p.z, "z"}})
+      if (!(std::abs(value) <= kMaxCoordinate))
+        throw InputError(v.file, v.line, has_file ? std::string(column) : v.field,
+                         fmt::format("{} = {:g} m", column, value),
+                         "coordinates of at most 1e9 m in size (x and z in metres)");
+
   std::vector<geometry::Vec2> pts;
   std::vector<int> mat_index;
   std::string names;

@@ -192,6 +192,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"csv_air_below", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n# mirrored\n20,10,rock\n10,2,rock\n0,0,\n"}}, "p.csv", 3, "x,z", "the air below 100 %"},
         Case{"inline_air_below", {{9, "points = [[20.0, 10.0, \"rock\"], [0.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "from x = 20 to 0 m"},
         Case{"inline_vertical_only", {{9, "points = [[5.0, 10.0, \"rock\"], [5.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[0]", "vertical segments only, at x = 5 m"},
+        // coordinates beyond 1e9 m (their squares overflowed: "vertical segments only")
+        Case{"inline_huge_coordinate", {{9, "points = [[0.0, 10.0, \"rock\"], [2e200, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[1]", "x = 2e+200 m"},
+        Case{"csv_huge_coordinate", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,-1.5e9,rock\n20,0,\n"}}, "p.csv", 3, "z", "z = -1.5e+09 m"},
         Case{"inline_repeated_vertex", {{9, "points = [[0.0, 10.0, \"rock\"], [0.0, 10.0, \"rock\"], [20.0, 0.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points[1]", "repeats"},
         Case{"profile_file_and_points", {{9, base_lines()[8] + "\n" + kCsvProfile}}, {}, "s.toml", 8, "profile.points", "both file and points"},
         // materials
