@@ -5,10 +5,22 @@
 namespace pierre::io {
 namespace {
 
+// A found value is echoed whole up to this many bytes; a longer one (a 100 000-digit CSV cell, a
+// pasted paragraph) by its start and its length, so the message stays readable.
+constexpr std::size_t kFoundShown = 200;
+
+std::string shown(const std::string& found) {
+  if (found.size() <= kFoundShown + 40) return found;
+  std::size_t cut = kFoundShown;
+  while (cut > 0 && (static_cast<unsigned char>(found[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
+  return fmt::format("{}… ({} bytes in all)", found.substr(0, cut), found.size());
+}
+
 // "<file>:<line>: <field>: found <value>, expected <expectation>"; without ":<line>" when the
-// error is about the whole file (line 0).
+// error is about the whole file (line 0). found() keeps the value whole.
 std::string message(const std::filesystem::path& file, long line, const std::string& field,
-                    const std::string& found, const std::string& expected) {
+                    const std::string& found_whole, const std::string& expected) {
+  const std::string found = shown(found_whole);
   if (line > 0)
     return fmt::format("{}:{}: {}: found {}, expected {}", file.string(), line, field, found,
                        expected);

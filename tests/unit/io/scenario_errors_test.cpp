@@ -248,4 +248,25 @@ TEST(ScenarioReader, MissingScenarioFile) {
   }
 }
 
+// A value of 100 000 digits is echoed by its first 200 bytes and its length, not whole (a
+// message of 100 kB); found() keeps it whole for a program that wants it.
+TEST(ScenarioReader, AHugeValueIsShownByItsStartAndLength) {
+  TempDir dir;
+  Case c{"huge", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {}, "", 0, "", ""};
+  const std::string digits = "1" + std::string(99999, '0');  // 1e99999: not a finite number
+  dir.write("b.csv", "mass\n" + digits + "\n");
+  const auto scenario = dir.write("s.toml", scenario_text(c));
+  try {
+    (void)load_scenario(scenario, kRules);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.found(), "\"" + digits + "\"");
+    const std::string what = e.what();
+    EXPECT_LT(what.size(), 600u) << what.size();
+    EXPECT_NE(what.find("found \"" + digits.substr(0, 199) + "… (100002 bytes in all), expected"),
+              std::string::npos)
+        << what;
+  }
+}
+
 }  // namespace
