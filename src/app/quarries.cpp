@@ -82,7 +82,7 @@ void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint6
       s.throws = *throws;
       io::check_trajectory_count(loaded.quarries[i].scenario, loaded.file, 0, "--throws",
                                  std::to_string(*throws),
-                                 fmt::format("quarries[{}] \"{}\"", i, loaded.quarries[i].spec.name));
+                                 io::section_label(i, loaded.quarries[i].spec.name));
     }
   }
 }

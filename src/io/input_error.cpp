@@ -5,13 +5,14 @@
 namespace pierre::io {
 namespace {
 
-// A found value is echoed whole up to this many bytes; a longer one (a 100 000-digit CSV cell, a
-// pasted paragraph) by its start and its length, so the message stays readable.
-constexpr std::size_t kFoundShown = 200;
+// A found value is echoed whole up to kFoundWhole bytes; a longer one (a 100 000-digit CSV cell,
+// a pasted paragraph) by its first kFoundStart bytes and its length, so the message stays
+// readable (the margin between them keeps a value from being cut for a few bytes).
+constexpr std::size_t kFoundWhole = 240, kFoundStart = 200;
 
 std::string shown(const std::string& found) {
-  if (found.size() <= kFoundShown + 40) return found;
-  std::size_t cut = kFoundShown;
+  if (found.size() <= kFoundWhole) return found;
+  std::size_t cut = kFoundStart;
   while (cut > 0 && (static_cast<unsigned char>(found[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
   return fmt::format("{}… ({} bytes in all)", found.substr(0, cut), found.size());
 }

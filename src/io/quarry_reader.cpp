@@ -237,6 +237,10 @@ design::QuarryRuleSet load_quarry_rules(const std::string& name_or_path,
   return read_rules(file, file.stem().string());
 }
 
+std::string section_label(std::size_t index, const std::string& name) {
+  return fmt::format("quarries[{}] \"{}\"", index, name);
+}
+
 std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
                                          const std::filesystem::path& rules_dir,
                                          const std::vector<model::Material>& materials,
@@ -321,7 +325,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
       const toml::node* throws = root.at_path("simulation.throws").node();
       check_trajectory_count(sc, file, throws ? line_of(*throws) : 0, "simulation.throws",
                              std::to_string(settings.throws),
-                             fmt::format("quarries[{}] \"{}\"", i, spec.name));
+                             section_label(i, spec.name));
     }
     read_work_areas(q, spec);
     read_observed(q, s);

@@ -42,6 +42,9 @@ inline std::uint64_t section_seed(std::uint64_t run_seed, std::size_t index) {
   return (run_seed + index) & 0x7FFF'FFFF'FFFF'FFFFull;
 }
 
+// How a message names section `index`: quarries[1] "North".
+std::string section_label(std::size_t index, const std::string& name);
+
 // A rule set by name ("quarry-thesis-2015" → rules_dir/quarry-thesis-2015.toml) or by path (a
 // value ending in ".toml" or holding a '/'; used as given).
 design::QuarryRuleSet load_quarry_rules(const std::string& name_or_path,
