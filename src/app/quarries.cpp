@@ -33,6 +33,7 @@ class QuarrySink final : public sim::ResultSink {
       : next_(next), geometry_(geometry), all_(all) {
     distances.censor_distance = geometry.floor_length;
   }
+  void prepare(sim::ChunkResult& chunk) const override { next_.prepare(chunk); }
   void consume(sim::ChunkResult&& chunk) override {
     for (const sim::TrajectorySummary& t : chunk.trajectories) {
       distances.add(t, geometry_);

@@ -21,6 +21,7 @@ class FirstRows final : public sim::ResultSink {
  public:
   FirstRows(sim::ResultSink& next, std::size_t trajectories, std::size_t crossings)
       : next_(next), max_trajectories_(trajectories), max_crossings_(crossings) {}
+  void prepare(sim::ChunkResult& chunk) const override { next_.prepare(chunk); }
   void consume(sim::ChunkResult&& chunk) override;
 
   std::vector<sim::TrajectorySummary> trajectories;

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -33,7 +34,7 @@ void text_cell(fmt::memory_buffer& b, const std::string& s) {
   b.push_back('"');
 }
 
-void num(fmt::memory_buffer& b, double v) { fmt::format_to(std::back_inserter(b), "{:.9g}", v); }
+void num(fmt::memory_buffer& b, double v) { fmt::format_to(fmt::appender(b), FMT_COMPILE("{:.9g}"), v); }
 
 std::string_view to_string(model::ImpactResult r) {
   switch (r) {
@@ -59,7 +60,8 @@ class ResultFiles::Csv {
   ~Csv() {
     if (f_) std::fclose(f_);
   }
-  void maybe_flush() {
+  void write(const fmt::memory_buffer& text) {
+    buf.append(text.data(), text.data() + text.size());
     if (buf.size() >= kFlushBytes) flush();
   }
   void flush() {
@@ -125,61 +127,66 @@ void ResultFiles::begin_section(const sim::Scenario& scenario, std::string name)
 
 ResultFiles::~ResultFiles() = default;
 
-void ResultFiles::consume(sim::ChunkResult&& chunk) {
+// The CSV text of a chunk: made by prepare on the worker that simulated it, appended in order by
+// consume.
+struct ResultFiles::Text final : sim::PreparedChunk {
+  fmt::memory_buffer trajectories, crossings, impacts;
+};
+
+void ResultFiles::prepare(sim::ChunkResult& chunk) const { chunk.prepared = format(chunk); }
+
+std::unique_ptr<ResultFiles::Text> ResultFiles::format(const sim::ChunkResult& chunk) const {
   if (!scenario_) throw std::logic_error("ResultFiles: begin_section before the first chunk");
   const sim::Scenario& sc = *scenario_;
-  auto out = [](fmt::memory_buffer& b) { return std::back_inserter(b); };
+  auto text = std::make_unique<Text>();
+  auto out = [](fmt::memory_buffer& b) { return fmt::appender(b); };
   auto lead = [&](fmt::memory_buffer& b) {
     if (!sectioned_) return;
     text_cell(b, section_);
     b.push_back(',');
   };
   {
-    fmt::memory_buffer& b = trajectories_->buf;
+    fmt::memory_buffer& b = text->trajectories;
     for (const sim::TrajectorySummary& t : chunk.trajectories) {
-      samples_.add(t);
       lead(b);
-      fmt::format_to(out(b), "{},", t.trajectory);
+      fmt::format_to(out(b), FMT_COMPILE("{},"), t.trajectory);
       text_cell(b, t.source < sc.sources.size() ? sc.sources[t.source].name : "");
       b.push_back(',');
       text_cell(b, t.block < sc.blocks.size() ? sc.blocks[t.block].id : "");
-      fmt::format_to(out(b), ",{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},",
+      fmt::format_to(out(b), FMT_COMPILE(",{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},"),
                      t.throw_index, t.mass, t.start.x, t.start.z, t.stop.x, t.stop.z, t.runout(),
                      sim::to_string(t.stop_reason), t.duration, t.impacts);
       if (t.has_first_impact)
-        fmt::format_to(out(b), "{:.9g},{:.9g}", t.first_impact.x, t.first_impact.z);
+        fmt::format_to(out(b), FMT_COMPILE("{:.9g},{:.9g}"), t.first_impact.x, t.first_impact.z);
       else
         b.push_back(',');
-      fmt::format_to(out(b), ",{:.9g},{:.9g},{:.9g}\n", t.max_jump_height, t.max_speed,
+      fmt::format_to(out(b), FMT_COMPILE(",{:.9g},{:.9g},{:.9g}\n"), t.max_jump_height, t.max_speed,
                      t.max_energy / 1000.0);
     }
-    trajectories_->maybe_flush();
   }
   {
-    fmt::memory_buffer& b = crossings_->buf;
+    fmt::memory_buffer& b = text->crossings;
     for (const sim::Crossing& c : chunk.crossings) {
-      samples_.add(c);
       lead(b);
-      fmt::format_to(out(b), "{},", c.trajectory);
+      fmt::format_to(out(b), FMT_COMPILE("{},"), c.trajectory);
       const bool known = c.line < sc.lines.size();
       text_cell(b, known ? sc.lines[c.line].name : "");
       b.push_back(',');
       if (known) num(b, sc.lines[c.line].x);
       b.push_back(',');
       text_cell(b, c.block < sc.blocks.size() ? sc.blocks[c.block].id : "");
-      fmt::format_to(out(b), ",{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n",
+      fmt::format_to(out(b), FMT_COMPILE(",{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n"),
                      c.mass, c.time, c.direction, c.velocity.x, c.velocity.z, c.speed, c.omega,
                      c.translational_energy / 1000.0, c.rotational_energy / 1000.0, c.height,
                      c.sliding ? 1 : 0);
     }
-    crossings_->maybe_flush();
   }
   if (impacts_) {
-    fmt::memory_buffer& b = impacts_->buf;
+    fmt::memory_buffer& b = text->impacts;
     for (const sim::ImpactRecord& r : chunk.impacts) {
       const model::ImpactDetail& d = r.detail;
       lead(b);
-      fmt::format_to(out(b), "{},{},{:.9g},{:.9g},{:.9g},{},", r.trajectory, r.index, r.time,
+      fmt::format_to(out(b), FMT_COMPILE("{},{},{:.9g},{:.9g},{:.9g},{},"), r.trajectory, r.index, r.time,
                      r.position.x, r.position.z, r.segment);
       std::string material;
       if (r.segment < sc.profile.segment_count()) {
@@ -188,17 +195,32 @@ void ResultFiles::consume(sim::ChunkResult&& chunk) {
           material = sc.materials[static_cast<std::size_t>(m)].name;
       }
       text_cell(b, material);
-      fmt::format_to(out(b), ",{},{:.9g},{:.9g},{:.9g},", to_string(r.result), d.slope_deg,
+      fmt::format_to(out(b), FMT_COMPILE(",{},{:.9g},{:.9g},{:.9g},"), to_string(r.result), d.slope_deg,
                      d.roughness_deg, d.r_eff);
-      fmt::format_to(out(b), "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},", d.vt_in,
+      fmt::format_to(out(b), FMT_COMPILE("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"), d.vt_in,
                      d.vn_in, d.vt_out, d.vn_out, d.vt_in_rot, d.vn_in_rot, d.vt_out_rot,
                      d.vn_out_rot);
-      fmt::format_to(out(b), "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g}\n", d.kn, d.kt,
+      fmt::format_to(out(b), FMT_COMPILE("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g}\n"), d.kn, d.kt,
                      d.kn_apparent, d.kt_apparent, d.incidence_deg, d.contained ? 1 : 0,
                      d.energy_in / 1000.0, d.energy_out / 1000.0);
     }
-    impacts_->maybe_flush();
   }
+  return text;
+}
+
+void ResultFiles::consume(sim::ChunkResult&& chunk) {
+  // A chunk that came without prepare (a caller other than the runner) is formatted here.
+  std::unique_ptr<Text> own;
+  const Text* text = dynamic_cast<const Text*>(chunk.prepared.get());
+  if (!text) {
+    own = format(chunk);
+    text = own.get();
+  }
+  for (const sim::TrajectorySummary& t : chunk.trajectories) samples_.add(t);
+  for (const sim::Crossing& c : chunk.crossings) samples_.add(c);
+  trajectories_->write(text->trajectories);
+  crossings_->write(text->crossings);
+  if (impacts_) impacts_->write(text->impacts);
 }
 
 void ResultFiles::close() {

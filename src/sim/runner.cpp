@@ -83,6 +83,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
           }
         }
       }
+      sink.prepare(res);
       std::unique_lock lock(mu);
       impacts += n_imp;
       pending.emplace(c, std::move(res));

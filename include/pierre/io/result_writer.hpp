@@ -61,6 +61,8 @@ class ResultFiles final : public sim::ResultSink {
   // must outlive); samples() starts afresh.
   void begin_section(const sim::Scenario& scenario, std::string name);
 
+  // Formats the chunk's rows (on the worker thread; consume formats those that come without).
+  void prepare(sim::ChunkResult& chunk) const override;
   void consume(sim::ChunkResult&& chunk) override;  // throws std::runtime_error on write errors
   // Flushes and closes every file; throws std::runtime_error when a write failed.
   void close();
@@ -70,7 +72,9 @@ class ResultFiles final : public sim::ResultSink {
   class Csv;  // a buffered file
 
  private:
+  struct Text;
   void open(const std::filesystem::path& folder, bool impacts);
+  std::unique_ptr<Text> format(const sim::ChunkResult& chunk) const;
 
   const sim::Scenario* scenario_ = nullptr;
   bool sectioned_ = false;

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,12 +26,18 @@ struct RunOptions {
   const std::atomic<bool>* stop = nullptr;
 };
 
+// What a sink made of a chunk before its turn came (ResultSink::prepare), carried with it.
+struct PreparedChunk {
+  virtual ~PreparedChunk() = default;
+};
+
 // One chunk of consecutive trajectories and what they produced, in trajectory order.
 struct ChunkResult {
   std::uint64_t first = 0;  // global index of the first trajectory
   std::vector<TrajectorySummary> trajectories;
   std::vector<Crossing> crossings;
   std::vector<ImpactRecord> impacts;
+  std::unique_ptr<PreparedChunk> prepared;  // set by ResultSink::prepare, if the sink has one
 };
 
 // Receives chunks strictly in trajectory order, one at a time (never concurrently).
@@ -39,6 +46,11 @@ class ResultSink {
   virtual ~ResultSink() = default;
   // Called once before the first chunk with the number of trajectories the run will deliver.
   virtual void expect(std::uint64_t /*trajectories*/) {}
+  // Called by the worker that made the chunk, before its turn, concurrently with other chunks'
+  // prepare and with consume: work that does not depend on order (the CSV text) is done here on
+  // every thread, not only on the one delivering. It may only read the sink, and write
+  // chunk.prepared. A sink that hands chunks on to another passes this on too.
+  virtual void prepare(ChunkResult& /*chunk*/) const {}
   virtual void consume(ChunkResult&& chunk) = 0;
 };
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "pierre/sim/runner.hpp"
@@ -40,6 +41,30 @@ struct RecordingSink : ResultSink {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+// Tags each chunk in prepare with the chunk's first trajectory and how many it holds.
+struct Tag : PreparedChunk {
+  std::uint64_t first = 0;
+  std::size_t count = 0;
+};
+struct PreparingSink : ResultSink {
+  mutable std::atomic<int> prepared{0};
+  std::vector<std::uint64_t> firsts;
+  bool every_chunk_tagged = true;
+  void prepare(ChunkResult& c) const override {
+    auto tag = std::make_unique<Tag>();
+    tag->first = c.first;
+    tag->count = c.trajectories.size();
+    c.prepared = std::move(tag);
+    ++prepared;
+  }
+  void consume(ChunkResult&& c) override {
+    const auto* tag = dynamic_cast<const Tag*>(c.prepared.get());
+    every_chunk_tagged = every_chunk_tagged && tag && tag->first == c.first &&
+                         tag->count == c.trajectories.size();
+    firsts.push_back(c.first);
+  }
+};
+
 }  // namespace
 
 TEST(Runner, AnnouncesTheTrajectoryCountAndDeliversChunksInOrder) {
@@ -58,6 +83,22 @@ TEST(Runner, AnnouncesTheTrajectoryCountAndDeliversChunksInOrder) {
   run_simulation(s, o, c);
   ASSERT_EQ(c.trajectories.size(), 300u);
   EXPECT_EQ(c.trajectories.capacity(), 300u);
+}
+
+// The sink's prepare runs once per chunk on the worker (the CSV text is made there), and each
+// chunk reaches consume carrying what prepare made of that same chunk.
+TEST(Runner, EachChunkArrivesWithWhatPrepareMadeOfIt) {
+  const Scenario s = slope(300);
+  for (unsigned threads : {1u, 2u}) {
+    PreparingSink sink;
+    RunOptions o;
+    o.threads = threads;
+    o.chunk_size = 7;
+    run_simulation(s, o, sink);
+    EXPECT_EQ(sink.prepared.load(), 43) << threads;  // ceil(300 / 7)
+    ASSERT_EQ(sink.firsts.size(), 43u) << threads;
+    EXPECT_TRUE(sink.every_chunk_tagged) << threads;
+  }
 }
 
 TEST(Runner, AStopRequestedBeforeTheRunDeliversNothing) {
