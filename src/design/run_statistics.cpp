@@ -42,20 +42,27 @@ void RunSamples::add(const sim::Crossing& c) {
   keep(lines_[c.line], c);
 }
 
-QuantityStatistics quantity_statistics(std::vector<double> v) {
+QuantityStatistics quantity_statistics(std::span<const double> v) {
   QuantityStatistics q;
   q.count = v.size();
   if (v.empty()) {
     q.mean = q.p50 = q.p95 = q.max = kNaN;
     return q;
   }
-  std::sort(v.begin(), v.end());
-  double sum = 0;  // in sorted order: independent of how the run was split
-  for (double x : v) sum += x;
-  q.mean = sum / static_cast<double>(v.size());
-  q.p50 = stats::percentile_of_sorted(v, 50);
-  q.p95 = stats::percentile_of_sorted(v, 95);
-  q.max = v.back();
+  // Neumaier's compensated sum: its error does not grow with the count (10^7 crossings), and
+  // the samples come in trajectory order, so it is the same for any thread count.
+  double sum = 0, carry = 0;
+  for (double x : v) {
+    const double t = sum + x;
+    carry += std::abs(sum) >= std::abs(x) ? (sum - t) + x : (x - t) + sum;
+    sum = t;
+  }
+  q.mean = (sum + carry) / static_cast<double>(v.size());
+  static constexpr double kPs[] = {50, 95, 100};
+  const std::vector<double> p = stats::percentiles(v, kPs);
+  q.p50 = p[0];
+  q.p95 = p[1];
+  q.max = p[2];
   return q;
 }
 
@@ -82,13 +89,13 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
     l.not_reached = s.trajectories >= reached ? s.trajectories - reached : 0;
     s.lines.push_back(std::move(l));
   }
-  std::vector<double> r = samples.runout();
-  std::sort(r.begin(), r.end());
-  s.runout.count = r.size();
-  s.runout.p50 = stats::percentile_of_sorted(r, 50);
-  s.runout.p95 = stats::percentile_of_sorted(r, 95);
-  s.runout.p99 = stats::percentile_of_sorted(r, 99);
-  s.runout.max = r.empty() ? kNaN : r.back();
+  static constexpr double kRunoutPs[] = {50, 95, 99, 100};
+  const std::vector<double> r = stats::percentiles(samples.runout(), kRunoutPs);
+  s.runout.count = samples.runout().size();
+  s.runout.p50 = r[0];
+  s.runout.p95 = r[1];
+  s.runout.p99 = r[2];
+  s.runout.max = r[3];
   for (std::size_t k = 0; k < kStopReasonCount; ++k)
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   return s;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,7 @@ struct RunStatistics {
 
 RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
                              const RunSamples& samples);
-QuantityStatistics quantity_statistics(std::vector<double> values);
+// Count, mean, 50th and 95th percentile (stats::percentiles) and maximum; NaN for an empty sample.
+QuantityStatistics quantity_statistics(std::span<const double> values);
 
 }  // namespace pierre::design

@@ -23,7 +23,7 @@ std::vector<double> without_nan(std::span<const double> sample);
 // One percentile in O(n) (std::nth_element on a copy): the input is not reordered.
 double percentile(std::span<const double> sample, double p);
 
-// Many percentiles from one sorted copy.
+// Many percentiles from one copy, in O(n) for each (no sort).
 std::vector<double> percentiles(std::span<const double> sample, std::span<const double> ps);
 
 // One percentile of a sample already sorted ascending (no NaN): O(1).

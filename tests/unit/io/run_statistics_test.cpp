@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "pierre/design/run_statistics.hpp"
 
@@ -95,6 +96,19 @@ TEST(RunStatistics, EveryCrossingWhenAskedFor) {
       EXPECT_TRUE(s.every().empty());
     }
   }
+}
+
+// The mean of 10^6 crossings is summed with compensation: one large value and a million small
+// ones that a plain running sum would drop one by one (1e-16 is under half an ulp of 1).
+TEST(RunStatistics, TheMeanKeepsValuesARunningSumWouldDrop) {
+  std::vector<double> v{1.0};
+  v.insert(v.end(), 1'000'000, 1e-16);
+  const design::QuantityStatistics q = design::quantity_statistics(v);
+  const double exact = (1.0 + 1e-10) / 1'000'001.0;
+  EXPECT_NEAR(q.mean, exact, 1e-15 * exact);  // a plain sum gives 1 / 1000001: 1e-10 off
+  EXPECT_EQ(q.max, 1.0);
+  EXPECT_EQ(q.p50, 1e-16);
+  EXPECT_EQ(q.count, 1'000'001u);
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -46,6 +48,30 @@ TEST(Percentile, ManyAtOnceEqualOneAtATime) {
   const std::vector<double> many = percentiles(x, ps);
   ASSERT_EQ(many.size(), ps.size());
   for (std::size_t i = 0; i < ps.size(); ++i) EXPECT_EQ(many[i], percentile(x, ps[i])) << ps[i];
+}
+
+// percentiles() places only the order statistics it needs (successive nth_element): on a large
+// sample with ties, with the p's unsorted, repeated, next to each other and out of range, every
+// value must be that of the sorted sample read by the definition.
+TEST(Percentile, ManyAtOnceEqualTheSortedSample) {
+  std::vector<double> x;
+  std::uint64_t state = 12345;
+  for (int i = 0; i < 10007; ++i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    x.push_back(static_cast<double>((state >> 33) % 4001) / 8.0);  // ~2.5 values per level
+  }
+  const std::vector<double> ps{99, 50, 95, 0, 100, 95, 50.004, 50.005, 1e-9, 99.99999, -3, 12.5};
+  std::vector<double> sorted = x;
+  std::sort(sorted.begin(), sorted.end());
+  const std::vector<double> many = percentiles(x, ps);
+  ASSERT_EQ(many.size(), ps.size());
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (ps[i] < 0) {
+      EXPECT_TRUE(std::isnan(many[i]));
+      continue;
+    }
+    EXPECT_EQ(many[i], percentile_of_sorted(sorted, ps[i])) << ps[i];
+  }
 }
 
 TEST(Percentile, SortedVersionByHand) {
