@@ -621,3 +621,29 @@ TEST(Trajectory, ABlockAtRestOnFrictionlessLevelGroundStaysPut) {
   EXPECT_EQ(t.stop.x, 50.0);
   EXPECT_EQ(t.stop.z, 0.0);
 }
+
+// model-2d.md §2: a rebound from a concave vertex into the neighbouring segment is a contact
+// with it at once (t = 0, at the vertex), not a flight of rounding length. Blocks dropped
+// straight onto the bottom of a V land at the vertex (as the end of the first flank); the
+// rebounds the roughness turns into the other flank must meet it at the same instant, at the
+// vertex (to the rounding of a segment's end point). Two Vs, a symmetric and a lopsided one.
+// (Without the end vertex's neighbour in the departure, they met it a hair later.)
+TEST(Trajectory, AReboundIntoTheOtherFlankOfAVIsAContactAtOnce) {
+  for (const std::vector<Vec2>& v : {std::vector<Vec2>{{0, 10}, {10, 0}, {40, 10}},
+                                     std::vector<Vec2>{{0, 10}, {10, 0}, {20, 10}}}) {
+    Scenario s = test::make_scenario(test::make_profile(v), test::make_material(15, 50, 0.9, 30),
+                                     {test::make_block(1000)}, {10, 15}, 2000);
+    const auto r = run(s, 1, true);
+    int at_once = 0, a_hair_later = 0;
+    for (std::size_t i = 1; i < r.impacts.size(); ++i) {
+      const auto &a = r.impacts[i - 1], &b = r.impacts[i];
+      if (a.trajectory != b.trajectory || std::abs(a.position.x - 10.0) > 1e-12) continue;
+      if (b.time == a.time && std::abs(b.position.x - 10.0) <= 1e-12 && b.segment != a.segment)
+        ++at_once;
+      else if (b.time - a.time < 1e-9)
+        ++a_hair_later;
+    }
+    EXPECT_GT(at_once, 500) << v[2].x;  // common here: the test exercises the case
+    EXPECT_EQ(a_hair_later, 0) << v[2].x;
+  }
+}
