@@ -1,11 +1,13 @@
 #include "barriers.hpp"
 
 #include <algorithm>
+#include <thread>
 
 namespace pierre::app {
 
 io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
-                                   const design::RunSamples& samples) {
+                                   const design::RunSamples& samples, unsigned threads) {
+  if (threads == 0) threads = std::thread::hardware_concurrency();
   io::DesignResults out;
   const sim::Scenario& sc = loaded.scenario;
   for (std::size_t i = 0; i < loaded.barriers.size(); ++i) {
@@ -32,7 +34,7 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
     const design::BarrierOutcome o = design::design_barrier(
         spec, loaded.barrier_rules[i], loaded.barrier_classes[i], s, loaded.barrier_observed[i],
         it == sc.lines.end() ? 0.0 : it->x,
-        design::barrier_bootstrap_seed(sc.settings.seed, i));
+        design::barrier_bootstrap_seed(sc.settings.seed, i), threads);
     if (o.design) {
       out.checks.insert(out.checks.end(), o.design->checks.begin(), o.design->checks.end());
       out.barriers.push_back(*o.design);

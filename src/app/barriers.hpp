@@ -12,6 +12,9 @@ namespace pierre::app {
 // gets no design and a FAIL line that says why: `reach` (fewer than two crossings at its line)
 // or `design` (crossings that give no design, e.g. no fit): `pierre check` must not pass a
 // barrier it could not check.
-io::DesignResults compute_barriers(const io::LoadedScenario& loaded, const design::RunSamples& samples);
+// `threads` (0: every hardware thread) as `--threads`: with two or more, each barrier's two
+// bootstraps run side by side.
+io::DesignResults compute_barriers(const io::LoadedScenario& loaded, const design::RunSamples& samples,
+                                   unsigned threads);
 
 }  // namespace pierre::app

@@ -151,7 +151,7 @@ class RunCommand final : public Command {
     files.close();
 
     const design::RunStatistics stats = design::run_statistics(sc.lines, files.samples());
-    const io::DesignResults design_results = compute_barriers(loaded, files.samples());
+    const io::DesignResults design_results = compute_barriers(loaded, files.samples(), threads_);
     // The statistics and bootstraps of a large run take seconds: a Ctrl-C during them stops
     // here rather than after the report is written.
     if (interrupt.interrupted()) return report_interrupted(out_.c_str());

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <numeric>
+#include <system_error>
 
 #include "pierre/design/number_text.hpp"
 #include "pierre/stats/bootstrap_weibull.hpp"
@@ -163,7 +165,7 @@ std::uint64_t barrier_bootstrap_seed(std::uint64_t scenario_seed, std::size_t in
 BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rules,
                               const EnergyClassTable& classes, const BarrierSample& sample,
                               const std::optional<ObservedSample>& observed, double chainage,
-                              std::uint64_t seed) {
+                              std::uint64_t seed, unsigned threads) {
   BarrierOutcome out;
   BarrierDesign d;
   d.spec = spec;
@@ -297,8 +299,17 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
                           : characteristic_replicates(values, rules.percentile, rules.governing,
                                                       rules.sample_resamples, s);
   };
+  auto height_replicates = [&] { return replicates(d.height, sample.height, splitmix64(seed ^ 2)); };
+  std::future<Reps> rh_beside;
+  if (threads >= 2) {
+    try {
+      rh_beside = std::async(std::launch::async, height_replicates);
+    } catch (const std::system_error&) {
+      // no thread to be had: one after the other, as with threads = 1
+    }
+  }
   const auto rv = replicates(d.speed, sample.speed, splitmix64(seed ^ 1));
-  const auto rh = replicates(d.height, sample.height, splitmix64(seed ^ 2));
+  const auto rh = rh_beside.valid() ? rh_beside.get() : height_replicates();
   const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
   const double conf = rules.sample_confidence;
   // A point mass resamples to itself: its interval has no width (no refit can show that).

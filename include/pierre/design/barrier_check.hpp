@@ -198,9 +198,11 @@ struct BarrierOutcome {
   // identical values, a design value out of the rule set's tables).
   std::string failed_check = "design";
 };
+// threads >= 2: the speed's and the height's bootstraps (step 8, most of the time) run side by
+// side; the results are the same, each has its own stream.
 BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rules,
                               const EnergyClassTable& classes, const BarrierSample& sample,
                               const std::optional<ObservedSample>& observed, double chainage,
-                              std::uint64_t seed);
+                              std::uint64_t seed, unsigned threads = 1);
 
 }  // namespace pierre::design

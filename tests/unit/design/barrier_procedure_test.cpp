@@ -337,6 +337,30 @@ TEST(BarrierProcedure, BootstrapIsDeterministicPerSeedAndCoversTheEstimate) {
   EXPECT_NE(design::barrier_bootstrap_seed(5, 0), design::barrier_bootstrap_seed(6, 0));
 }
 
+// With two threads the speed's and the height's bootstraps run side by side: every interval
+// is the same as one after the other (each has its own stream), and each is still its own
+// quantity's (swapped streams or results would show here).
+TEST(BarrierProcedure, TwoThreadsGiveTheSameIntervals) {
+  const auto s = sample(400);
+  const auto one = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s,
+                                          std::nullopt, 0, 42, 1);
+  const auto two = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s,
+                                          std::nullopt, 0, 42, 2);
+  ASSERT_TRUE(one.design && two.design);
+  const auto& a = *one.design;
+  const auto& b = *two.design;
+  for (const auto& [x, y] : {std::pair{a.v_k.interval, b.v_k.interval}, {a.h_k.interval, b.h_k.interval},
+                             {a.E_d_interval, b.E_d_interval}, {a.h_i_interval, b.h_i_interval}}) {
+    ASSERT_TRUE(x && y);
+    EXPECT_EQ(x->lower, y->lower);
+    EXPECT_EQ(x->upper, y->upper);
+  }
+  EXPECT_LT(b.h_k.interval->lower, b.h_k.value);
+  EXPECT_GT(b.h_k.interval->upper, b.h_k.value);
+  EXPECT_LT(b.v_k.interval->lower, b.v_k.value);
+  EXPECT_GT(b.v_k.interval->upper, b.v_k.value);
+}
+
 // Step 8's interval of v_k: the type-7 percentiles (5 and 95 for the default 90 %) of the
 // Weibull P95 of the rule set's number of resamples (1000 by default), drawn from
 // splitmix64(seed ^ 1) as barrier_check.hpp documents. Rebuilt here from the stats layer:
