@@ -80,6 +80,19 @@ class PierreCli : public ::testing::Test {
     s += '\'';
     return s;
   }
+  // `pierre run` and `pierre check` of `scenario` with `options` both stop with exit 2, say
+  // `message` on stderr, and leave no output folder.
+  void expect_refused_before_writing(const fs::path& scenario, const std::string& options,
+                                     const std::string& message) {
+    const fs::path out = dir_ / "out";
+    for (const char* command : {"run", "check"}) {
+      const CliResult r =
+          pierre(std::string(command) + " " + q(scenario) + " --out " + q(out) + " " + options);
+      EXPECT_EQ(r.code, 2) << command << "\n" << r.err;
+      EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+      EXPECT_FALSE(fs::exists(out)) << command;
+    }
+  }
   nlohmann::json summary(const fs::path& out) {
     return nlohmann::json::parse(slurp(out / "summary.json"));
   }
