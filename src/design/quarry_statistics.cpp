@@ -41,19 +41,17 @@ std::vector<double> censored_percentiles(std::span<const double> values, double 
       bounded.push_back(v);
     }
   }
-  std::sort(bounded.begin(), bounded.end());  // once for every p
+  const std::vector<double> q = stats::percentiles(bounded, ps);  // NaN: a bad p, or no values
   const double n = static_cast<double>(bounded.size());
   std::vector<double> out;
   out.reserve(ps.size());
-  for (double p : ps) {
-    if (!(p >= 0 && p <= 100) || bounded.empty()) {
-      out.push_back(kNaN);
-    } else if (static_cast<double>(k) * 100.0 > (100.0 - p) * n * (1.0 + 1e-9)) {
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (!std::isnan(q[i]) && static_cast<double>(k) * 100.0 > (100.0 - ps[i]) * n * (1.0 + 1e-9)) {
       // "More than (1 − p) of all blocks leave": k > (1 − p/100) n, with a hair of slack for
       // the rounding of 100 − p (p = 99.9 and k = 1 of 1000 is exactly the limit, not beyond it).
       out.push_back(kInf);
     } else {
-      out.push_back(stats::percentile_of_sorted(bounded, p));
+      out.push_back(q[i]);
     }
   }
   return out;
