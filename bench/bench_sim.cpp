@@ -6,7 +6,8 @@
 // the simulation alone (summaries and crossings kept in memory, no text output), the same for
 // a whole `pierre run` with its files written, the bare impact-law loop (random draws +
 // restitution + Goldsmith on a fixed plane: the limit the simulator approaches), the same
-// loop with each impact fed the one before (the latency a serial trajectory cannot hide), the
+// loop with each impact fed the one before (the latency a serial trajectory cannot hide), that
+// loop with each rebound flown back onto the plane (the least a serial trajectory does), the
 // quarry section subdivided into collinear pieces to 10 000 vertices, and peak memory.
 #include <fmt/core.h>
 #include <sys/resource.h>
@@ -86,7 +87,9 @@ struct PlaneImpact {
   geometry::Vec2 v_throw;
 };
 
-double bare_impact_loop(const sim::Scenario& s, long n) {
+// The loops are kept out of main (noinline) so that callgrind counts each on its own:
+//   valgrind --tool=callgrind --toggle-collect='*_loop*' build/bench/bench_sim --quick
+[[gnu::noinline]] double bare_impact_loop(const sim::Scenario& s, long n) {
   PlaneImpact pi(s);
   double sink = 0;
   const double t0 = now();
@@ -103,7 +106,7 @@ double bare_impact_loop(const sim::Scenario& s, long n) {
 // is turned back onto the plane as the next incoming velocity (a fresh throw when the block
 // stops or slides). The independent loop above lets the processor overlap many impacts; a
 // trajectory cannot, so this rate is the latency-bound limit of one serial trajectory.
-double chained_impact_loop(const sim::Scenario& s, long n) {
+[[gnu::noinline]] double chained_impact_loop(const sim::Scenario& s, long n) {
   PlaneImpact pi(s);
   geometry::Vec2 v = pi.v_throw;
   double omega = 1.5, sink = 0;
@@ -119,6 +122,34 @@ double chained_impact_loop(const sim::Scenario& s, long n) {
       omega = r.omega;
     }
     sink += v.x;
+  }
+  const double dt = now() - t0;
+  if (sink == 42.0) fmt::print("");  // keep the loop
+  return n / dt;
+}
+
+// The simplest trajectory there is: the chained loop with each rebound flown back onto the
+// fixed plane in closed form (time of flight 2 v_n / (g n_z), the landing velocity from it), as
+// a block bouncing down an endless uniform slope. No contact search, no observation lines, no
+// summary: what any serial simulator must do per impact at the least.
+[[gnu::noinline]] double plane_trajectory_loop(const sim::Scenario& s, long n) {
+  PlaneImpact pi(s);
+  const double g = s.settings.gravity;
+  geometry::Vec2 v = pi.v_throw;
+  double omega = 1.5, sink = 0;
+  const double t0 = now();
+  for (long i = 0; i < n; ++i) {
+    const auto r = pi.resolve(v, omega);
+    const double vn = dot(r.v, pi.seg.n);
+    if (r.result != model::ImpactResult::rebound || vn < 0.5) {
+      v = pi.v_throw;
+      omega = 1.5;
+    } else {
+      const double t = 2.0 * vn / (g * pi.seg.n.z);
+      v = {r.v.x, r.v.z - g * t};
+      omega = r.omega;
+      sink += t;
+    }
   }
   const double dt = now() - t0;
   if (sink == 42.0) fmt::print("");  // keep the loop
@@ -169,6 +200,9 @@ int main(int argc, char** argv) {
     const double chained = chained_impact_loop(s, quick ? 2'000'000 : 20'000'000);
     fmt::print("  chained impact-law loop: {:>10.0f} impacts/s (each impact waits for the one before); simulator/chained = {:.2f}\n",
                chained, r1.impacts_per_s / chained);
+    const double plane = plane_trajectory_loop(s, quick ? 2'000'000 : 20'000'000);
+    fmt::print("  plane trajectory loop  : {:>10.0f} impacts/s (chained, each rebound flown back onto the plane); plane/bare = {:.2f}, simulator/plane = {:.2f}\n",
+               plane, plane / bare, r1.impacts_per_s / plane);
     if (std::string(c.name) == "quarry-preg") {
       const sim::Scenario fine = subdivided(s, 10000);
       const Rate rf = simulate(fine, 1);
