@@ -102,37 +102,16 @@ struct PlaneImpact {
   return n / dt;
 }
 
-// The same loop with each impact depending on the one before, as in a trajectory: the rebound
-// is turned back onto the plane as the next incoming velocity (a fresh throw when the block
-// stops or slides). The independent loop above lets the processor overlap many impacts; a
-// trajectory cannot, so this rate is the latency-bound limit of one serial trajectory.
+// The same loop with each impact depending on the one before, as in a trajectory (a fresh
+// throw when the block stops or slides). The independent loop above lets the processor overlap
+// many impacts; a trajectory cannot. How the rebound becomes the next incoming velocity:
+// - Next::mirror: it is turned back onto the plane (the latency a serial trajectory cannot hide);
+// - Next::flight: it is flown back onto the fixed plane in closed form (time of flight
+//   2 v_n / (g n_z)), a block bouncing down an endless uniform slope. No contact search, no
+//   observation lines, no summary: what any serial simulator must do per impact at the least.
+enum class Next { mirror, flight };
+template <Next kNext>
 [[gnu::noinline]] double chained_impact_loop(const sim::Scenario& s, long n) {
-  PlaneImpact pi(s);
-  geometry::Vec2 v = pi.v_throw;
-  double omega = 1.5, sink = 0;
-  const double t0 = now();
-  for (long i = 0; i < n; ++i) {
-    const auto r = pi.resolve(v, omega);
-    const double vn = dot(r.v, pi.seg.n);
-    if (r.result != model::ImpactResult::rebound || vn < 0.5) {
-      v = pi.v_throw;
-      omega = 1.5;
-    } else {
-      v = r.v - 2.0 * vn * pi.seg.n;
-      omega = r.omega;
-    }
-    sink += v.x;
-  }
-  const double dt = now() - t0;
-  if (sink == 42.0) fmt::print("");  // keep the loop
-  return n / dt;
-}
-
-// The simplest trajectory there is: the chained loop with each rebound flown back onto the
-// fixed plane in closed form (time of flight 2 v_n / (g n_z), the landing velocity from it), as
-// a block bouncing down an endless uniform slope. No contact search, no observation lines, no
-// summary: what any serial simulator must do per impact at the least.
-[[gnu::noinline]] double plane_trajectory_loop(const sim::Scenario& s, long n) {
   PlaneImpact pi(s);
   const double g = s.settings.gravity;
   geometry::Vec2 v = pi.v_throw;
@@ -145,11 +124,15 @@ struct PlaneImpact {
       v = pi.v_throw;
       omega = 1.5;
     } else {
-      const double t = 2.0 * vn / (g * pi.seg.n.z);
-      v = {r.v.x, r.v.z - g * t};
+      if constexpr (kNext == Next::mirror) {
+        v = r.v - 2.0 * vn * pi.seg.n;
+      } else {
+        const double t = 2.0 * vn / (g * pi.seg.n.z);
+        v = {r.v.x, r.v.z - g * t};
+      }
       omega = r.omega;
-      sink += t;
     }
+    sink += v.x;
   }
   const double dt = now() - t0;
   if (sink == 42.0) fmt::print("");  // keep the loop
@@ -197,10 +180,10 @@ int main(int argc, char** argv) {
     const double bare = bare_impact_loop(s, quick ? 2'000'000 : 20'000'000);
     fmt::print("  bare impact-law loop   : {:>10.0f} impacts/s; simulator/bare = {:.2f}\n", bare,
                r1.impacts_per_s / bare);
-    const double chained = chained_impact_loop(s, quick ? 2'000'000 : 20'000'000);
+    const double chained = chained_impact_loop<Next::mirror>(s, quick ? 2'000'000 : 20'000'000);
     fmt::print("  chained impact-law loop: {:>10.0f} impacts/s (each impact waits for the one before); simulator/chained = {:.2f}\n",
                chained, r1.impacts_per_s / chained);
-    const double plane = plane_trajectory_loop(s, quick ? 2'000'000 : 20'000'000);
+    const double plane = chained_impact_loop<Next::flight>(s, quick ? 2'000'000 : 20'000'000);
     fmt::print("  plane trajectory loop  : {:>10.0f} impacts/s (chained, each rebound flown back onto the plane); plane/bare = {:.2f}, simulator/plane = {:.2f}\n",
                plane, plane / bare, r1.impacts_per_s / plane);
     if (std::string(c.name) == "quarry-preg") {
