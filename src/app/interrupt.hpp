@@ -1,8 +1,9 @@
 // Ctrl-C (SIGINT), SIGTERM and SIGHUP (the terminal closed) during a run. The first one asks
 // the simulation to stop after the chunks under way; the command then discards its staging
 // folder, so nothing half-written is left in the output folder, and exits with
-// kExitInterrupted. A second one of the same kind ends the program at once (its handler is
-// reset after the first).
+// kExitInterrupted. Another one more than a second later ends the program at once; one sooner
+// is taken for the same request delivered twice (timeout(1) signals the process and then its
+// process group).
 #pragma once
 
 #include <atomic>

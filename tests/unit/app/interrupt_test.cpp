@@ -148,6 +148,24 @@ TEST_F(Interrupt, SigtermLeavesAnExistingFolderAsItWas) {
   EXPECT_EQ(pierre::test::slurp(out / "notes.txt"), "mine\n");
 }
 
+// timeout(1), and a CI runner cancelling a job, send SIGTERM to the process and then to its
+// process group: the same request twice, a moment apart. It must still stop cleanly (before,
+// the second one took the default action and left the staging folder behind).
+TEST_F(Interrupt, ASigtermDeliveredTwiceAtOnceStillStopsCleanly) {
+  const fs::path out = dir_ / "out";
+  const pid_t pid = start_run(out);
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(staged_) << "the run never started";
+  ::kill(pid, SIGTERM);
+  // A millisecond apart: the first has been handled (the two did not merge into one pending
+  // signal) and the stop is under way.
+  std::this_thread::sleep_for(1ms);
+  const int code = signal_and_wait(pid, SIGTERM);
+  if (code == -1) kill_and_reap(pid);
+  EXPECT_EQ(code, 130);
+  EXPECT_FALSE(fs::exists(out));
+}
+
 // Started under nohup (SIGHUP ignored), a run goes on when its terminal closes; Ctrl-C or
 // SIGTERM still stops it.
 TEST_F(Interrupt, ARunStartedUnderNohupIgnoresAHangUp) {
