@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 #include "pierre/design/run_statistics.hpp"
@@ -17,13 +18,20 @@ namespace pierre::app {
 // a second. Disabled (does nothing) unless `enabled`; the caller passes isatty(2) && !quiet.
 class ProgressBar {
  public:
-  explicit ProgressBar(bool enabled);
+  explicit ProgressBar(bool enabled, std::FILE* to = stderr);
+  ~ProgressBar() { finish(); }  // an error's message then starts on a clean line
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
   void update(std::uint64_t done, std::uint64_t total);  // from one thread at a time
-  void finish();                                         // erases the line
+  // Replaces the line with the step under way after the simulation (statistics, bootstraps,
+  // the report): on a large run they take seconds, and the terminal should not fall silent.
+  void stage(std::string_view what);
+  void finish();  // erases the line
 
  private:
   using clock = std::chrono::steady_clock;
   bool enabled_;
+  std::FILE* to_;
   bool drawn_ = false;
   clock::time_point start_, last_;
 };

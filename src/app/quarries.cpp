@@ -266,11 +266,16 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   bar.finish();
+  bar.stage("statistics and the danger zones' bootstraps");
   files.close();
 
   // The bootstrap streams of row k: [simulation].seed + k.
   design::QuarryOutcome outcome = design::design_quarry(inputs, loaded.scenario.settings.seed);
-  if (interrupt.interrupted()) return report_interrupted(o.out.c_str());  // (as run_command)
+  if (interrupt.interrupted()) {  // (as run_command)
+    bar.finish();
+    return report_interrupted(o.out.c_str());
+  }
+  bar.stage("writing summary.json and report.xlsx");
   if (!outcome.design) throw std::runtime_error("quarry danger zones: " + outcome.error);
   io::DesignResults results;
   results.checks = outcome.design->checks;
@@ -291,6 +296,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   report.total_trajectories = total_trajectories;
   report.total_crossings = total_crossings;
   io::write_report(folder->staged(io::kReportXlsx), report, layout);
+  bar.finish();
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});
   if (!o.quiet) print_results(stdout, stats, seconds, written);

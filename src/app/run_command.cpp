@@ -148,18 +148,24 @@ class RunCommand final : public Command {
     bar.finish();
     if (rep.error) throw std::runtime_error("writing the results failed: " + *rep.error);
     if (rep.interrupted || interrupt.interrupted()) return report_interrupted(out_.c_str());
+    bar.stage(loaded.barriers.empty() ? "statistics" : "statistics and the barriers' bootstraps");
     files.close();
 
     const design::RunStatistics stats = design::run_statistics(sc.lines, files.samples());
     const io::DesignResults design_results = compute_barriers(loaded, files.samples(), threads_);
     // The statistics and bootstraps of a large run take seconds: a Ctrl-C during them stops
     // here rather than after the report is written.
-    if (interrupt.interrupted()) return report_interrupted(out_.c_str());
+    if (interrupt.interrupted()) {
+      bar.finish();
+      return report_interrupted(out_.c_str());
+    }
+    bar.stage("writing summary.json and report.xlsx");
     const io::RunInfo info = run_info(loaded, total, sc.blocks.size(), sc.sources.size(), used,
                                       all_crossings_);
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
     write_run_report(folder->staged(io::kReportXlsx), layout, loaded, stats, files.samples(),
                      design_results, std::move(first));
+    bar.finish();
     if (interrupt.interrupted()) return report_interrupted(out_.c_str());
     const auto written = folder->commit({io::kImpactsCsv});
     if (!quiet_) print_results(stdout, stats, seconds, written);
