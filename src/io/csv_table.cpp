@@ -68,6 +68,15 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
+// " (x may be written x_m, z z_m)": how the aliases read in a message.
+std::string alias_note(const ColumnAliases& aliases) {
+  std::string s = " (";
+  for (std::size_t i = 0; i < aliases.size(); ++i)
+    s += fmt::format("{}{}{} {}", i ? ", " : "", aliases[i].second,
+                     i ? "" : " may be written", aliases[i].first);
+  return s + ")";
+}
+
 }  // namespace
 
 std::optional<std::size_t> CsvTable::column(std::string_view name) const {
@@ -95,7 +104,7 @@ double CsvTable::number(const CsvRow& row, std::size_t col) const {
 }
 
 CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
-                  std::string_view expected_header) {
+                  std::string_view expected_header, const ColumnAliases& aliases) {
   std::string text = read_text(file, fmt::format("CSV file with header {}", expected_header));
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
   // Excel's "Unicode text" export is UTF-16: two bytes a character, half of them zero here.
@@ -108,10 +117,19 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
                                  "\"CSV UTF-8\")",
                                  expected_header));
 
+  // The line ends of old Mac spreadsheets ("CSV (Macintosh)"): a CR alone. A CR before an LF
+  // is the end of a Windows line and is trimmed with the line.
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+
   CsvTable t;
   t.file = file;
   long line_no = 0;
   std::size_t pos = 0;
+  auto all_empty = [](const std::vector<std::string>& cells, std::size_t from) {
+    return std::all_of(cells.begin() + static_cast<std::ptrdiff_t>(from), cells.end(),
+                       [](const std::string& c) { return c.empty(); });
+  };
   while (pos < text.size()) {
     std::size_t nl = text.find('\n', pos);
     if (nl == std::string::npos) nl = text.size();
@@ -120,14 +138,22 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
     ++line_no;
     if (line.empty() || line.front() == '#') continue;
     std::vector<std::string> cells = split(line);
+    // A spreadsheet writes every row as wide as its widest: ",,," for a row left empty, and
+    // empty cells after the last column. Both say nothing.
+    if (all_empty(cells, 0)) continue;
     if (t.header.empty()) {
       t.header_line = line_no;
-      for (const std::string& h : cells) {
+      while (cells.back().empty()) cells.pop_back();  // (not all are empty)
+      for (std::string& h : cells) {
         if (auto bad = unwritable_text(h))
           throw InputError(file, line_no, "header", *bad, std::string(kWritableText));
+        // The unit in the name, as pierre's own CSVs write it ("x_m", "mass_kg").
+        for (const auto& [alias, name] : aliases)
+          if (h == alias) h = name;
         if (std::find(allowed.begin(), allowed.end(), h) == allowed.end())
           throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
-                           fmt::format("only the columns {}", join(allowed)));
+                           fmt::format("only the columns {}{}", join(allowed),
+                                       aliases.empty() ? "" : alias_note(aliases)));
         if (std::count(cells.begin(), cells.end(), h) > 1)
           throw InputError(file, line_no, "header", fmt::format("column \"{}\" twice", h),
                            "each column once");
@@ -140,6 +166,8 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
                        fmt::format("nothing (the row has {} of {} columns)", cells.size(),
                                    t.header.size()),
                        fmt::format("a value in every column of {}", join(t.header)));
+    if (cells.size() > t.header.size() && all_empty(cells, t.header.size()))
+      cells.resize(t.header.size());
     if (cells.size() > t.header.size())
       throw InputError(file, line_no, "row", fmt::format("{} columns", cells.size()),
                        fmt::format("{} columns ({})", t.header.size(), join(t.header)));

@@ -1,13 +1,14 @@
 // A small CSV reader for the input tables (profile, blocks): a header line, then rows with
-// exactly as many cells. Blank lines and lines starting with '#' are ignored; cells are
-// trimmed and may be enclosed in double quotes. Every problem is an InputError with the
-// CSV line number.
+// exactly as many cells. Line ends may be LF, CRLF or CR alone. Blank lines and lines starting
+// with '#' are ignored; cells are trimmed and may be enclosed in double quotes. Every problem
+// is an InputError with the CSV line number.
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace pierre::io::detail {
@@ -29,9 +30,14 @@ struct CsvTable {
   double number(const CsvRow& row, std::size_t col) const;
 };
 
-// Reads `file`; every header name must be one of `allowed` (no duplicates). `what` names the
-// table in messages ("profile", "blocks").
+// Other names a column may have in a header: {alias, name}, e.g. {"x_m", "x"}. The table then
+// knows the column by its name.
+using ColumnAliases = std::vector<std::pair<std::string, std::string>>;
+
+// Reads `file`; every header name must be one of `allowed` or an alias of one (no duplicates).
+// `expected_header` says in messages what the header should hold. Empty cells after the last
+// column, and rows of empty cells only, are what spreadsheets write for nothing: ignored.
 CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
-                  std::string_view expected_header);
+                  std::string_view expected_header, const ColumnAliases& aliases = {});
 
 }  // namespace pierre::io::detail

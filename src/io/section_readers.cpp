@@ -78,7 +78,8 @@ std::vector<Vertex> read_inline_points(const TomlTable& prof) {
 }
 
 std::vector<Vertex> read_profile_csv(const fs::path& file) {
-  const CsvTable t = detail::read_csv(file, {"x", "z", "material"}, "x,z,material");
+  const CsvTable t = detail::read_csv(file, {"x", "z", "material"}, "x,z,material",
+                                      {{"x_m", "x"}, {"z_m", "z"}});
   for (std::string_view c : {"x", "z", "material"})
     if (!t.column(c))
       throw InputError(file, t.header_line, "header", fmt::format("no column \"{}\"", c),
@@ -231,7 +232,8 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
                      std::vector<BlockGroup>& groups, std::vector<GroupSource>& where) {
   const CsvTable t = detail::read_csv(
       file, {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"},
-      "mass or volume, and optionally id, density, shape_min, shape_max, count");
+      "mass or volume, and optionally id, density, shape_min, shape_max, count",
+      {{"mass_kg", "mass"}, {"volume_m3", "volume"}, {"density_kg_m3", "density"}});
   const auto c_id = t.column("id"), c_mass = t.column("mass"), c_vol = t.column("volume"),
              c_den = t.column("density"), c_smin = t.column("shape_min"),
              c_smax = t.column("shape_max"), c_count = t.column("count");

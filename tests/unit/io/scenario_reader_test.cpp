@@ -128,6 +128,63 @@ TEST(ScenarioReader, ProfileCsvWithCommentsAndMaterials) {
   EXPECT_EQ(l.scenario.profile.x_max(), 20.0);
 }
 
+// What a spreadsheet writes for nothing: empty cells after the last column (every row as wide
+// as the widest the sheet ever had) and rows of empty cells. Read as the plain file is.
+TEST(ScenarioReader, ProfileCsvFromASpreadsheetWithEmptyTrailingColumns) {
+  TempDir dir;
+  dir.write("p.csv", "x,z,material,,\n0,10,rock,,\n,,,,\n10,0,rock,,\n20,0,,,\n");
+  const auto l = load_scenario(dir.write("s.toml", base_with(9, "file = \"p.csv\"")), kRules);
+  ASSERT_EQ(l.scenario.profile.vertices().size(), 3u);
+  EXPECT_EQ(l.scenario.profile.vertices()[1].x, 10.0);
+  EXPECT_EQ(l.scenario.profile.vertices()[2].x, 20.0);
+  // A trailing cell that is not empty is still a row too long, named with its line.
+  dir.write("p.csv", "x,z,material,,\n0,10,rock,,\n10,0,rock,,5\n20,0,,,\n");
+  try {
+    (void)load_scenario(dir.path() / "s.toml", kRules);
+    FAIL() << "a value beyond the header was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_NE(std::string(e.what()).find("5 columns"), std::string::npos) << e.what();
+  }
+}
+
+// Old Mac spreadsheets end lines with a CR alone; the line numbers still count them.
+TEST(ScenarioReader, ProfileCsvWithCarriageReturnLineEnds) {
+  TempDir dir;
+  dir.write("p.csv", "x,z,material\r0,10,rock\r10,0,rock\r20,0,\r");
+  const auto l = load_scenario(dir.write("s.toml", base_with(9, "file = \"p.csv\"")), kRules);
+  ASSERT_EQ(l.scenario.profile.vertices().size(), 3u);
+  EXPECT_EQ(l.scenario.profile.vertices()[1].z, 0.0);
+  dir.write("p.csv", "x,z,material\r0,10,rock\r10,zero,rock\r20,0,\r");
+  try {
+    (void)load_scenario(dir.path() / "s.toml", kRules);
+    FAIL() << "a word for a number was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+  }
+}
+
+// The units in the column names, as pierre's own CSVs write them (start_x_m, mass_kg).
+TEST(ScenarioReader, CsvColumnsMayCarryTheirUnits) {
+  TempDir dir;
+  dir.write("p.csv", "x_m,z_m,material\n0,10,rock\n10,0,rock\n20,0,\n");
+  dir.write("b.csv", "id,volume_m3,density_kg_m3\nB1,0.5,2000\n");
+  auto toml = base_with(9, "file = \"p.csv\"");
+  toml.replace(toml.find("[blocks]"), 8, "[blocks]\nfile = \"b.csv\"");
+  const auto l = load_scenario(dir.write("s.toml", toml), kRules);
+  EXPECT_EQ(l.scenario.profile.vertices()[0].z, 10.0);
+  ASSERT_GE(l.scenario.blocks.size(), 1u);
+  EXPECT_DOUBLE_EQ(l.scenario.blocks[0].mass, 1000.0);  // 0.5 m³ × 2000 kg/m³
+  // A column under both its names is there twice.
+  dir.write("p.csv", "x,x_m,z,material\n0,0,10,rock\n10,10,0,rock\n");
+  try {
+    (void)load_scenario(dir.path() / "s.toml", kRules);
+    FAIL() << "x and x_m together were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("twice"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScenarioReader, TestDataScenarioIsValid) {
   const auto l = load_scenario(PIERRE_TEST_DATA "/small/scenario.toml", kRules);
   EXPECT_EQ(l.scenario.blocks.size(), 2u);
