@@ -177,6 +177,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"csv_header_only", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n"}}, "p.csv", 1, "profile", "0 vertex rows"},
         Case{"csv_missing_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,0\n20,0,\n"}}, "p.csv", 3, "material", "2 of 3"},
         Case{"csv_extra_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock,1\n20,0,\n"}}, "p.csv", 2, "row", "4 columns"},
+        // Empty trailing cells are ignored (a spreadsheet's), a value in one is not.
+        Case{"csv_value_beyond_empty_header_cells", {{9, kCsvProfile}}, {{"p.csv", "x,z,material,,\n0,10,rock,,\n10,0,rock,,5\n20,0,,,\n"}}, "p.csv", 3, "row", "5 columns"},
+        Case{"csv_cr_line_ends_bad_number", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\r0,10,rock\r10,zero,rock\r20,0,\r"}}, "p.csv", 3, "z", "\"zero\""},
+        Case{"csv_column_and_its_unit_alias", {{9, kCsvProfile}}, {{"p.csv", "x,x_m,z,material\n0,0,10,rock\n10,10,0,rock\n"}}, "p.csv", 1, "header", "column \"x\" twice"},
         Case{"csv_non_numeric", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,abc,rock\n20,0,\n"}}, "p.csv", 3, "z", "\"abc\""},
         Case{"csv_nan", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,nan,rock\n20,0,\n"}}, "p.csv", 2, "z", "\"nan\""},
         Case{"csv_unknown_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material,colour\n0,10,rock,red\n"}}, "p.csv", 1, "header", "colour"},
