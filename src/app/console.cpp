@@ -165,7 +165,7 @@ std::string g(double v, int width) {
 void print_design(std::FILE* out, const io::DesignResults& r) {
   if (r.barriers.empty() && r.checks.empty()) return;
   if (!r.barriers.empty()) {
-    fmt::print(out, "\nBarriers (ETAG 027, design-checks.md §1; characteristic values at the rule set's percentile)\n");
+    fmt::print(out, "\nBarriers (ETAG 027, docs/barriers.md; characteristic values at the rule set's percentile)\n");
     fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>10} {:>10} {:>6} {:>7}\n", "barrier",
                "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req kJ", "SEL_req kJ",
                "class", "h_i m");

@@ -90,7 +90,7 @@ void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint6
 
 void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
   fmt::print(out,
-             "\nQuarry danger zones (design-checks.md §2; thesis Tables 6.2, 6.3): horizontal "
+             "\nQuarry danger zones (docs/quarry.md; thesis Tables 6.2, 6.3): horizontal "
              "distances from the toe,\ncalculated / observed where observed values are given\n");
   fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", "row", "n", "H m",
              "", "P50", "P95", "P99", "max", "governing");
@@ -134,7 +134,7 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
       fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", l.label, pair(p50, o50, p),
                  pair(p95, o95, p), metres(p99, 0, p), pair(mx, omx, p), gov);
     }
-    // A group's sections, each on its own (design-checks.md §2: per section and pooled).
+    // A group's sections, each on its own (docs/quarry.md: per section and pooled).
     if (r.sections.size() > 1)
       for (std::size_t i : r.sections) {
         const design::QuarrySectionResult& sec = d.sections[i];

@@ -78,7 +78,7 @@ class RunCommand final : public Command {
       c->footer(
           "Example:\n"
           "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
-          "runs like `pierre run`, computes every [[barriers]] entry (design-checks.md §1), writes\n"
+          "runs like `pierre run`, computes every [[barriers]] entry (docs/barriers.md), writes\n"
           "summary.json with \"barriers\" and \"checks\" and report.xlsx, prints the check lines.\n"
           "A quarry scenario ([[quarries]], docs/quarry.md): every section's danger zone and its\n"
           "checks (zone.<work area>, bench.*), summary.json \"quarries\" and \"checks\".\n"

@@ -12,19 +12,19 @@
 
 namespace pierre::io::detail {
 
-// design-checks.md §1 step 8: a 90 % interval from at least 1000 resamples. A rule set may ask
+// docs/barriers.md step 8: a 90 % interval from at least 1000 resamples. A rule set may ask
 // for more (a wider interval, more resamples), not for less.
 inline void read_bootstrap_size(const TomlTable& t, std::string_view confidence_key,
                                 std::string_view resamples_key, double& confidence,
                                 std::size_t& resamples) {
   confidence = t.number(confidence_key, confidence);
   t.check(confidence_key, confidence >= design::kMinBootstrapConfidence && confidence < 1,
-          fmt::format("a confidence from {} to below 1 (design-checks.md §1 step 8: a 90 % "
+          fmt::format("a confidence from {} to below 1 (docs/barriers.md step 8: a 90 % "
                       "interval)", design::kMinBootstrapConfidence));
   if (const auto n = t.integer(resamples_key)) {
     const auto least = static_cast<std::int64_t>(design::kMinBootstrapResamples);
     t.check(resamples_key, *n >= least && *n <= 1'000'000,
-            fmt::format("an integer from {} to 1000000 (design-checks.md §1 step 8: at least "
+            fmt::format("an integer from {} to 1000000 (docs/barriers.md step 8: at least "
                         "{})", least, least));
     resamples = static_cast<std::size_t>(*n);
   }
