@@ -32,6 +32,21 @@
 namespace pierre::app {
 namespace {
 
+// A whole number in [lo, hi], checked as text: CLI11's own range check calls "1.5" out of
+// range, and turns a number past the int64 range into its largest value (so two different
+// seeds would give the same run).
+CLI::Validator whole_number(std::int64_t lo, std::int64_t hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        std::int64_t v = 0;
+        const char* end = text.data() + text.size();
+        const auto [p, ec] = std::from_chars(text.data(), end, v);
+        if (ec == std::errc{} && p == end && v >= lo && v <= hi) return {};
+        return fmt::format("found {}, expected a whole number from {} to {}", text, lo, hi);
+      },
+      fmt::format("INT in [{} - {}]", lo, hi));
+}
+
 class RunCommand final : public Command {
  public:
   explicit RunCommand(bool check) : check_(check) {}
@@ -46,24 +61,12 @@ class RunCommand final : public Command {
     c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
         ->required();
     c->add_option("--out,-o", out_, "Output folder (created when missing)")->required();
-    // Checked as text: CLI11 turns a number past the int64 range into its largest value, so
-    // two different seeds would give the same run. (The scenario's seed is a TOML integer,
-    // with the same range.)
     seed_opt_ = c->add_option("--seed", seed_, "Seed, an integer >= 0 (overrides simulation.seed)")
-                    ->check(CLI::Validator(
-                        [](std::string& text) -> std::string {
-                          std::int64_t v = 0;
-                          const char* end = text.data() + text.size();
-                          const auto [p, ec] = std::from_chars(text.data(), end, v);
-                          if (ec == std::errc{} && p == end && v >= 0) return {};
-                          return fmt::format("Value {} is not a whole number from 0 to {}", text,
-                                             std::numeric_limits<std::int64_t>::max());
-                        },
-                        "INT in [0 - 9223372036854775807]"));
+                    ->check(whole_number(0, std::numeric_limits<std::int64_t>::max()));
     c->add_option("--threads", threads_, "Worker threads (0: every hardware thread)")
-        ->check(CLI::Range(0u, 4096u));
+        ->check(whole_number(0, 4096));
     throws_opt_ = c->add_option("--throws", throws_, "Throws per block and source (overrides simulation.throws)")
-                      ->check(CLI::Range(1u, std::numeric_limits<std::uint32_t>::max()));
+                      ->check(whole_number(1, std::numeric_limits<std::uint32_t>::max()));
     c->add_flag("--quiet,-q", quiet_,
                 check_ ? "No progress bar and no results table (the check lines are still printed)"
                        : "No progress bar and no results table");

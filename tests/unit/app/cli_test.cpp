@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -233,8 +234,19 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   for (const char* seed : {"-1", "9223372036854775808", "18446744073709551615", "1e3", "12x"}) {
     const Result r = pierre(run + " --seed " + seed);
     EXPECT_EQ(r.code, 2) << seed;
-    EXPECT_NE(r.err.find(std::string("Value ") + seed +
-                         " is not a whole number from 0 to 9223372036854775807"),
+    EXPECT_NE(r.err.find(std::string("--seed: found ") + seed +
+                         ", expected a whole number from 0 to 9223372036854775807"),
+              std::string::npos)
+        << r.err;
+  }
+  // --throws and --threads the same way: a fraction is not a whole number (CLI11 called 1.5
+  // "not in range 1 to 4294967295").
+  for (const auto& [option, value, range] :
+       {std::tuple{"--throws", "1.5", "1 to 4294967295"}, std::tuple{"--throws", "0", "1 to 4294967295"},
+        std::tuple{"--threads", "abc", "0 to 4096"}, std::tuple{"--threads", "4097", "0 to 4096"}}) {
+    const Result r = pierre(run + " " + option + " " + value);
+    EXPECT_EQ(r.code, 2) << option << " " << value;
+    EXPECT_NE(r.err.find(std::string(option) + ": found " + value + ", expected a whole number from " + range),
               std::string::npos)
         << r.err;
   }
