@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <system_error>
 #include <thread>
 
 #include <fmt/format.h>
@@ -15,14 +17,36 @@ unsigned threads_used(unsigned requested, std::uint64_t chunks) {
                                                          std::max<std::uint64_t>(1, chunks)));
 }
 
+namespace {
+
+// Why `out` cannot be the output folder, said as the other input errors are: the usual causes
+// by name (no path, a file in the way), else the system's reason.
+std::string output_folder_problem(const std::string& out, const std::error_code& code) {
+  namespace fs = std::filesystem;
+  if (out.empty()) return "--out: found an empty path, expected a folder";
+  std::error_code ec;
+  for (fs::path at = out; !at.empty(); at = at.parent_path()) {
+    if (fs::exists(at, ec)) {  // the nearest part of the path that exists
+      if (fs::is_directory(at, ec)) break;
+      return at == fs::path(out)
+                 ? fmt::format("--out: found {}, a file, expected a folder", out)
+                 : fmt::format("--out: found {}, under the file {}, expected a folder", out,
+                               at.string());
+    }
+    if (at == at.parent_path()) break;
+  }
+  const bool exists = fs::is_directory(out, ec);
+  return fmt::format("--out: found {} ({}), expected a folder pierre can {}", out,
+                     code.message(), exists ? "write in" : "create");
+}
+
+}  // namespace
+
 std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out) {
   try {
     return std::make_unique<io::OutputFolder>(out);
   } catch (const std::filesystem::filesystem_error& e) {
-    std::error_code ec;
-    const bool exists = std::filesystem::is_directory(out, ec);
-    fmt::print(stderr, "error: cannot {} the output folder {}: {}\n",
-               exists ? "write in" : "create", out, e.code().message());
+    fmt::print(stderr, "error: {}\n", output_folder_problem(out, e.code()));
     return nullptr;
   }
 }

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -475,6 +476,24 @@ TEST_F(Cli, BlocksLeavingTheProfileAreNoted) {
 
 // A verdict that never reached stdout (a full disk, here /dev/full) is not a success: exit 3
 // and a message on stderr, not 0 with the output lost.
+// An --out that cannot be a folder is named, with why, before anything is simulated; the file in
+// the way is left as it was.
+TEST_F(Cli, AnOutputPathThatCannotBeAFolderIsRefusedByName) {
+  const fs::path file = dir_ / "afile";
+  std::ofstream(file) << "mine\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {q(file), "--out: found " + file.string() + ", a file, expected a folder"},
+      {q(file / "sub"), "--out: found " + (file / "sub").string() + ", under the file " +
+                            file.string() + ", expected a folder"},
+      {"''", "--out: found an empty path, expected a folder"}};
+  for (const auto& [out, message] : cases) {
+    const Result r = pierre("run " + kScenario + " --quiet --out " + out);
+    EXPECT_EQ(r.code, 2) << out;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(slurp(file), "mine\n");
+}
+
 TEST_F(Cli, OutputThatCannotBeWrittenIsAnError) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
   const fs::path e = dir_ / "stderr.txt";
