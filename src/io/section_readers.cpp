@@ -196,9 +196,13 @@ std::string shape_expected() {
 }
 
 std::optional<ShapeRange> read_shape(const TomlTable& t) {
-  const toml::array* a = t.array("shape_factor");
-  if (!a) return std::nullopt;
-  if (a->size() != 2) t.fail("shape_factor", shape_expected());
+  const toml::node* n = t.find("shape_factor");
+  if (!n) return std::nullopt;
+  const toml::array* a = n->as_array();
+  if (!a) t.fail("shape_factor", shape_expected());  // e.g. one number: found 1.2
+  if (a->size() != 2)
+    throw InputError(t.file(), line_of(*n), t.field("shape_factor"),
+                     fmt::format("an array of {} values", a->size()), shape_expected());
   double v[2];
   for (std::size_t k = 0; k < 2; ++k) {
     const toml::node& c = *a->get(k);

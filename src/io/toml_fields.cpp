@@ -79,10 +79,14 @@ std::optional<std::filesystem::path> TomlTable::file_path(std::string_view key,
   else if (std::filesystem::is_directory(st))
     problem = "a folder, not a file: " + full.string();
   if (problem.empty()) return full;
+  const std::string relative_to_what =
+      std::filesystem::path(*name).is_absolute()
+          ? std::string()
+          : fmt::format(" (a path relative to {})", file_.parent_path().empty()
+                                                        ? std::string("the current folder")
+                                                        : file_.parent_path().string());
   throw InputError(file_, line_of(*find(key)), field(key), "\"" + *name + "\" (" + problem + ")",
-                   fmt::format("a readable {} (a path relative to {})", what,
-                               file_.parent_path().empty() ? std::string("the current folder")
-                                                           : file_.parent_path().string()));
+                   fmt::format("a readable {}{}", what, relative_to_what));
 }
 
 void TomlTable::missing(std::string_view key, std::string_view expected) const {

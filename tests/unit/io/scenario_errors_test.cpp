@@ -87,6 +87,28 @@ TEST(ScenarioSyntax, RowsAfterAnInlineTableSayToWriteATable) {
   }
 }
 
+// A missing file's expectation says where a relative path is looked for, and nothing of the
+// sort for an absolute one (it was "a path relative to the current folder" for /nonexist/p.csv).
+TEST(ScenarioFiles, AMissingFileSaysWhereARelativePathIsLookedFor) {
+  TempDir dir;
+  const std::string absolute = (dir.path() / "nowhere" / "p.csv").string();
+  for (const std::string& name : {std::string("p.csv"), absolute}) {
+    auto lines = base_lines();
+    lines.at(8) = "file = \"" + name + "\"";
+    std::string text;
+    for (const auto& l : lines) text += l + "\n";
+    try {
+      (void)load_scenario(dir.write("s.toml", text), kRules);
+      FAIL() << "no InputError for " << name;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "profile.file");
+      const bool says_relative = e.expected().find("a path relative to " + dir.path().string()) !=
+                                 std::string::npos;
+      EXPECT_EQ(says_relative, name == "p.csv") << e.expected();
+    }
+  }
+}
+
 const std::string kCsvProfile = "file = \"p.csv\"";
 const std::string kCrossingRows = "x,z,material\n0,10,rock\n10,0,rock\n10,10,rock\n0,0,\n";
 
@@ -218,6 +240,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"shape_below", {{18, "mass = 100.0\nshape_factor = [0.6, 1.0]"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "[0.6, 1"},
         Case{"shape_min_above_max", {{18, "mass = 100.0\nshape_factor = [1.5, 1.2]"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "[1.5, 1.2]"},
         Case{"shape_above", {{18, "mass = 100.0\nshape_factor = [1.0, 2.1]"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "2.1]"},
+        Case{"shape_one_number", {{18, "mass = 100.0\nshape_factor = 1.2"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "1.2"},
+        Case{"shape_three_values", {{18, "mass = 100.0\nshape_factor = [1.0, 1.2, 1.5]"}}, {}, "s.toml", 19, "blocks.table[0].shape_factor", "an array of 3 values"},
         Case{"shape_default_above", {{16, "[blocks]\nshape_factor = [1.0, 2.5]"}}, {}, "s.toml", 17, "blocks.shape_factor", "2.5]"},
         Case{"shape_csv", {{16, "[blocks]\nfile = \"b.csv\""}, {17, ""}, {18, ""}}, {{"b.csv", "mass,shape_min,shape_max\n100,1.0,1.5\n200,0.5,1.0\n"}}, "b.csv", 3, "shape_min", "0.5"},
         // blocks CSV
