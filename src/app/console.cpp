@@ -183,13 +183,19 @@ void print_design(std::FILE* out, const io::DesignResults& r) {
   for (const auto& c : r.checks)
     fmt::print(out, "{:<18} {:<20} {} {} {:<4} {:<6} {}\n", c.subject, c.id, g(c.value, 10),
                g(c.limit, 10), c.unit, design::to_string(c.status), c.rule);
+  // The reasons: FAIL and WARN first, then why a line does not apply (an N/A line still shows a
+  // value and a limit, e.g. a candidate's SEL below SEL_req when the rule set designs on MEL).
   bool header = false;
-  for (const auto& c : r.checks) {
-    if (c.status != design::CheckStatus::fail && c.status != design::CheckStatus::warn) continue;
-    if (!header) fmt::print(out, "\n");
-    header = true;
-    fmt::print(out, "{} {} {}: {}\n", design::to_string(c.status), c.subject, c.id, c.reason);
-  }
+  for (const bool judged : {true, false})
+    for (const auto& c : r.checks) {
+      const bool is_judged =
+          c.status == design::CheckStatus::fail || c.status == design::CheckStatus::warn;
+      if (is_judged != judged || c.status == design::CheckStatus::pass || c.reason.empty())
+        continue;
+      if (!header) fmt::print(out, "\n");
+      header = true;
+      fmt::print(out, "{} {} {}: {}\n", design::to_string(c.status), c.subject, c.id, c.reason);
+    }
   const std::size_t fails = static_cast<std::size_t>(std::count_if(
       r.checks.begin(), r.checks.end(), [](const auto& c) { return c.status == design::CheckStatus::fail; }));
   fmt::print(out, "\n{} check line{}, {} FAIL\n", r.checks.size(), r.checks.size() == 1 ? "" : "s", fails);

@@ -44,7 +44,7 @@ void print_results(std::FILE* out, const design::RunStatistics& stats, double se
                    const std::vector<std::filesystem::path>& files);
 
 // The barriers' design values, then every check line as a table (subject, id, value, limit,
-// unit, status, rule), then the reason of each line that is not PASS or N/A.
+// unit, status, rule), then the reason of each FAIL and WARN line, then of each N/A line.
 void print_design(std::FILE* out, const io::DesignResults& results);
 
 }  // namespace pierre::app
