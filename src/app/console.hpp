@@ -37,7 +37,8 @@ class ProgressBar {
 };
 
 // A note for each source whose ground falls towards the profile's first vertex (its blocks
-// travel against the main direction, in which observation lines count first crossings).
+// travel against the main direction, in which observation lines count first crossings), and
+// for each material that no segment uses.
 void print_source_notes(std::FILE* out, const sim::Scenario& scenario);
 
 void print_results(std::FILE* out, const design::RunStatistics& stats, double seconds,

@@ -199,6 +199,21 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   EXPECT_TRUE(pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o")).out.empty());
 }
 
+// A material that no segment uses is noted (it changes nothing; often one left over); the used
+// one is not.
+TEST_F(Cli, AMaterialNoSegmentUsesIsNoted) {
+  std::ofstream(dir_ / "s.toml") << one_block_scenario(
+      {"spare material", 2, "points = [[0.0, 100.0, \"t\"], [200.0, 0.0, \"\"]]", "t",
+       "preset = \"talus\"\n[materials.spare]\npreset = \"talus\"", 1000,
+       "x = 1.0\nz = 101.0"});
+  const Result v = pierre("validate " + q(dir_ / "s.toml"));
+  EXPECT_EQ(v.code, 0) << v.err;
+  EXPECT_NE(v.out.find("Note: material \"spare\" is defined but no segment of the profile uses it."),
+            std::string::npos)
+      << v.out;
+  EXPECT_EQ(v.out.find("material \"t\" is defined"), std::string::npos) << v.out;
+}
+
 TEST_F(Cli, HelpShowsExamplesAndExitsZero) {
   for (const char* args : {"--help", "run --help", "validate --help"}) {
     const Result r = pierre(args);
