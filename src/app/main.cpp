@@ -49,6 +49,20 @@ int main(int argc, char** argv) {
     } catch (const CLI::Success& e) {  // --help, --help-all, --version
       app.exit(e);
       return kExitOk;
+    } catch (const CLI::ExtrasError& e) {
+      // CLI11 lists the extra arguments back to front ("foo --out" for --out foo): name them in
+      // the order they were typed, with the command they do not belong to.
+      for (CLI::App* c : subs)
+        if (c->parsed()) {
+          std::vector<std::string> extra = c->remaining();
+          std::string words;
+          for (const auto& w : extra) words += (words.empty() ? "" : " ") + w;
+          std::fprintf(stderr, "pierre %s: found %s, expected no more arguments (pierre %s --help)\n",
+                       c->get_name().c_str(), words.c_str(), c->get_name().c_str());
+          return kExitInput;
+        }
+      app.exit(e);
+      return kExitInput;
     } catch (const CLI::ParseError& e) {
       // A misspelt command: CLI11 says only that one is required. Name it and the commands.
       if (argc > 1 && argv[1][0] != '-' &&

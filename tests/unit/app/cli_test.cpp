@@ -242,6 +242,11 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_FALSE(r.err.empty()) << args;
   }
   EXPECT_FALSE(fs::exists(dir_ / "x"));
+  // Arguments a command does not take are named in the order they were typed (CLI11 reversed
+  // them: "foo --out").
+  EXPECT_NE(pierre("validate " + kScenario + " --out foo").err.find(
+                "pierre validate: found --out foo, expected no more arguments"),
+            std::string::npos);
   // A misspelt command is named, with the commands there are.
   EXPECT_NE(pierre("chek " + kScenario).err.find("chek: not a command; expected run, check or validate"),
             std::string::npos);
