@@ -226,6 +226,52 @@ TEST(ImpactLaw, StopsWhenEnergyHeadBelowQuarterRadius) {
   }
 }
 
+// Spin counts in the stopping energy (Eq 3.13: E = ½ m v² + ½ I ω²). The 1 m/s drop above stops
+// without spin; with ω = 10 rad/s it does not, though its translational head after the impact
+// is below c_stop R: by hand, with θ = 0 on level ground the slip is u = ω R = 6.20 m/s,
+// uncontained (k_t |u| / (κ (1 + k_n) |v_n|) ≈ 0.84 > tan 30°), so |v_t⁺| = tan φ (1 + k_n) = 1.14
+// m/s and v_n⁺ = 0.988 m/s: translational head 0.116 m < 0.155 m; ω⁺ R = k_t u − (κ − 1) p ≈
+// 3.0 m/s adds 0.2 (ω⁺ R)² / g ≈ 0.19 m. (Leaving ½ I ω² out of the stopping energy passed every
+// model test.)
+TEST(ImpactLaw, SpinKeepsABlockFromStopping) {
+  const ImpactLaw law = fixed_theta_law();
+  const Block b = pierre::test::make_block(2650);  // R = 0.6204 m, c_stop R = 0.155 m
+  const Material m = pierre::test::make_material(50, 50, 0.0, 30);
+  const Segment s = segment_at(0);
+  const auto still = law.resolve({0, -1.0}, 0.0, s, law.surface(m), law.block(b),
+                                 ImpactDraws{0.5, 0.5, false});
+  EXPECT_EQ(still.result, ImpactResult::stopped);
+  const auto spun = law.resolve({0, -1.0}, 10.0, s, law.surface(m), law.block(b),
+                                ImpactDraws{0.5, 0.5, false});
+  ASSERT_NE(spun.result, ImpactResult::stopped);
+  const double c_stop_r = 0.25 * b.radius();
+  const double translational_head = dot(spun.v, spun.v) / (2 * g);
+  const double rotational_head = 0.5 * b.inertia() * spun.omega * spun.omega / (b.mass * g);
+  EXPECT_NEAR(translational_head, 0.116, 0.002);
+  EXPECT_LT(translational_head, c_stop_r);
+  EXPECT_GT(translational_head + rotational_head, c_stop_r);
+}
+
+// §3 step 7: a rebound whose velocity along the true normal is at most 10⁻⁶ m/s becomes sliding,
+// with that component removed; just above it, a rebound. θ = 0 on level ground, so v_n⁺ = k_n |v_n|
+// with k_n = A/(R v_n² + A) ≈ 1 at these speeds: |v_n| = 0.9·10⁻⁶ m/s slides, 2·10⁻⁶ m/s rebounds.
+TEST(ImpactLaw, AReboundThatWouldNotLeaveTheSurfaceSlides) {
+  const ImpactLaw law = fixed_theta_law();
+  const Block b = pierre::test::make_block(2650);
+  const Material m = pierre::test::make_material(50, 50, 0.0, 30);
+  const Segment s = segment_at(0);
+  const auto slides = law.resolve({5.0, -0.9e-6}, 0.0, s, law.surface(m), law.block(b),
+                                  ImpactDraws{0.5, 0.5, false});
+  EXPECT_EQ(slides.result, ImpactResult::sliding);
+  EXPECT_EQ(dot(slides.v, s.n), 0.0);  // exactly along the ground
+  EXPECT_GT(slides.v.x, 0.0);
+  const auto rebounds = law.resolve({5.0, -2e-6}, 0.0, s, law.surface(m), law.block(b),
+                                    ImpactDraws{0.5, 0.5, false});
+  EXPECT_EQ(rebounds.result, ImpactResult::rebound);
+  const double kn = hyperbolic_factor(b.radius() * 4e-12, hyperbola_constant(50, 0.5));
+  EXPECT_NEAR(dot(rebounds.v, s.n), kn * 2e-6, 1e-15);
+}
+
 // The TR record's slope angle: the true surface's descent in the travel direction, in degrees;
 // level ground is 0, written "0" (not −0, which atan2(−0, x) gives).
 TEST(ImpactLaw, RecordedSlopeAngleIsTheDescentInTheTravelDirection) {

@@ -63,7 +63,7 @@ TEST(Roughness, TruncatedNormalMomentsMatchClosedForm) {
 
 // A mean far below 0 (μ/σ = −10): the truncated normal keeps Φ(−10) ≈ 7.6e-24 of the normal, so
 // 1 − Φ(10) rounds to 1 and a sampler that inverts from the lower end draws +∞ every time. Its
-// mean is μ + σ φ(α)/Φ(−α) with α = −μ/σ (the inverse Mills ratio), 0.04906 here, and its CDF
+// mean is μ + σ φ(α)/Φ(−α) with α = −μ/σ (the inverse Mills ratio), 0.049047 here, and its CDF
 // F(x) = 1 − Φ(−(x − μ)/σ) / Φ(μ/σ), both evaluated from the upper tail where they keep digits.
 TEST(Roughness, TruncatedNormalFarBelowZeroIsStillDrawn) {
   RoughnessModel r;

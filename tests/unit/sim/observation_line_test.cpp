@@ -44,6 +44,29 @@ TEST(ObservationTally, CrossingsAreWrittenInLineOrderForUnsortedLines) {
   EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{0, 1, 2, 3, 2}));
 }
 
+// A crossing on a falling arc, by hand: from (0, 5) m at (10, 12) m/s under g = 9.81 m/s², the
+// line at x = 20 is reached after 2 s, at z = 5 + 24 − 19.62 = 9.38 m (the ground is z = 0), with
+// v = (10, 12 − 19.62) = (10, −7.62) m/s. (Every other call here has g = 0: dropping −½gt² from
+// the height, or −gt from v_z, passed every sim test.)
+TEST(ObservationTally, ACrossingOnAFallingArcIsWhereTheParabolaIs) {
+  const auto prof = test::make_profile({{0, 0}, {100, 0}});
+  ObservationTally tally({{"L", 20}}, prof, false);
+  std::vector<Crossing> out;
+  tally.output(&out);
+  tally.begin(3, 0, 100.0, 2.0);
+  tally.flight({0, 5}, {10, 12}, 1.5, 4.0, 3.0, 9.81);
+  ASSERT_EQ(out.size(), 1u);
+  const Crossing& c = out[0];
+  EXPECT_DOUBLE_EQ(c.time, 6.0);  // t0 + 2 s
+  EXPECT_NEAR(c.height, 9.38, 1e-12);
+  EXPECT_NEAR(c.velocity.x, 10.0, 1e-12);
+  EXPECT_NEAR(c.velocity.z, -7.62, 1e-12);
+  EXPECT_NEAR(c.speed, std::sqrt(100 + 7.62 * 7.62), 1e-12);
+  EXPECT_NEAR(c.translational_energy, 0.5 * 100 * (100 + 7.62 * 7.62), 1e-9);
+  EXPECT_NEAR(c.rotational_energy, 0.5 * 2.0 * 1.5 * 1.5, 1e-12);
+  EXPECT_FALSE(c.sliding);
+}
+
 TEST(ObservationTally, ArcsAreHalfOpenAndEveryCrossingIsKeptWhenAsked) {
   const auto prof = test::make_profile({{0, 0}, {100, 0}});
   ObservationTally tally(kUnsorted, prof, true);

@@ -251,9 +251,10 @@ TEST(Trajectory, AConcaveVertexIsOneEventAgainstTheImpactLimit) {
     const auto& t = r.trajectories.at(0);
     ASSERT_GE(r.impacts.size(), 1u);
     EXPECT_EQ(r.impacts.front().position.x, 1.0);  // slid into the vertex: the first impact
-    if (t.stop_reason == StopReason::impact_limit) {
-      EXPECT_GE(t.impacts, 1u) << limit;
-    }
+    // Every event here is an impact (the V's vertex, then its flanks), so the limit ends the
+    // block after exactly that many.
+    EXPECT_EQ(t.stop_reason, StopReason::impact_limit) << limit;
+    EXPECT_EQ(t.impacts, static_cast<std::uint32_t>(limit)) << limit;
   }
   s.settings.max_impacts = 1;
   const auto t = run(s, 1).trajectories.at(0);
