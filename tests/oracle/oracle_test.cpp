@@ -225,6 +225,14 @@ const char* result_name(model::ImpactResult r) {
   return r == model::ImpactResult::rebound ? "rebound" : r == model::ImpactResult::sliding ? "sliding" : "stopped";
 }
 
+// The kinds of divergence that no decision within a hair of its threshold explains. A correct
+// core shows none on these scenarios; a wrong one on a rare path does (changing a sliding result
+// into a stop parted 0.6 % of the Vaujany trajectories "after the last impact", well inside the
+// agreement share).
+const std::string kAfterLastImpact = "after the last impact (final flight or slide)";
+const std::string kFlippedByStepError = "a decision flipped by accumulated step error";
+const std::string kUnclassified = "step error amplified (unclassified)";
+
 // Walks the two impact sequences to the first impact where they part — a different decision
 // (rebound, sliding, stop), a different segment, or a point or incident velocity outside the
 // step-error budget — and says what decided it there.
@@ -253,7 +261,7 @@ Divergence classify(const RunPair& r, std::size_t i) {
   std::ostringstream os;
   if (k == n) {
     // Every impact both made agrees; the difference arose after the last one.
-    d.kind = "after the last impact (final flight or slide)";
+    d.kind = kAfterLastImpact;
     os << "core " << e - b << " impacts, oracle " << o.size();
     d.detail = os.str();
     return d;
@@ -298,7 +306,7 @@ Divergence classify(const RunPair& r, std::size_t i) {
   else if (k > 0 && r.core.impacts[b + k - 1].segment != ci.segment)
     d.kind = "flight across a slope break (landing point sensitive to the take-off)";
   else
-    d.kind = flipped ? "a decision flipped by accumulated step error" : "step error amplified (unclassified)";
+    d.kind = flipped ? kFlippedByStepError : kUnclassified;
   return d;
 }
 
@@ -337,10 +345,18 @@ double agreeing_share(const RunPair& r) {
 // vertices or other seeds, and still separates right from wrong by a wide margin.
 constexpr double kMinShare = 0.90;
 
-void check_agreement(const RunPair& r, const char* name) {
+// What a comparison exercised (counted on the oracle's side), for each test to hold to the paths
+// its scenario was built for.
+struct Exercised {
+  std::size_t impacts = 0, launches = 0, vertex_hits = 0, slides = 0, friction_stops = 0;
+};
+
+Exercised check_agreement(const RunPair& r, const char* name) {
+  Exercised ex;
   const std::size_t n = r.scenario.trajectory_count();
-  ASSERT_EQ(r.core.trajectories.size(), n);
-  ASSERT_EQ(r.oracle.size(), n);
+  EXPECT_EQ(r.core.trajectories.size(), n);
+  EXPECT_EQ(r.oracle.size(), n);
+  if (r.core.trajectories.size() != n || r.oracle.size() != n) return ex;
   std::size_t agree = 0, same_impacts = 0, bad_reason = 0, bad_first = 0, bad_stop = 0, bad_cross = 0;
   std::size_t impacts = 0, launches = 0, vertex_hits = 0, slides = 0, friction_stops = 0;
   std::vector<double> stop_ratio;
@@ -395,6 +411,16 @@ void check_agreement(const RunPair& r, const char* name) {
   EXPECT_GE(share, kMinShare) << name;
   // The first impact precedes every decision: it must agree for every trajectory.
   EXPECT_EQ(bad_first, 0u) << name;
+  // Every diverging trajectory is explained by a decision within a hair of its threshold (or a
+  // grazing landing): the share above cannot see a bug confined to a few percent of them.
+  for (const std::string& unexplained : {kAfterLastImpact, kFlippedByStepError, kUnclassified})
+    EXPECT_EQ(kinds.count(unexplained) ? kinds.at(unexplained) : 0, 0) << name << ": " << unexplained;
+  ex.impacts = impacts;
+  ex.launches = launches;
+  ex.vertex_hits = vertex_hits;
+  ex.slides = slides;
+  ex.friction_stops = friction_stops;
+  return ex;
 }
 
 // Two-sample KS of oracle against core (the issue asks for it). Tolerance p > 0.01: were the two
@@ -470,9 +496,25 @@ void check_distributions(const RunPair& r) {
 
 }  // namespace
 
-TEST(TimeStepOracle, VaujanyTrajectoriesAgree) { check_agreement(vaujany_run(), "vaujany-2d"); }
-TEST(TimeStepOracle, QuarryTrajectoriesAgree) { check_agreement(quarry_run(), "quarry-preg"); }
-TEST(TimeStepOracle, SlidingChuteTrajectoriesAgree) { check_agreement(chute_run(), "sliding chute"); }
+// Each comparison is held to the paths it is there for (the counts were printed, never asserted).
+TEST(TimeStepOracle, VaujanyTrajectoriesAgree) {
+  const Exercised ex = check_agreement(vaujany_run(), "vaujany-2d");
+  EXPECT_GE(ex.impacts, 500u * 20);  // a long talus slope: tens of impacts a trajectory
+  EXPECT_GE(ex.slides, 1u);          // impacts that end in sliding: rare on rough talus
+}
+TEST(TimeStepOracle, QuarryTrajectoriesAgree) {
+  const Exercised ex = check_agreement(quarry_run(), "quarry-preg");
+  EXPECT_GE(ex.impacts, 250u * 5);
+}
+// The chute's sources were placed for these paths (see chute()): 50 trajectories each from the top
+// (slides to the launch speed), above the concave break (a concave-vertex impact), slow on 25° and
+// on the floor (friction stops).
+TEST(TimeStepOracle, SlidingChuteTrajectoriesAgree) {
+  const Exercised ex = check_agreement(chute_run(), "sliding chute");
+  EXPECT_GE(ex.launches, 50u);
+  EXPECT_GE(ex.vertex_hits, 50u);
+  EXPECT_GE(ex.friction_stops, 100u);
+}
 
 TEST(TimeStepOracle, VaujanyDistributionsAreStatisticallyEqual) { check_distributions(vaujany_run()); }
 TEST(TimeStepOracle, QuarryDistributionsAreStatisticallyEqual) { check_distributions(quarry_run()); }
