@@ -10,8 +10,7 @@
 
 namespace pierre::app {
 
-ProgressBar::ProgressBar(bool enabled, std::FILE* to)
-    : enabled_(enabled), to_(to), start_(clock::now()), last_(start_) {}
+ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), start_(clock::now()), last_(start_) {}
 
 void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
   if (!enabled_ || total == 0) return;
@@ -32,8 +31,8 @@ void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
                          std::string(static_cast<std::size_t>(width - filled), ' '), 100.0 * frac,
                          rate, eta_s / 3600, (eta_s / 60) % 60, eta_s % 60)
                  .c_str(),
-             to_);
-  std::fflush(to_);
+             stderr);
+  std::fflush(stderr);
   drawn_ = true;
 }
 
@@ -41,15 +40,15 @@ void ProgressBar::stage(std::string_view what) {
   if (!enabled_) return;
   std::string line = fmt::format("\r{} ...", what);
   if (line.size() < 80) line.resize(80, ' ');  // over the bar drawn before
-  std::fputs(line.c_str(), to_);
-  std::fflush(to_);
+  std::fputs(line.c_str(), stderr);
+  std::fflush(stderr);
   drawn_ = true;
 }
 
 void ProgressBar::finish() {
   if (!drawn_) return;
-  std::fputs(("\r" + std::string(79, ' ') + "\r").c_str(), to_);  // never throws
-  std::fflush(to_);
+  std::fputs(("\r" + std::string(79, ' ') + "\r").c_str(), stderr);  // never throws
+  std::fflush(stderr);
   drawn_ = false;
 }
 

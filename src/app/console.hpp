@@ -18,7 +18,7 @@ namespace pierre::app {
 // a second. Disabled (does nothing) unless `enabled`; the caller passes isatty(2) && !quiet.
 class ProgressBar {
  public:
-  explicit ProgressBar(bool enabled, std::FILE* to = stderr);
+  explicit ProgressBar(bool enabled);
   ~ProgressBar() { finish(); }  // an error's message then starts on a clean line
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
@@ -31,7 +31,6 @@ class ProgressBar {
  private:
   using clock = std::chrono::steady_clock;
   bool enabled_;
-  std::FILE* to_;
   bool drawn_ = false;
   clock::time_point start_, last_;
 };

@@ -1,7 +1,6 @@
 // The quarry reader (docs/quarry.md) and quarry rule sets. The profile, blocks and sources of a
 // section are read by the scenario reader's own readers (section_readers.hpp): one format.
 #include "pierre/io/quarry_reader.hpp"
-#include "pierre/io/scenario_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +10,7 @@
 
 #include "bootstrap_fields.hpp"
 #include "csv_table.hpp"
+#include "pierre/io/scenario_reader.hpp"
 #include "rule_kind.hpp"
 #include "section_readers.hpp"
 #include "toml_fields.hpp"

@@ -358,7 +358,6 @@ Exercised check_agreement(const RunPair& r, const char* name) {
   EXPECT_EQ(r.oracle.size(), n);
   if (r.core.trajectories.size() != n || r.oracle.size() != n) return ex;
   std::size_t agree = 0, same_impacts = 0, bad_reason = 0, bad_first = 0, bad_stop = 0, bad_cross = 0;
-  std::size_t impacts = 0, launches = 0, vertex_hits = 0, slides = 0, friction_stops = 0;
   std::vector<double> stop_ratio;
   std::map<std::string, int> kinds;
   std::vector<std::string> examples;
@@ -371,12 +370,12 @@ Exercised check_agreement(const RunPair& r, const char* name) {
     bad_stop += !v.stop;
     bad_cross += !v.crossings;
     for (const auto& im : r.oracle[i].impact_log) {
-      ++impacts;
-      launches += im.kind == oracle::ImpactKind::launch;
-      vertex_hits += im.kind == oracle::ImpactKind::vertex;
-      slides += im.result == model::ImpactResult::sliding;
+      ++ex.impacts;
+      ex.launches += im.kind == oracle::ImpactKind::launch;
+      ex.vertex_hits += im.kind == oracle::ImpactKind::vertex;
+      ex.slides += im.result == model::ImpactResult::sliding;
     }
-    friction_stops += r.oracle[i].stop_reason == sim::StopReason::friction;
+    ex.friction_stops += r.oracle[i].stop_reason == sim::StopReason::friction;
     if (v.agree()) {
       ++agree;
       continue;
@@ -401,8 +400,8 @@ Exercised check_agreement(const RunPair& r, const char* name) {
             << ", stop point " << bad_stop << ", crossings " << bad_cross << "; " << same_impacts
             << " with the same number of impacts\n"
             << "  stop error / tolerance: median " << stop_ratio[n / 2] << ", 90 % " << stop_ratio[9 * n / 10]
-            << "; exercised " << impacts << " impacts (" << slides << " ending in sliding, " << launches
-            << " launches, " << vertex_hits << " concave-vertex impacts), " << friction_stops
+            << "; exercised " << ex.impacts << " impacts (" << ex.slides << " ending in sliding, "
+            << ex.launches << " launches, " << ex.vertex_hits << " concave-vertex impacts), " << ex.friction_stops
             << " friction stops; core " << r.core_seconds << " s, oracle " << r.oracle_seconds << " s ("
             << r.oracle_steps << " steps)\n";
   for (const auto& [k, m] : kinds) std::cout << "  diverging: " << m << " × " << k << "\n";
@@ -415,11 +414,6 @@ Exercised check_agreement(const RunPair& r, const char* name) {
   // grazing landing): the share above cannot see a bug confined to a few percent of them.
   for (const std::string& unexplained : {kAfterLastImpact, kFlippedByStepError, kUnclassified})
     EXPECT_EQ(kinds.count(unexplained) ? kinds.at(unexplained) : 0, 0) << name << ": " << unexplained;
-  ex.impacts = impacts;
-  ex.launches = launches;
-  ex.vertex_hits = vertex_hits;
-  ex.slides = slides;
-  ex.friction_stops = friction_stops;
   return ex;
 }
 

@@ -21,13 +21,23 @@ std::vector<std::uint32_t> lines_of(const std::vector<Crossing>& cs) {
 
 const std::vector<ObservationLine> kUnsorted = {{"c", 30}, {"a", 10}, {"b", 20}, {"a2", 10}};
 
+// A tally over level ground (z = 0, x from 0 to 100) writing its crossings into `out`.
+struct LevelTally {
+  LevelTally(const std::vector<ObservationLine>& lines, bool all)
+      : profile(test::make_profile({{0, 0}, {100, 0}})), tally(lines, profile, all) {
+    tally.output(&out);
+  }
+  geometry::Profile profile;
+  ObservationTally tally;
+  std::vector<Crossing> out;
+};
+
 }  // namespace
 
 TEST(ObservationTally, CrossingsAreWrittenInLineOrderForUnsortedLines) {
-  const auto prof = test::make_profile({{0, 0}, {100, 0}});
-  ObservationTally tally(kUnsorted, prof, false);
-  std::vector<Crossing> out;
-  tally.output(&out);
+  LevelTally lt(kUnsorted, false);
+  ObservationTally& tally = lt.tally;
+  std::vector<Crossing>& out = lt.out;
   tally.begin(7, 1, 100.0, 2.0);
   tally.flight({0, 5}, {10, 0}, 0.5, 0.0, 3.0, 0.0);  // x from 0 to 30
   EXPECT_EQ(lines_of(out), (std::vector<std::uint32_t>{0, 1, 2, 3}));
@@ -49,10 +59,9 @@ TEST(ObservationTally, CrossingsAreWrittenInLineOrderForUnsortedLines) {
 // v = (10, 12 − 19.62) = (10, −7.62) m/s. (Every other call here has g = 0: dropping −½gt² from
 // the height, or −gt from v_z, passed every sim test.)
 TEST(ObservationTally, ACrossingOnAFallingArcIsWhereTheParabolaIs) {
-  const auto prof = test::make_profile({{0, 0}, {100, 0}});
-  ObservationTally tally({{"L", 20}}, prof, false);
-  std::vector<Crossing> out;
-  tally.output(&out);
+  LevelTally lt({{"L", 20}}, false);
+  ObservationTally& tally = lt.tally;
+  std::vector<Crossing>& out = lt.out;
   tally.begin(3, 0, 100.0, 2.0);
   tally.flight({0, 5}, {10, 12}, 1.5, 4.0, 3.0, 9.81);
   ASSERT_EQ(out.size(), 1u);
@@ -68,10 +77,9 @@ TEST(ObservationTally, ACrossingOnAFallingArcIsWhereTheParabolaIs) {
 }
 
 TEST(ObservationTally, ArcsAreHalfOpenAndEveryCrossingIsKeptWhenAsked) {
-  const auto prof = test::make_profile({{0, 0}, {100, 0}});
-  ObservationTally tally(kUnsorted, prof, true);
-  std::vector<Crossing> out;
-  tally.output(&out);
+  LevelTally lt(kUnsorted, true);
+  ObservationTally& tally = lt.tally;
+  std::vector<Crossing>& out = lt.out;
   tally.begin(0, 0, 100.0, 2.0);
   tally.flight({0, 5}, {10, 0}, 0.0, 0.0, 2.0, 0.0);  // ends on the line at 20: counted
   tally.flight({20, 5}, {10, 0}, 0.0, 2.0, 1.0, 0.0);  // starts there: not again; reaches 30
@@ -93,10 +101,9 @@ TEST(ObservationTally, ArcsAreHalfOpenAndEveryCrossingIsKeptWhenAsked) {
 // 2 m/s², the line at 10 is reached at τ = 5 − √15 s at 2√15 m/s, the line at 20 at 5 − √5 s at
 // 2√5 m/s.
 TEST(ObservationTally, SlidesAreHalfOpenAndCrossedWhereTheMotionSaysSo) {
-  const auto prof = test::make_profile({{0, 0}, {100, 0}});
-  ObservationTally tally(kUnsorted, prof, true);
-  std::vector<Crossing> out;
-  tally.output(&out);
+  LevelTally lt(kUnsorted, true);
+  ObservationTally& tally = lt.tally;
+  std::vector<Crossing>& out = lt.out;
   tally.begin(0, 0, 100.0, 2.0);
   tally.slide({0, 0}, {1, 0}, 10.0, 0.0, 0.0, 0.0, 2.0);  // ends on the line at 20: counted
   tally.slide({20, 0}, {1, 0}, 10.0, 0.0, 0.0, 2.0, 1.0);  // starts there: not again; reaches 30

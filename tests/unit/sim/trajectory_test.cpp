@@ -140,26 +140,42 @@ TEST(Trajectory, BlockInAVNotchStopsInFiniteTime) {
   }
 }
 
+// Placed on the ground (source below it) with φ = 30° on a 45° slope: a = g (sin 45 − cos 45
+// tan 30) > 0. The first impact is the launch at the maximum sliding speed (5 m/s), after sliding
+// s = v²/2a along the slope: exactly where the closed form puts it. The same in the mirror image,
+// where the slope rises along the vertex order and the block slides towards −x, against the main
+// direction (the launch time is (−5 − w)/a in that direction: writing +5 launched it at once,
+// from rest, and passed every test).
 TEST(Trajectory, BlockOnA45DegreeSlopeSlidesLaunchesAndKeepsGoing) {
-  // Placed on the ground (source below it) with φ = 30°: a = g (sin 45 − cos 45 tan 30) > 0.
-  auto prof = test::make_profile({{0, 200}, {200, 0}, {600, 0}});
-  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3, 30),
-                                   {test::make_block(1000)}, {10, 150}, 20);
-  const auto r = run(s, 1, true);
-  for (const auto& t : r.trajectories) {
-    EXPECT_NEAR(t.start.z, 190.0, 1e-9);  // placed on the ground
-    EXPECT_GT(t.stop.x, 200.0);           // went all the way down
-    EXPECT_NE(t.stop_reason, StopReason::numerical);
+  struct Case {
+    const char* name;
+    std::vector<Vec2> profile;
+    double x0;   // the source's x (150 m high, below the ground: placed on it at 190 m)
+    double dir;  // +1 slides towards +x, −1 towards −x
+    double toe;  // the slope's foot: it goes all the way down past it
+  };
+  const Case cases[] = {{"along the vertex order", {{0, 200}, {200, 0}, {600, 0}}, 10, 1, 200},
+                        {"towards the first vertex", {{0, 0}, {400, 0}, {600, 200}}, 590, -1, 400}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    Scenario s = test::make_scenario(test::make_profile(c.profile),
+                                     test::make_material(15, 50, 0.3, 30),
+                                     {test::make_block(1000)}, {c.x0, 150}, 20);
+    const auto r = run(s, 1, true);
+    for (const auto& t : r.trajectories) {
+      EXPECT_NEAR(t.start.z, 190.0, 1e-9);          // placed on the ground
+      EXPECT_GT(c.dir * (t.stop.x - c.toe), 0.0);  // went all the way down
+      EXPECT_NE(t.stop_reason, StopReason::numerical);
+    }
+    const double a = 9.81 * (std::sin(M_PI / 4) - std::cos(M_PI / 4) * std::tan(M_PI / 6));
+    const double s_launch = 25.0 / (2 * a);
+    ASSERT_FALSE(r.impacts.empty());
+    const auto& first = r.impacts.front();
+    EXPECT_EQ(first.index, 0u);
+    EXPECT_NEAR(first.time, 5.0 / a, 1e-9);
+    EXPECT_NEAR(first.position.x, c.x0 + c.dir * s_launch / std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR(std::hypot(first.detail.vt_in, first.detail.vn_in), 5.0, 1e-9);
   }
-  // The first impact is the launch at the maximum sliding speed (5 m/s), after sliding
-  // s = v²/2a along the slope: exactly where the closed form puts it.
-  const double a = 9.81 * (std::sin(M_PI / 4) - std::cos(M_PI / 4) * std::tan(M_PI / 6));
-  const double s_launch = 25.0 / (2 * a);
-  const auto& first = r.impacts.front();
-  EXPECT_EQ(first.index, 0u);
-  EXPECT_NEAR(first.time, 5.0 / a, 1e-9);
-  EXPECT_NEAR(first.position.x, 10 + s_launch / std::sqrt(2.0), 1e-9);
-  EXPECT_NEAR(std::hypot(first.detail.vt_in, first.detail.vn_in), 5.0, 1e-9);
 }
 
 TEST(Trajectory, BlockAtRestOnAGentleSlopeStopsByFriction) {
@@ -560,30 +576,6 @@ TEST(Trajectory, MaxEnergyIsTranslationalPlusRotational) {
   EXPECT_GT(rotational, 0.1 * mass * 9.81 * h);  // large enough to be seen
   EXPECT_NEAR(r.trajectories[0].max_energy, mass * 9.81 * h + rotational,
               1e-12 * (mass * 9.81 * h + rotational));
-}
-
-// The mirror image of the 45° test: the slope rises along the vertex order, so the block slides
-// towards −x, against the main direction. It launches at the maximum sliding speed after
-// s = v²/2a, as forwards (the launch time is (−5 − w)/a in that direction: writing +5 launched
-// it at once, from rest, and passed every test).
-TEST(Trajectory, SlidingTowardsTheFirstVertexLaunchesAtTheMaximumSlidingSpeedToo) {
-  auto prof = test::make_profile({{0, 0}, {400, 0}, {600, 200}});
-  Scenario s = test::make_scenario(std::move(prof), test::make_material(15, 50, 0.3, 30),
-                                   {test::make_block(1000)}, {590, 150}, 20);
-  const auto r = run(s, 1, true);
-  for (const auto& t : r.trajectories) {
-    EXPECT_NEAR(t.start.z, 190.0, 1e-9);  // placed on the ground
-    EXPECT_LT(t.stop.x, 400.0);           // went all the way down
-    EXPECT_NE(t.stop_reason, StopReason::numerical);
-  }
-  const double a = 9.81 * (std::sin(M_PI / 4) - std::cos(M_PI / 4) * std::tan(M_PI / 6));
-  const double s_launch = 25.0 / (2 * a);
-  ASSERT_FALSE(r.impacts.empty());
-  const auto& first = r.impacts.front();
-  EXPECT_EQ(first.index, 0u);
-  EXPECT_NEAR(first.time, 5.0 / a, 1e-9);
-  EXPECT_NEAR(first.position.x, 590 - s_launch / std::sqrt(2.0), 1e-9);
-  EXPECT_NEAR(std::hypot(first.detail.vt_in, first.detail.vn_in), 5.0, 1e-9);
 }
 
 // model-2d.md §2 (thesis §3.2.2): a block launches when its speed *exceeds* the maximum
