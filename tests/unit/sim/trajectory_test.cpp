@@ -40,6 +40,15 @@ Scenario slope_scenario(std::uint64_t seed = 42) {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+// Trajectory 0 of `s` alone, with its path drawn `step` seconds apart into `path`.
+TrajectorySummary simulate_with_path(const Scenario& s, std::vector<Vec2>& path, double step) {
+  const TrajectoryModel model(s);
+  ObservationTally tally(s.lines, s.profile, false);
+  std::vector<Crossing> crossings;
+  tally.output(&crossings);
+  return simulate_trajectory(model, 0, tally, nullptr, &path, step);
+}
+
 }  // namespace
 
 TEST(Runner, IdenticalResultsForOneTwoAndEightThreads) {
@@ -409,12 +418,8 @@ TEST(Trajectory, PathFollowsTheParabolaAndEndsAtTheStop) {
   Scenario s = test::make_scenario(std::move(prof), test::make_material(5, 50, 0.3),
                                    {test::make_block(1000)}, {10, 5}, 1);
   s.sources[0].velocity = {2, 0};
-  const TrajectoryModel model(s);
-  ObservationTally tally(s.lines, s.profile, false);
-  std::vector<Crossing> cr;
-  tally.output(&cr);
   std::vector<Vec2> path;
-  const auto t = simulate_trajectory(model, 0, tally, nullptr, &path, 0.01);
+  const auto t = simulate_with_path(s, path, 0.01);
   ASSERT_GT(path.size(), 10u);
   EXPECT_EQ(path.front().x, 10.0);
   EXPECT_EQ(path.back().x, t.stop.x);
@@ -441,12 +446,8 @@ TEST(Trajectory, APathDrawsALongFlightWithABoundedNumberOfPoints) {
                                      {50, 5}, 1);
     s.settings.gravity = g;
     s.settings.max_time = 1e308;
-    const TrajectoryModel model(s);
-    ObservationTally tally(s.lines, s.profile, false);
-    std::vector<Crossing> cr;
-    tally.output(&cr);
     std::vector<Vec2> path;
-    const auto t = simulate_trajectory(model, 0, tally, nullptr, &path, 0.05);
+    const auto t = simulate_with_path(s, path, 0.05);
     ASSERT_TRUE(t.has_first_impact);
     // The fall is one arc: the start, then 1000 points along it, the last at the landing; every
     // later arc (the slow rebounds) has at most 1000 too, with a point or two per event.
