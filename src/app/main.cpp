@@ -57,8 +57,13 @@ int main(int argc, char** argv) {
           std::vector<std::string> extra = c->remaining();
           std::string words;
           for (const auto& w : extra) words += (words.empty() ? "" : " ") + w;
-          std::fprintf(stderr, "pierre %s: found %s, expected no more arguments (pierre %s --help)\n",
-                       c->get_name().c_str(), words.c_str(), c->get_name().c_str());
+          const char* name = c->get_name().c_str();
+          if (!extra.empty() && extra.front().size() > 1 && extra.front()[0] == '-')
+            std::fprintf(stderr, "pierre %s: found %s: %s is not an option of pierre %s (pierre %s --help)\n",
+                         name, words.c_str(), extra.front().c_str(), name, name);
+          else
+            std::fprintf(stderr, "pierre %s: found %s, expected no more arguments (pierre %s --help)\n",
+                         name, words.c_str(), name);
           return kExitInput;
         }
       app.exit(e);

@@ -245,7 +245,10 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   // Arguments a command does not take are named in the order they were typed (CLI11 reversed
   // them: "foo --out").
   EXPECT_NE(pierre("validate " + kScenario + " --out foo").err.find(
-                "pierre validate: found --out foo, expected no more arguments"),
+                "pierre validate: found --out foo: --out is not an option of pierre validate"),
+            std::string::npos);
+  EXPECT_NE(pierre("validate " + kScenario + " foo").err.find(
+                "pierre validate: found foo, expected no more arguments"),
             std::string::npos);
   // A misspelt command is named, with the commands there are.
   EXPECT_NE(pierre("chek " + kScenario).err.find("chek: not a command; expected run, check or validate"),
