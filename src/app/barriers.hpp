@@ -12,8 +12,8 @@ namespace pierre::app {
 // gets no design and a FAIL line that says why: `reach` (fewer than two crossings at its line)
 // or `design` (crossings that give no design, e.g. no fit): `pierre check` must not pass a
 // barrier it could not check.
-// `threads` (0: every hardware thread) as `--threads`: with two or more, each barrier's two
-// bootstraps run side by side.
+// `threads` (0: every hardware thread) as `--threads`: the barriers' bootstraps share their
+// resamples out over them (the same results for any count).
 io::DesignResults compute_barriers(const io::LoadedScenario& loaded, const design::RunSamples& samples,
                                    unsigned threads);
 

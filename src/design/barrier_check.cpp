@@ -5,10 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <limits>
 #include <numeric>
-#include <system_error>
 
 #include "pierre/design/number_text.hpp"
 #include "pierre/stats/bootstrap_weibull.hpp"
@@ -44,7 +42,7 @@ struct Replicates {
 };
 stats::Outcome<Replicates> characteristic_replicates(std::span<const double> sample, double p,
                                                      Governing g, std::size_t resamples,
-                                                     std::uint64_t seed) {
+                                                     std::uint64_t seed, unsigned threads) {
   using Out = stats::Outcome<Replicates>;
   if (g == Governing::empirical) {
     auto r = stats::bootstrap_percentile_replicates(sample, p, seed, resamples);
@@ -54,6 +52,7 @@ stats::Outcome<Replicates> characteristic_replicates(std::span<const double> sam
   stats::WeibullBootstrapOptions o;
   o.resamples = resamples;
   o.empirical = g == Governing::larger;
+  o.threads = threads;
   auto r = stats::bootstrap_weibull_quantile_replicates(sample, p, seed, o);
   if (!r) return Out::failure(r.error);
   Replicates out;
@@ -292,24 +291,16 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   d.exceedance = exceedance_rows(ex);
 
   // Step 8: bootstrap intervals of v_k, h_k and, through them, E_d and h_i. (Not of a point
-  // mass: every resample is the sample, and no Weibull refits it.)
+  // mass: every resample is the sample, and no Weibull refits it.) Each shares its resamples
+  // out over every thread (the same replicates for any count).
   using Reps = stats::Outcome<Replicates>;
   auto replicates = [&](const QuantityFit& fit, std::span<const double> values, std::uint64_t s) {
     return fit.point_mass ? Reps::failure("a point mass")
                           : characteristic_replicates(values, rules.percentile, rules.governing,
-                                                      rules.sample_resamples, s);
+                                                      rules.sample_resamples, s, threads);
   };
-  auto height_replicates = [&] { return replicates(d.height, sample.height, splitmix64(seed ^ 2)); };
-  std::future<Reps> rh_beside;
-  if (threads >= 2) {
-    try {
-      rh_beside = std::async(std::launch::async, height_replicates);
-    } catch (const std::system_error&) {
-      // no thread to be had: one after the other, as with threads = 1
-    }
-  }
   const auto rv = replicates(d.speed, sample.speed, splitmix64(seed ^ 1));
-  const auto rh = rh_beside.valid() ? rh_beside.get() : height_replicates();
+  const auto rh = replicates(d.height, sample.height, splitmix64(seed ^ 2));
   const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
   const double conf = rules.sample_confidence;
   // A point mass resamples to itself: its interval has no width (no refit can show that).

@@ -10,6 +10,7 @@
 
 #include "pierre/stats/math_policy.hpp"
 #include "pierre/stats/percentile.hpp"
+#include "pierre/stats/resample_blocks.hpp"
 #include "pierre/stats/resample_index_stream.hpp"
 
 namespace pierre::stats {
@@ -45,21 +46,33 @@ bool bad_confidence(double c) { return !(c > 0.0 && c < 1.0); }
 
 }  // namespace
 
-Outcome<std::vector<double>> bootstrap_replicates(std::span<const double> sample,
-                                                  const Statistic& statistic, std::uint64_t seed,
-                                                  std::size_t resamples) {
+Outcome<std::size_t> visit_resamples(std::span<const double> sample, std::uint64_t seed,
+                                     std::size_t resamples, unsigned threads,
+                                     const ResampleVisitor& visit) {
   const std::vector<double> v = without_nan(sample);
   if (auto e = check_sample(v.size(), resamples); !e.empty()) {
-    return Outcome<std::vector<double>>::failure(e);
+    return Outcome<std::size_t>::failure(e);
   }
-  std::vector<double> out(resamples);
-  std::vector<double> buffer(v.size());  // reused: one allocation for all resamples
   const std::uint64_t n = v.size();
-  for (std::size_t r = 0; r < resamples; ++r) {
-    ResampleIndexStream stream(seed, r);
-    for (double& x : buffer) x = v[stream.next(n)];
-    out[r] = statistic(buffer);
-  }
+  for_resample_blocks(resamples, threads, [&](std::size_t first, std::size_t last) {
+    std::vector<double> buffer(v.size());  // reused: one allocation per block of resamples
+    for (std::size_t r = first; r < last; ++r) {
+      ResampleIndexStream stream(seed, r);
+      for (double& x : buffer) x = v[stream.next(n)];
+      visit(r, buffer);
+    }
+  });
+  return Outcome<std::size_t>::success(v.size());
+}
+
+Outcome<std::vector<double>> bootstrap_replicates(std::span<const double> sample,
+                                                  const Statistic& statistic, std::uint64_t seed,
+                                                  std::size_t resamples, unsigned threads) {
+  std::vector<double> out(resamples);
+  const auto done =
+      visit_resamples(sample, seed, resamples, threads,
+                      [&](std::size_t r, std::span<double> x) { out[r] = statistic(x); });
+  if (!done) return Outcome<std::vector<double>>::failure(done.error);
   return Outcome<std::vector<double>>::success(std::move(out));
 }
 

@@ -16,6 +16,7 @@
 #include "pierre/stats/bootstrap.hpp"
 #include "pierre/stats/math_policy.hpp"
 #include "pierre/stats/percentile.hpp"
+#include "pierre/stats/resample_blocks.hpp"
 #include "pierre/stats/resample_index_stream.hpp"
 #include "pierre/stats/weibull_fit.hpp"
 
@@ -44,17 +45,17 @@ Out exact_replicates(std::span<const double> sample, double p, std::uint64_t see
                      const WeibullBootstrapOptions& o) {
   WeibullQuantileReplicates out;
   out.method = WeibullBootstrapMethod::exact;
-  if (o.empirical) out.empirical.reserve(o.resamples);
-  const Statistic stat = [&](std::span<double> x) {
-    const auto w = fit_weibull(x);
-    if (o.empirical) out.empirical.push_back(percentile(x, p));  // copies: x not reordered
-    return w ? quantile(*w, p / 100.0) : kNaN;
-  };
-  auto reps = bootstrap_replicates(sample, stat, seed, o.resamples);
-  if (!reps) return Out::failure(reps.error);
-  out.weibull = std::move(*reps.value);
-  out.values = static_cast<std::size_t>(
-      std::count_if(sample.begin(), sample.end(), [](double x) { return !std::isnan(x); }));
+  out.weibull.resize(o.resamples);
+  if (o.empirical) out.empirical.resize(o.resamples);
+  const auto n = visit_resamples(sample, seed, o.resamples, o.threads,
+                                 [&](std::size_t r, std::span<double> x) {
+                                   const auto w = fit_weibull(x);
+                                   // percentile copies: x is not reordered
+                                   if (o.empirical) out.empirical[r] = percentile(x, p);
+                                   out.weibull[r] = w ? quantile(*w, p / 100.0) : kNaN;
+                                 });
+  if (!n) return Out::failure(n.error);
+  out.values = *n;
   return Out::success(std::move(out));
 }
 
@@ -102,7 +103,8 @@ std::int64_t poisson_count(const ResampleIndexStream& stream, std::uint32_t pair
     const double u = open_unit_interval((std::uint64_t{blk[0]} << 32) | blk[1]) - 0.5;
     const double v = open_unit_interval((std::uint64_t{blk[2]} << 32) | blk[3]);
     const double us = 0.5 - std::abs(u);  // > 0: u is never exactly ±0.5
-    const auto k = static_cast<std::int64_t>(std::floor((2 * bin.a / us + bin.b) * u + bin.mu + 0.43));
+    const auto k =
+        static_cast<std::int64_t>(std::floor((2 * bin.a / us + bin.b) * u + bin.mu + 0.43));
     if (us >= 0.07 && v <= bin.vr) return k;
     if (k < 0 || (us < 0.013 && v > us)) continue;
     const double kd = static_cast<double>(k);
@@ -161,7 +163,10 @@ class BinnedWeibull {
         f.used = static_cast<std::size_t>(total);
         return f;
       }
-      if (g < 0) lo = k; else hi = k;
+      if (g < 0)
+        lo = k;
+      else
+        hi = k;
       double next = k - step;
       if (!(next > lo && next < hi)) next = std::isinf(hi) ? 2 * k : 0.5 * (lo + hi);
       k = next;
@@ -185,7 +190,8 @@ Out binned_replicates(std::span<const double> sample, double p, std::uint64_t se
 
   // Bins: the values <= 0 and the +infinities (in no fit, but in the percentile's ranks) in
   // runs of at most m; the positive finite ones also cut where t's range would pass w_max.
-  const std::size_t m = std::max<std::size_t>(1, (n + o.rank_bins - 1) / std::max<std::size_t>(1, o.rank_bins));
+  const std::size_t m =
+      std::max<std::size_t>(1, (n + o.rank_bins - 1) / std::max<std::size_t>(1, o.rank_bins));
   const auto i0 = static_cast<std::size_t>(
       std::partition_point(s.begin(), s.end(), [](double x) { return !(x > 0); }) - s.begin());
   const auto i1 = static_cast<std::size_t>(
@@ -226,9 +232,9 @@ Out binned_replicates(std::span<const double> sample, double p, std::uint64_t se
   const std::size_t nfit = model.size();
 
   // The binned fit of the whole sample: the replicates' starting point.
-  std::vector<double> w(nfit);
-  for (std::size_t b = 0; b < nfit; ++b) w[b] = static_cast<double>(bins[first_fit + b].size);
-  const auto whole = model.fit(w, k_hat);
+  std::vector<double> sizes(nfit);
+  for (std::size_t b = 0; b < nfit; ++b) sizes[b] = static_cast<double>(bins[first_fit + b].size);
+  const auto whole = model.fit(sizes, k_hat);
   if (!whole) return Out::failure("binned bootstrap: the binned Weibull fit of the sample failed");
   const double k_start = whole->shape;
 
@@ -238,48 +244,53 @@ Out binned_replicates(std::span<const double> sample, double p, std::uint64_t se
   out.bins = bins.size();
   out.weibull.resize(o.resamples);
   if (o.empirical) out.empirical.resize(o.resamples);
-  std::vector<std::int64_t> count(bins.size());
-  std::vector<std::uint64_t> picks;
-  for (std::size_t r = 0; r < o.resamples; ++r) {
-    ResampleIndexStream stream(seed, r);
-    bool ok = true;
-    std::uint64_t total = 0;
-    for (std::size_t b = 0; b < bins.size(); ++b) {
-      count[b] = poisson_count(stream, static_cast<std::uint32_t>(b), bins[b]);
-      ok = ok && count[b] >= 0;
-      total += static_cast<std::uint64_t>(std::max<std::int64_t>(count[b], 0));
-    }
-    for (std::size_t b = 0; b < nfit; ++b) w[b] = static_cast<double>(count[first_fit + b]);
-    const auto f = ok ? model.fit(w, k_start) : std::nullopt;
-    out.weibull[r] = f ? quantile(*f, p / 100.0) : kNaN;
-    if (!o.empirical) continue;
-    if (!ok || total == 0) {
-      out.empirical[r] = kNaN;
-      continue;
-    }
-    // Type-7 position in the resample of `total` values; the order statistics lo and lo + 1
-    // from the bins holding them, the bin's count spread over its values by uniform indices.
-    const double h = static_cast<double>(total - 1) * p / 100.0;
-    const auto lo = std::min<std::uint64_t>(static_cast<std::uint64_t>(std::floor(h)), total - 1);
-    const double frac = h - static_cast<double>(lo);
-    std::size_t bin = 0, drawn = bins.size();
-    std::uint64_t before = 0;  // resample values in bins before `bin`
-    const auto value_at = [&](std::uint64_t rank) {
-      while (before + static_cast<std::uint64_t>(count[bin]) <= rank) {
-        before += static_cast<std::uint64_t>(count[bin]);
-        ++bin;
+  // Blocks of resamples over the threads; each block has its own counts and picks.
+  for_resample_blocks(o.resamples, o.threads, [&](std::size_t first, std::size_t last) {
+    std::vector<double> w(nfit);
+    std::vector<std::int64_t> count(bins.size());
+    std::vector<std::uint64_t> picks;
+    for (std::size_t r = first; r < last; ++r) {
+      ResampleIndexStream stream(seed, r);
+      bool ok = true;
+      std::uint64_t total = 0;
+      for (std::size_t b = 0; b < bins.size(); ++b) {
+        count[b] = poisson_count(stream, static_cast<std::uint32_t>(b), bins[b]);
+        ok = ok && count[b] >= 0;
+        total += static_cast<std::uint64_t>(std::max<std::int64_t>(count[b], 0));
       }
-      if (drawn != bin) {
-        picks.resize(static_cast<std::size_t>(count[bin]));
-        for (auto& i : picks) i = stream.next(bins[bin].size);
-        std::sort(picks.begin(), picks.end());
-        drawn = bin;
+      for (std::size_t b = 0; b < nfit; ++b) w[b] = static_cast<double>(count[first_fit + b]);
+      const auto f = ok ? model.fit(w, k_start) : std::nullopt;
+      out.weibull[r] = f ? quantile(*f, p / 100.0) : kNaN;
+      if (!o.empirical) continue;
+      if (!ok || total == 0) {
+        out.empirical[r] = kNaN;
+        continue;
       }
-      return s[bins[bin].start + picks[static_cast<std::size_t>(rank - before)]];
-    };
-    const double x1 = value_at(lo);
-    out.empirical[r] = (frac > 0 && lo + 1 < total) ? interpolate(x1, value_at(lo + 1), frac) : x1;
-  }
+      // Type-7 position in the resample of `total` values; the order statistics lo and lo + 1
+      // from the bins holding them, the bin's count spread over its values by uniform indices.
+      const double h = static_cast<double>(total - 1) * p / 100.0;
+      const auto lo = std::min<std::uint64_t>(static_cast<std::uint64_t>(std::floor(h)), total - 1);
+      const double frac = h - static_cast<double>(lo);
+      std::size_t bin = 0, drawn = bins.size();
+      std::uint64_t before = 0;  // resample values in bins before `bin`
+      const auto value_at = [&](std::uint64_t rank) {
+        while (before + static_cast<std::uint64_t>(count[bin]) <= rank) {
+          before += static_cast<std::uint64_t>(count[bin]);
+          ++bin;
+        }
+        if (drawn != bin) {
+          picks.resize(static_cast<std::size_t>(count[bin]));
+          for (auto& i : picks) i = stream.next(bins[bin].size);
+          std::sort(picks.begin(), picks.end());
+          drawn = bin;
+        }
+        return s[bins[bin].start + picks[static_cast<std::size_t>(rank - before)]];
+      };
+      const double x1 = value_at(lo);
+      out.empirical[r] =
+          (frac > 0 && lo + 1 < total) ? interpolate(x1, value_at(lo + 1), frac) : x1;
+    }
+  });
   return Out::success(std::move(out));
 }
 
@@ -294,8 +305,9 @@ Outcome<WeibullQuantileReplicates> bootstrap_weibull_quantile_replicates(
   if (n > kMaxValues) return Out::failure("bootstrap of more than 2^33 values");
   if (options.resamples < 2) return Out::failure("bootstrap needs at least 2 resamples");
   if (!(p >= 0.0 && p <= 100.0)) return Out::failure("bootstrap percentile must be in [0, 100]");
-  const bool exact = options.method == WeibullBootstrapMethod::exact ||
-                     (options.method == WeibullBootstrapMethod::automatic && n <= options.exact_up_to);
+  const bool exact =
+      options.method == WeibullBootstrapMethod::exact ||
+      (options.method == WeibullBootstrapMethod::automatic && n <= options.exact_up_to);
   return exact ? exact_replicates(sample, p, seed, options)
                : binned_replicates(sample, p, seed, options);
 }

@@ -78,10 +78,12 @@ Outcome<WeibullFit> fit_weibull(std::span<const double> sample) {
   };
   const double k0 = std::numbers::pi / std::sqrt(6.0 * var_t);  // Menon (1963)
   // Bracket the root: g < 0 at the lower bound, > 0 at the upper one.
+  // (Each g costs a pass of n exponentials: the values at the ends are kept, not recomputed.)
   double k_lo = k0 / 4, k_hi = k0 * 4;
-  for (int i = 0; i < 60 && g(k_lo).first > 0; ++i) k_lo /= 4;
-  for (int i = 0; i < 60 && g(k_hi).first < 0; ++i) k_hi *= 4;
-  if (!(g(k_lo).first <= 0 && g(k_hi).first >= 0)) {
+  double g_lo = g(k_lo).first, g_hi = g(k_hi).first;
+  for (int i = 0; i < 60 && g_lo > 0; ++i) g_lo = g(k_lo /= 4).first;
+  for (int i = 0; i < 60 && g_hi < 0; ++i) g_hi = g(k_hi *= 4).first;
+  if (!(g_lo <= 0 && g_hi >= 0)) {
     return Outcome<WeibullFit>::failure("Weibull fit: could not bracket the shape");
   }
   constexpr int kDigits = 40;  // ~1e-12 relative: far below any sampling error

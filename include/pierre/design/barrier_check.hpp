@@ -198,8 +198,8 @@ struct BarrierOutcome {
   // identical values, a design value out of the rule set's tables).
   std::string failed_check = "design";
 };
-// threads >= 2: the speed's and the height's bootstraps (step 8, most of the time) run side by
-// side; the results are the same, each has its own stream.
+// threads: the bootstraps of step 8 (most of the time) share their resamples out over this
+// many threads; the results are the same for any count (each resample has its own stream).
 BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rules,
                               const EnergyClassTable& classes, const BarrierSample& sample,
                               const std::optional<ObservedSample>& observed, double chainage,

@@ -55,10 +55,20 @@ Outcome<BootstrapInterval> bootstrap_interval(std::span<const double> sample,
                                               const Statistic& statistic, std::uint64_t seed,
                                               const BootstrapOptions& options = {});
 
-// The R replicates of the generic bootstrap, in resample order.
+// The R replicates of the generic bootstrap, in resample order. With threads > 1 the
+// resamples are shared out over that many threads (resample_blocks.hpp: the same replicates
+// for any count), and `statistic` is called from all of them at once.
 Outcome<std::vector<double>> bootstrap_replicates(std::span<const double> sample,
                                                   const Statistic& statistic, std::uint64_t seed,
-                                                  std::size_t resamples);
+                                                  std::size_t resamples, unsigned threads = 1);
+
+// The generic bootstrap's loop, for statistics of more than one number: draws every resample r
+// of the sample (NaN left out) and calls visit(r, resample), over `threads` threads as above
+// (visit is called at once for different r). Returns the number of values resampled.
+using ResampleVisitor = std::function<void(std::size_t, std::span<double>)>;
+Outcome<std::size_t> visit_resamples(std::span<const double> sample, std::uint64_t seed,
+                                     std::size_t resamples, unsigned threads,
+                                     const ResampleVisitor& visit);
 
 // The bootstrap of the type-7 percentile p (0..100), by order statistics (see above).
 Outcome<BootstrapInterval> bootstrap_percentile_interval(std::span<const double> sample, double p,

@@ -89,6 +89,8 @@ struct WeibullBootstrapOptions {
   std::size_t rank_bins = 4096;     // binned: at most ceil(n / rank_bins) values per bin
   double max_bin_width = 0.02;      // binned: k̂ · (a bin's range of ln x) at most this
   bool empirical = true;            // also the empirical percentile of each resample
+  unsigned threads = 1;             // resamples shared out over this many threads (the same
+                                    // replicates for any count: resample_blocks.hpp)
 };
 
 struct WeibullQuantileReplicates {
