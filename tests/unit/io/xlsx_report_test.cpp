@@ -500,6 +500,40 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   EXPECT_TRUE(number(pr, *ph + 1, 1));
 }
 
+// Probabilities of exceedance are percentages however small: 2.17e-5 was shown as "2.17E-05"
+// in a column of percentages, which reads as 2.17e-5 % (a hundred times too small).
+TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  auto& ex = f->data.barriers.at(0).exceedance;
+  ex.at(1).simulated_weibull = 2.17e-5;
+  ex.at(1).simulated_empirical = 0.0;
+  ex.at(3).simulated_weibull = 1.26e-6;
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  // Every sheet, as shown (token 9 true).
+  const fs::path out = dir.path() / "csv";
+  fs::create_directories(out);
+  const Exec r = soffice(
+      "--convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,true,true,true,false,false,-1' "
+      "--outdir '" + out.string() + "' '" + xlsx.string() + "'",
+      dir.path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  ASSERT_TRUE(fs::exists(out / "report-Screen A.csv")) << r.output;
+  const std::optional<Sheet> bar = parse_csv(read_file(out / "report-Screen A.csv"));
+  const auto mel = find_row(*bar, 0, "P(E > MEL_req)");
+  ASSERT_TRUE(mel) << r.output;
+  EXPECT_EQ(cell(*bar, *mel, 3)->text, "0.0021700%") << dump(*bar, *mel);
+  EXPECT_EQ(cell(*bar, *mel, 4)->text, "0%") << dump(*bar, *mel);
+  const auto hmax = find_row(*bar, 0, "P(h > h_max)");
+  ASSERT_TRUE(hmax);
+  EXPECT_EQ(cell(*bar, *hmax, 3)->text, "0.0001260%") << dump(*bar, *hmax);
+  const auto hi = find_row(*bar, 0, "P(h > h_i)");
+  ASSERT_TRUE(hi);
+  EXPECT_EQ(cell(*bar, *hi, 3)->text, "2.500%") << dump(*bar, *hi);
+}
+
 TEST(XlsxReport, LibreOfficePrintsToPdf) {
   PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
