@@ -105,6 +105,9 @@ class RunCommand final : public Command {
     // copy leaves out) goes to stderr even with --quiet: the firm running it must hear of it.
     const io::ReportTemplate layout = load_report_layout(stderr);
     (void)report_date();  // nor a bad SOURCE_DATE_EPOCH
+    loaded.overrides = command_line_overrides(
+        loaded, seed_opt_->count() ? std::optional<std::uint64_t>(seed_) : std::nullopt,
+        throws_opt_->count() ? std::optional<std::uint32_t>(throws_) : std::nullopt);
     if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
       QuarryRunOptions q;
       q.out = out_;

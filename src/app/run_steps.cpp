@@ -65,7 +65,24 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
   info.sources = sources;
   info.threads = threads;
   info.all_crossings = all_crossings;
+  info.overrides = loaded.overrides;
   return info;
+}
+
+std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded,
+                                                std::optional<std::uint64_t> seed,
+                                                std::optional<std::uint32_t> throws) {
+  const sim::SimulationSettings& s = loaded.scenario.settings;
+  const bool own_seeds = std::any_of(loaded.quarries.begin(), loaded.quarries.end(),
+                                     [](const io::QuarrySection& q) { return q.seed_given; });
+  std::vector<std::string> out;
+  if (seed)
+    out.push_back(fmt::format("--seed {} (the scenario file's simulation.seed: {}{})", *seed,
+                              s.seed, own_seeds ? "; sections with a seed of their own keep it" : ""));
+  if (throws)
+    out.push_back(fmt::format("--throws {} (the scenario file's simulation.throws: {})", *throws,
+                              s.throws));
+  return out;
 }
 
 }  // namespace pierre::app

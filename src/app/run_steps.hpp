@@ -25,4 +25,10 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
                      std::uint64_t blocks, std::uint64_t sources, unsigned threads,
                      bool all_crossings);
 
+// LoadedScenario::overrides for --seed and --throws, worded with the file's values: call it
+// before they are applied.
+std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded,
+                                                std::optional<std::uint64_t> seed,
+                                                std::optional<std::uint32_t> throws);
+
 }  // namespace pierre::app

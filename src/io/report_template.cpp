@@ -56,7 +56,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
                  "id",            "beyond_profile", "pooled",    "observed_source", "total",
                  "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor",
-                 "lines_every_crossing"};
+                 "lines_every_crossing", "overrides"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};

@@ -524,6 +524,7 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                    {"materials_file", info.materials_file.string()}};
   j["seed"] = info.seed;
   j["throws"] = info.throws;
+  j["command_line_overrides"] = info.overrides;  // [] when the file's values ran
   j["blocks"] = info.blocks;
   j["sources"] = info.sources;
   j["trajectories"] = info.trajectories;

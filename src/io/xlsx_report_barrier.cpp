@@ -117,7 +117,7 @@ Row Report::barrier_overview(lxw_worksheet* ws, Row r, const design::BarrierDesi
   text(ws, r, 0, t_.get("labels", "not_reached"), bold());
   count(ws, r++, 1, b.not_reached);
   text(ws, r, 0, t_.get("labels", "bootstrap_seed"), bold());
-  seed(ws, r++, 1, b.bootstrap_seed, number("count"));
+  seed(ws, r++, 1, b.bootstrap_seed, number("general"));
   return r;
 }
 

@@ -167,7 +167,7 @@ Row Report::quarry_geometry(lxw_worksheet* ws, Row r, const QuarrySections& secs
            45);
   for (const auto* s : secs) {
     const auto& g = s->geometry;
-    if (const auto* v = section_view(s->spec.name)) count(ws, r, 12, v->seed);
+    if (const auto* v = section_view(s->spec.name)) seed(ws, r, 12, v->seed, number("general"));
     text(ws, r, 0, s->spec.name, wrap());
     num(ws, r, 1, g.crest.x, xf);
     num(ws, r, 2, g.crest.z, xf);

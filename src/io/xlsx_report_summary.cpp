@@ -59,6 +59,10 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
   seed(ws, r++, 2, d_.seed, number("general", 2));
   label("throws");
   num(ws, r++, 2, d_.throws, number("count", 2));
+  if (sc && !sc->overrides.empty()) {  // the echoed scenario text (Inputs) shows the file's
+    label("overrides");
+    for (const auto& o : sc->overrides) text(ws, r++, 2, o);
+  }
   label("trajectories");
   num(ws, r++, 2,
       static_cast<double>(d_.total_trajectories ? d_.total_trajectories

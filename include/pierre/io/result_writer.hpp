@@ -94,6 +94,7 @@ struct RunInfo {
   std::uint64_t blocks = 0, sources = 0;
   unsigned threads = 0;  // worker threads used
   bool all_crossings = false;
+  std::vector<std::string> overrides;  // LoadedScenario::overrides
 };
 
 // The design results of a run: every barrier computed, the quarry danger zones (a quarry

@@ -26,6 +26,9 @@ struct LoadedScenario {
   std::string description;
   std::vector<BlockGroup> block_groups;
   std::filesystem::path materials_file;  // where the presets came from
+  // What the command line set instead of the file (--seed, --throws), each with the file's
+  // value: the echoed text no longer says what ran, so summary.json and the report say it.
+  std::vector<std::string> overrides;
 
   // [[barriers]] (docs/scenario-format.md), in file order; index i of every vector below is
   // barrier i. The rule set, its class table and the observed data are loaded and checked

@@ -20,6 +20,8 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_fixture.hpp"
+#include "support/tools.hpp"
+#include "support/workbook_reader.hpp"
 
 namespace {
 
@@ -114,6 +116,11 @@ TEST_F(Cli, OptionsOverrideTheScenario) {
   const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(j["seed"], 99);
   EXPECT_EQ(j["trajectories"], 6);
+  // The echoed scenario text says seed = 12345 and throws = 300: what the command line set
+  // instead is recorded, with the file's values, in summary.json and on the report's Summary.
+  const std::string seed_note = "--seed 99 (the scenario file's simulation.seed: 12345)";
+  const std::string throws_note = "--throws 3 (the scenario file's simulation.throws: 300)";
+  EXPECT_EQ(j["command_line_overrides"], nlohmann::json::array({seed_note, throws_note}));
   const std::string imp = slurp(out / "impacts.csv");
   EXPECT_EQ(imp.rfind("trajectory,impact,time_s,x_m,z_m,segment,material,result,", 0), 0u);
   EXPECT_GT(count_lines(imp), 6u);
@@ -121,6 +128,15 @@ TEST_F(Cli, OptionsOverrideTheScenario) {
   // A second run without --impacts into the same folder removes the stale impacts.csv.
   ASSERT_EQ(pierre("run " + kScenario + " --out " + q(out) + " --throws 3 --quiet").code, 0);
   EXPECT_FALSE(fs::exists(out / "impacts.csv"));
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "summary.json"))["command_line_overrides"],
+            nlohmann::json::array({throws_note}));
+  PIERRE_NEED_PROGRAM("unzip");
+  const std::string strings = pierre::test::zip_entry(out / "report.xlsx", "xl/sharedStrings.xml", dir_);
+  EXPECT_NE(strings.find("Set on the command line"), std::string::npos);
+  EXPECT_NE(strings.find("<t>" + throws_note + "</t>"),
+            std::string::npos)
+      << strings.substr(0, 3000);
+  EXPECT_EQ(strings.find("--seed"), std::string::npos);
 }
 
 TEST_F(Cli, BadInputExitsTwoAndCreatesNothing) {
