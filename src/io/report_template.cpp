@@ -65,7 +65,10 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   s["headings.checks"] = {"subject", "id", "what", "value", "limit", "unit",
                           "rule",    "status", "reason"};
   s["headings.simulation"] = {"seed",        "throws",           "gravity",          "max_time",
-                              "max_impacts", "stop_head_factor", "max_sliding_speed"};
+                              "max_impacts", "stop_head_factor", "max_sliding_speed",
+                              "roughness_distribution", "roughness_mean", "roughness_sd",
+                              "size_reduction", "size_reduction_b", "size_reduction_m",
+                              "size_reduction_floor"};
   s["headings.materials"] = {"name",      "source",    "normal_energy", "normal_energy_k",
                              "tangential_energy", "tangential_energy_k", "roughness",
                              "friction_angle"};

@@ -47,6 +47,22 @@ Row Report::inputs_simulation(lxw_worksheet* ws, Row r, const LoadedScenario& sc
   num(ws, r, 4, static_cast<double>(s.settings.max_impacts), number("count"));
   num(ws, r, 5, s.settings.stop_head_factor, number("factor"));
   num(ws, r++, 6, s.settings.max_sliding_speed, number("speed"));
+  // The roughness draw (Eq 3.4/3.5) and its size reduction (Eq 6.6): they change the results
+  // as much as the materials do, defaults or not.
+  const auto& rough = s.settings.roughness;
+  headings(ws, r++, 0, "simulation",
+           {"roughness_distribution", "roughness_mean", "roughness_sd", "size_reduction",
+            "size_reduction_b", "size_reduction_m", "size_reduction_floor"});
+  text(ws, r, 0,
+       rough.distribution == model::RoughnessDistribution::uniform ? "uniform (Eq 3.4)"
+                                                                     : "truncated-normal (Eq 3.5)",
+       centred());
+  num(ws, r, 1, rough.mean, number("factor"));
+  num(ws, r, 2, rough.sd, number("factor"));
+  text(ws, r, 3, rough.size_reduction ? "on" : "off", centred());
+  num(ws, r, 4, rough.b, number("factor"));
+  num(ws, r, 5, rough.m, number("factor"));
+  num(ws, r++, 6, rough.floor, number("factor"));
   return r;
 }
 

@@ -22,6 +22,7 @@
 #include "pierre/io/report_template.hpp"
 #include "pierre/io/scenario_reader.hpp"
 #include "pierre/io/xlsx_report.hpp"
+#include "pierre/model/roughness.hpp"
 #include "pierre/stats/weibull_fit.hpp"
 #include "support/workbook_reader.hpp"
 #include "test_files.hpp"
@@ -355,6 +356,15 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
   const auto f = make_fixture();
+  // Roughness settings other than the defaults, each its own number, to find on Inputs.
+  auto& rough = f->scenario.scenario.settings.roughness;
+  rough.distribution = model::RoughnessDistribution::uniform;
+  rough.mean = 0.4;
+  rough.sd = 0.6;
+  rough.size_reduction = false;
+  rough.b = 1.2;
+  rough.m = 0.25;
+  rough.floor = 0.35;
   auto tpl = io::load_report_template(kTemplate);
   tpl.trajectory_rows = 10;  // cap below the 30 trajectories given
   const fs::path xlsx = dir.path() / "report.xlsx";
@@ -477,6 +487,16 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto talus = find_row(in, 0, "talus");
   ASSERT_TRUE(talus);
   EXPECT_TRUE(number(in, *talus, 2));
+  // The roughness draw and its size reduction, as set.
+  const auto rd = find_row(in, 0, "Roughness distribution of X");
+  ASSERT_TRUE(rd);
+  EXPECT_EQ(cell(in, *rd + 1, 0)->text, "uniform (Eq 3.4)");
+  EXPECT_EQ(number(in, *rd + 1, 1), 0.4);
+  EXPECT_EQ(number(in, *rd + 1, 2), 0.6);
+  EXPECT_EQ(cell(in, *rd + 1, 3)->text, "off");
+  EXPECT_EQ(number(in, *rd + 1, 4), 1.2);
+  EXPECT_EQ(number(in, *rd + 1, 5), 0.25);
+  EXPECT_EQ(number(in, *rd + 1, 6), 0.35);
   // The profile as read: every vertex (tests/data/small/profile.csv) with the material of the
   // segment that starts there; the last vertex has none.
   const auto pv = find_row(in, 0, "Profile vertices (each row's material is the segment that starts there)");
