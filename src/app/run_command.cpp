@@ -105,14 +105,16 @@ class RunCommand final : public Command {
     // copy leaves out) goes to stderr even with --quiet: the firm running it must hear of it.
     const io::ReportTemplate layout = load_report_layout(stderr);
     (void)report_date();  // nor a bad SOURCE_DATE_EPOCH
-    loaded.overrides = command_line_overrides(
-        loaded, seed_opt_->count() ? std::optional<std::uint64_t>(seed_) : std::nullopt,
-        throws_opt_->count() ? std::optional<std::uint32_t>(throws_) : std::nullopt);
+    const auto seed =
+        seed_opt_->count() ? std::optional<std::uint64_t>(seed_) : std::nullopt;
+    const auto throws =
+        throws_opt_->count() ? std::optional<std::uint32_t>(throws_) : std::nullopt;
+    loaded.overrides = command_line_overrides(loaded, seed, throws);
     if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
       QuarryRunOptions q;
       q.out = out_;
-      if (seed_opt_->count()) q.seed = static_cast<std::uint64_t>(seed_);
-      if (throws_opt_->count()) q.throws = throws_;
+      q.seed = seed;
+      q.throws = throws;
       q.threads = threads_;
       q.impacts = impacts_;
       q.all_crossings = all_crossings_;
@@ -121,11 +123,11 @@ class RunCommand final : public Command {
       return run_quarries(loaded, layout, q);
     }
     sim::Scenario& sc = loaded.scenario;
-    if (seed_opt_->count()) sc.settings.seed = static_cast<std::uint64_t>(seed_);
-    if (throws_opt_->count()) {
-      sc.settings.throws = throws_;
+    if (seed) sc.settings.seed = *seed;
+    if (throws) {
+      sc.settings.throws = *throws;
       // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
-      io::check_trajectory_count(sc, loaded.file, 0, "--throws", std::to_string(throws_));
+      io::check_trajectory_count(sc, loaded.file, 0, "--throws", std::to_string(*throws));
     }
     if (!quiet_) print_source_notes(stdout, sc);
 

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -117,6 +118,34 @@ inline std::string dump(const Sheet& s, std::size_t r) {
   if (r >= s.size()) return "(no row)";
   for (const auto& f : s[r]) out += (f.quoted ? "\"" + f.text + "\"" : f.text) + " | ";
   return out;
+}
+
+// Every sheet of a workbook exported by LibreOffice, by sheet name: one CSV per sheet
+// (LibreOffice >= 7.2: sheet token -1), text cells quoted (token 7), UTF-8 (76), and numbers
+// as raw values or, with as_shown, as their format shows them (token 9). `exec` says how
+// soffice ended; no sheets when it failed.
+struct SheetExport {
+  Exec exec;
+  std::map<std::string, Sheet> sheets;
+};
+inline SheetExport export_sheets(const std::filesystem::path& xlsx, const std::filesystem::path& work,
+                                 bool as_shown = false) {
+  const std::filesystem::path out = work / "csv";
+  std::filesystem::create_directories(out);
+  SheetExport e;
+  e.exec = soffice(std::string("--convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,true,true,") +
+                       (as_shown ? "true" : "false") + ",false,false,-1' --outdir '" + out.string() +
+                       "' '" + xlsx.string() + "'",
+                   work);
+  if (e.exec.status != 0) return e;
+  const std::string prefix = xlsx.stem().string() + "-";  // report-<Sheet>.csv
+  for (const auto& f : std::filesystem::directory_iterator(out)) {
+    std::string name = f.path().stem().string();
+    if (name.rfind(prefix, 0) == 0) name.erase(0, prefix.size());
+    std::ifstream in(f.path(), std::ios::binary);
+    e.sheets[name] = parse_csv(std::string(std::istreambuf_iterator<char>(in), {}));
+  }
+  return e;
 }
 
 // ---- the xlsx as a zip (unzip, installed by the test set-up) ---------------------------

@@ -267,19 +267,8 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, tpl);
 
-  const fs::path out = dir.path() / "csv";
-  fs::create_directories(out);
-  const Exec r = soffice(
-      "--convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,true,true,false,false,false,-1' "
-      "--outdir '" + out.string() + "' '" + xlsx.string() + "'",
-      dir.path());
+  auto [r, sheets] = export_sheets(xlsx, dir.path());
   ASSERT_EQ(r.status, 0) << r.output;
-  std::map<std::string, Sheet> sheets;
-  for (const auto& e : fs::directory_iterator(out)) {
-    const std::string stem = e.path().stem().string();  // report-<Sheet>
-    ASSERT_EQ(stem.rfind("report-", 0), 0u) << stem;
-    sheets[stem.substr(7)] = parse_csv(read_file(e.path()));
-  }
   for (const auto& s : kOrder) EXPECT_TRUE(sheets.count(s)) << "no sheet " << s << "\n" << r.output;
   ASSERT_TRUE(sheets.count("Quarry Face A") && sheets.count("Quarry East") && sheets.count("Summary"));
 

@@ -370,21 +370,9 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, tpl);
 
-  // Every sheet to its own CSV (LibreOffice >= 7.2: sheet token -1), text cells quoted
-  // (token 7), raw values rather than as shown (token 9), UTF-8 (76).
-  const fs::path out = dir.path() / "csv";
-  fs::create_directories(out);
-  const Exec r = soffice(
-      "--convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,true,true,false,false,false,-1' "
-      "--outdir '" + out.string() + "' '" + xlsx.string() + "'",
-      dir.path());
+  // Every sheet, raw values rather than as shown.
+  auto [r, sheets] = export_sheets(xlsx, dir.path());
   ASSERT_EQ(r.status, 0) << r.output;
-  std::map<std::string, Sheet> sheets;
-  for (const auto& e : fs::directory_iterator(out)) {
-    std::string stem = e.path().stem().string();  // report-<Sheet>
-    ASSERT_EQ(stem.rfind("report-", 0), 0u) << stem;
-    sheets[stem.substr(7)] = parse_csv(read_file(e.path()));
-  }
   for (const char* s : {"Summary", "Screen A", "Profile", "Inputs", "Trajectories", "Crossings"})
     EXPECT_TRUE(sheets.count(s)) << "no sheet " << s << "\n" << r.output;
   ASSERT_TRUE(sheets.count("Summary") && sheets.count("Screen A"));
@@ -532,16 +520,11 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   ex.at(3).simulated_weibull = 1.26e-6;
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
-  // Every sheet, as shown (token 9 true).
-  const fs::path out = dir.path() / "csv";
-  fs::create_directories(out);
-  const Exec r = soffice(
-      "--convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,true,true,true,false,false,-1' "
-      "--outdir '" + out.string() + "' '" + xlsx.string() + "'",
-      dir.path());
+  // Every sheet, as shown.
+  const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
   ASSERT_EQ(r.status, 0) << r.output;
-  ASSERT_TRUE(fs::exists(out / "report-Screen A.csv")) << r.output;
-  const std::optional<Sheet> bar = parse_csv(read_file(out / "report-Screen A.csv"));
+  ASSERT_TRUE(sheets.count("Screen A")) << r.output;
+  const Sheet* bar = &sheets.at("Screen A");
   const auto mel = find_row(*bar, 0, "P(E > MEL_req)");
   ASSERT_TRUE(mel) << r.output;
   EXPECT_EQ(cell(*bar, *mel, 3)->text, "0.0021700%") << dump(*bar, *mel);
