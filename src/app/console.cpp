@@ -54,6 +54,27 @@ void ProgressBar::finish() {
 
 namespace {
 
+// `text` after `lead`, broken between words before 100 columns, later lines indented as far.
+void print_wrapped(std::FILE* out, std::string_view lead, std::string_view text) {
+  constexpr std::size_t kWidth = 100;
+  std::string line(lead);
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find(' ', at);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(at, end - at);
+    if (line.size() > lead.size() && line.size() + 1 + word.size() > kWidth) {
+      fmt::print(out, "{}\n", line);
+      line.assign(lead.size(), ' ');
+    } else if (line.size() > lead.size()) {
+      line += ' ';
+    }
+    line += word;
+    at = end + 1;
+  }
+  fmt::print(out, "{}\n", line);
+}
+
 std::string cell(double v, int width) {
   if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
   return fmt::format("{:>{}.2f}", v, width);
@@ -102,36 +123,8 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
   fmt::print(out, "Stop reasons:");
   for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
   fmt::print(out, "\n");
-  // Blocks that did not come to rest or leave the profile: their stop points are where a limit
-  // cut them off, and the runout statistics above include them.
-  for (const auto& r : s.stop_reasons) {
-    if (r.count == 0) continue;
-    const char* what = nullptr;
-    switch (r.reason) {
-      case sim::StopReason::time_limit:
-        what = "simulation.max_time";
-        break;
-      case sim::StopReason::impact_limit:
-        what = "simulation.max_impacts (a block bouncing in place, e.g. on a very small roughness)";
-        break;
-      case sim::StopReason::numerical:
-        what = "a numerical failure (a non-finite value or a lost contact)";
-        break;
-      default:
-        break;
-    }
-    if (what)
-      fmt::print(out, "Note: {} {} cut off by {}, not at rest;\n      {} where {} cut off.\n",
-                 r.count, r.count == 1 ? "trajectory was" : "trajectories were", what,
-                 r.count == 1 ? "its stop point and runout are" : "their stop points and runouts are",
-                 r.count == 1 ? "it was" : "they were");
-    if (r.reason == sim::StopReason::boundary)
-      fmt::print(out, "Note: {} {} the profile; {} runout is where {} left it, so the runout\n"
-                      "      percentiles are lower bounds (extend the profile to see where they "
-                      "stop).\n",
-                 r.count, r.count == 1 ? "trajectory left" : "trajectories left",
-                 r.count == 1 ? "its" : "their", r.count == 1 ? "it" : "they");
-  }
+  // Blocks cut off by a limit or gone off the profile: what their stop points and runouts mean.
+  for (const auto& note : design::stop_reason_notes(s)) print_wrapped(out, "Note: ", note);
   fmt::print(out, "\nWritten:\n");
   for (const auto& f : files) fmt::print(out, "  {}\n", f.string());
 }

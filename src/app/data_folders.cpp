@@ -84,19 +84,26 @@ io::ReportTemplate load_report_layout(std::FILE* notes) {
                                      places));
   }
   io::ReportTemplate layout = io::load_report_template(file);
-  if (notes && !layout.built_in_keys.empty()) {
-    const auto& keys = layout.built_in_keys;
+  // What a firm's copy lacks (the built-in layout gives it) or holds in vain (an earlier
+  // layout's key), said on stderr so that the firm brings its copy up to date.
+  auto listed = [](const std::vector<std::string>& keys) {
     constexpr std::size_t kShown = 6;
     std::string names;
     for (std::size_t i = 0; i < std::min(keys.size(), kShown); ++i)
       names += (i ? ", " : "") + keys[i];
     if (keys.size() > kShown) names += fmt::format(" and {} more", keys.size() - kShown);
+    return fmt::format("{} key{} ({})", keys.size(), keys.size() == 1 ? "" : "s", names);
+  };
+  if (notes && !layout.built_in_keys.empty())
+    fmt::print(notes, "Note: the report layout {} leaves out {}: the layout built into pierre gives {}.\n",
+               file.string(), listed(layout.built_in_keys),
+               layout.built_in_keys.size() == 1 ? "it" : "them");
+  if (notes && !layout.retired_keys.empty())
     fmt::print(notes,
-               "Note: the report layout {} leaves out {} key{} ({}): the layout built into pierre "
-               "gives {}.\n",
-               file.string(), keys.size(), keys.size() == 1 ? "" : "s", names,
-               keys.size() == 1 ? "it" : "them");
-  }
+               "Note: the report layout {} holds {} that this version of pierre no longer uses: "
+               "{} ignored.\n",
+               file.string(), listed(layout.retired_keys),
+               layout.retired_keys.size() == 1 ? "it is" : "they are");
   return layout;
 }
 

@@ -151,7 +151,9 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
   const std::string needed = rules.design_on == DesignOn::mel   ? "MEL_req (the rule set designs on MEL; SEL_req is for information)"
                             : rules.design_on == DesignOn::sel ? "SEL_req (the rule set designs on SEL; MEL_req is for information)"
                                                                : "MEL_req and SEL_req";
-  d.how["energy_class"] = "the smallest class of " + classes.name + " meeting " + needed +
+  // The table by its title for the reader, and by the name a scenario gives it.
+  const std::string table = classes.title.empty() ? classes.name : classes.title + " (" + classes.name + ")";
+  d.how["energy_class"] = "the smallest class of the " + table + " meeting " + needed +
                           (classes.source.empty() ? std::string() : "; " + classes.source);
 }
 
@@ -171,6 +173,10 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   d.rules_name = rules.name;
   d.rules_title = rules.title;
   d.rules_source = rules.source;
+  d.rules_file = rules.file;
+  d.classes_name = classes.name;
+  d.classes_title = classes.title;
+  d.classes_file = classes.file;
   d.chainage = chainage;
   d.crossings = sample.speed.size();
   d.not_reached = sample.not_reached;

@@ -121,6 +121,7 @@ std::string group_rows(const std::vector<QuarrySectionInput>& in, QuarryDesign& 
     sr.spec = s.spec;
     sr.rules_title = s.rules.title;
     sr.rules_source = s.rules.source;
+    sr.rules_file = s.rules.file;
     sr.geometry = s.geometry;
     sr.distances = s.distances;
     sr.row = r;

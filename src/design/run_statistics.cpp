@@ -101,4 +101,40 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   return s;
 }
 
+std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
+  std::vector<std::string> notes;
+  for (const auto& r : s.stop_reasons) {
+    if (r.count == 0) continue;
+    const bool one = r.count == 1;
+    const std::string n = std::to_string(r.count);
+    const char* limit = nullptr;
+    switch (r.reason) {
+      case sim::StopReason::time_limit:
+        limit = "simulation.max_time";
+        break;
+      case sim::StopReason::impact_limit:
+        limit = "simulation.max_impacts (a block bouncing in place, e.g. on a very small roughness)";
+        break;
+      case sim::StopReason::numerical:
+        limit = "a numerical failure (a non-finite value or a lost contact)";
+        break;
+      case sim::StopReason::boundary:
+        notes.push_back(n + (one ? " trajectory left the profile; its runout is where it left it"
+                                 : " trajectories left the profile; their runout is where they left it") +
+                        ", so the runout percentiles are lower bounds (extend the profile to see "
+                        "where they stop).");
+        break;
+      case sim::StopReason::energy:
+      case sim::StopReason::friction:
+        break;
+    }
+    if (limit)
+      notes.push_back(n + (one ? " trajectory was" : " trajectories were") + " cut off by " + limit +
+                      ", not at rest; " +
+                      (one ? "its stop point and runout are where it was cut off."
+                           : "their stop points and runouts are where they were cut off."));
+  }
+  return notes;
+}
+
 }  // namespace pierre::design

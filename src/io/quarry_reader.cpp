@@ -44,6 +44,7 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
   const auto head = top.subtable("rule_set", {"name", "title", "source"});
   if (!head) top.missing("rule_set", "a [rule_set] table with title and source");
   r.name = head->string("name").value_or(stem);
+  r.file = file.string();
   r.title = head->required_string("title", "a title for the rule set");
   r.source = head->required_string("source", "a string citing where the rules come from");
 

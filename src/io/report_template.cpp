@@ -49,19 +49,21 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "crossings",    "capped",       "complete",     "quarry",
                  "quarry_summary", "quarry_average", "quarry_geometry", "quarry_counts",
                  "quarry_zones", "quarry_statistics", "quarry_fits", "quarry_exceedance",
-                 "quarry_governing"};
+                 "quarry_governing", "stop_reasons"};
   s["labels"] = {"project",       "description", "scenario_file", "date",        "version",
                  "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
                  "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
                  "id",            "beyond_profile", "pooled",    "observed_source", "total",
                  "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor",
-                 "lines_every_crossing", "overrides"};
+                 "lines_every_crossing", "overrides", "energy_classes", "read_from", "line_not_crossed", "stop_energy", "stop_friction",
+                 "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};
-  s["headings.lines"] = {"name",       "chainage",   "count",      "not_reached", "speed_mean",
-                         "speed_p95",  "height_p95", "energy_p95", "energy_max"};
+  s["headings.lines"] = {"name", "chainage", "count", "not_reached", "quantity", "mean", "p50",
+                         "p95",  "max",      "speed", "height",      "energy"};
+  s["headings.stop_reasons"] = {"reason", "count", "share", "meaning"};
   s["headings.checks"] = {"subject", "id", "what", "value", "limit", "unit",
                           "rule",    "status", "reason"};
   s["headings.simulation"] = {"seed",        "throws",           "gravity",          "max_time",
@@ -148,6 +150,17 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   return s;
 }
 
+// Keys an earlier layout had and this one no longer uses, by section: a firm's copy that still
+// holds them is read (they are ignored, and listed in ReportTemplate::retired_keys), so that
+// it keeps working. A key that was never in any layout is still an error.
+const std::map<std::string, Keys, std::less<>>& retired_sections() {
+  static const std::map<std::string, Keys, std::less<>> r = {
+      // Before the Summary's observation lines showed mean, P50, P95 and max of each quantity.
+      {"headings.lines", {"speed_mean", "speed_p95", "height_p95", "energy_p95", "energy_max"}},
+  };
+  return r;
+}
+
 const Keys kColours = {"heading_font", "heading_fill", "title_font", "note_font", "pass_font",
                        "pass_fill",    "fail_font",    "fail_fill",  "warn_font", "warn_fill",
                        "profile",      "paths",        "lines",      "barriers",  "histogram",
@@ -160,14 +173,23 @@ std::string joined(const Keys& keys) {
   return s;
 }
 
-// A table holding exactly `keys`, each a string.
+// A table holding exactly `keys`, each a string, and perhaps keys of `section` an earlier
+// layout had (retired_sections()), which are listed in `retired` and otherwise ignored.
 std::map<std::string, std::string, std::less<>> read_strings(const TomlTable& t, const Keys& keys,
-                                                             std::string_view what) {
+                                                             std::string_view what,
+                                                             std::string_view section = {},
+                                                             std::vector<std::string>* retired = nullptr) {
+  const auto old = retired_sections().find(section);
   // TomlTable rejects unknown keys only from an initializer list; check them here.
   for (auto&& [k, v] : t.table()) {
-    if (std::find(keys.begin(), keys.end(), k.str()) == keys.end())
-      throw InputError(t.file(), static_cast<long>(k.source().begin.line), t.field(k.str()),
-                       "an unknown key", fmt::format("one of {}", joined(keys)));
+    if (std::find(keys.begin(), keys.end(), k.str()) != keys.end()) continue;
+    if (old != retired_sections().end() && retired &&
+        std::find(old->second.begin(), old->second.end(), k.str()) != old->second.end()) {
+      retired->push_back(std::string(section) + "." + std::string(k.str()));
+      continue;
+    }
+    throw InputError(t.file(), static_cast<long>(k.source().begin.line), t.field(k.str()),
+                     "an unknown key", fmt::format("one of {}", joined(keys)));
   }
   std::map<std::string, std::string, std::less<>> out;
   for (const auto& k : keys) out[k] = t.required_string(k, std::string(what));
@@ -433,7 +455,7 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
   }
   for (const char* plain : {"formats", "titles", "labels"}) {
     const TomlTable t = required_table(top, plain);
-    tpl.text[plain] = read_strings(t, sections.at(plain), "a string");
+    tpl.text[plain] = read_strings(t, sections.at(plain), "a string", plain, &tpl.retired_keys);
   }
   {
     const TomlTable h = required_table(top, "headings");
@@ -444,7 +466,8 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
     for (const auto& name : tables) {
       const TomlTable t = required_table(h, name);
       tpl.text["headings." + name] =
-          read_strings(t, sections.at("headings." + name), "a string: the column heading");
+          read_strings(t, sections.at("headings." + name), "a string: the column heading",
+                       "headings." + name, &tpl.retired_keys);
     }
   }
   {

@@ -271,7 +271,9 @@ ojson barrier_json(const design::BarrierDesign& d) {
   j["name"] = d.spec.name;
   j["line"] = d.spec.line;
   j["chainage_m"] = d.chainage;
-  j["rules"] = {{"name", d.rules_name}, {"title", d.rules_title}, {"source", d.rules_source}};
+  j["rules"] = {{"name", d.rules_name}, {"title", d.rules_title}, {"source", d.rules_source},
+                {"file", d.rules_file}};
+  j["energy_classes"] = {{"name", d.classes_name}, {"title", d.classes_title}, {"file", d.classes_file}};
   j["mode"] = d.spec.candidate ? "check" : "design";
   j["crossings"] = d.crossings;
   j["not_reached"] = d.not_reached;
@@ -466,7 +468,8 @@ ojson quarry_row_json(const design::QuarryDesign& q, const design::QuarryRow& r,
   const design::QuarrySectionResult* first = r.sections.empty() ? nullptr : &q.sections[r.sections[0]];
   j["rules"] = {{"name", r.rules},
                 {"title", first ? first->rules_title : ""},
-                {"source", first ? first->rules_source : ""}};
+                {"source", first ? first->rules_source : ""},
+                {"file", first ? first->rules_file : ""}};
   j["height_m"] = r.height;
   put_counts(j, r);
   j["runout"] = distance_statistics_json(r.rd);

@@ -148,6 +148,7 @@ design::BarrierRuleSet load_rule_set_file(const fs::path& file) {
               "min_crossings"});
   design::BarrierRuleSet r;
   r.name = h.string("name").value_or(file.stem().string());
+  r.file = file.string();
   h.check("name", !r.name.empty(), "a non-empty name");
   r.title = h.required_string("title", "a title");
   r.source = h.required_string("source", "a string citing the rule set");
@@ -242,7 +243,8 @@ design::EnergyClassTable load_energy_classes_file(const fs::path& file) {
   const TomlTable h = header(top, "energy-classes", {"kind", "name", "title", "source"});
   design::EnergyClassTable t;
   t.name = h.string("name").value_or(file.stem().string());
-  (void)h.required_string("title", "a title");
+  t.title = h.required_string("title", "a title");
+  t.file = file.string();
   t.source = h.required_string("source", "a string citing the class table");
   const toml::array* a = top.array_of_tables("classes");
   if (!a || a->empty()) top.missing("classes", "[[classes]] tables with class and mel");

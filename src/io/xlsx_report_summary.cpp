@@ -1,4 +1,5 @@
-// The Summary sheet: the run, the recommended barriers, the observation lines, the quarry rows
+// The Summary sheet: the run, the barriers' design values, the observation lines, how the
+// trajectories ended, the quarry rows
 // (xlsx_report_quarry.cpp) and every check line.
 #include "xlsx_report_writer.hpp"
 
@@ -24,6 +25,7 @@ void Report::summary(lxw_worksheet* ws) {
   Row r = summary_run(ws, 2);
   r = summary_barriers(ws, r);
   r = summary_lines(ws, r);
+  r = summary_stops(ws, r);
   // Quarry danger zones: Tables 6.2/6.3's rows and their average.
   if (d_.quarry) r = quarry_summary(ws, r);
   summary_checks(ws, r);
@@ -117,27 +119,62 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
   return r;
 }
 
-// The statistics at the observation lines.
+// The statistics at the observation lines, as the console prints them: per line its
+// crossings, and the mean, P50, P95 and maximum of the speed, the passing height and the
+// translational energy, a row each. A line no trajectory crossed says so instead.
 Row Report::summary_lines(lxw_worksheet* ws, Row r) {
   if (d_.statistics.lines.empty()) return r;
   r = table_title(ws, r, "lines");
   headings(ws, r++, 0, "lines",
-           {"name", "chainage", "count", "not_reached", "speed_mean", "speed_p95",
-            "height_p95", "energy_p95", "energy_max"},
-           45);
+           {"name", "chainage", "quantity", "mean", "p50", "p95", "max", "count", "not_reached"},
+           30);
   for (const auto& l : d_.statistics.lines) {
-    text(ws, r, 0, l.name);
+    text(ws, r, 0, l.name, top());
     num(ws, r, 1, l.chainage, number("coordinate", 1));
-    num(ws, r, 2, static_cast<double>(l.count), number("count", 1));
-    num(ws, r, 3, static_cast<double>(l.not_reached), number("count", 1));
-    num(ws, r, 4, l.count ? l.speed.mean : kNaN, number("speed", 1));
-    num(ws, r, 5, l.count ? l.speed.p95 : kNaN, number("speed", 1));
-    num(ws, r, 6, l.count ? l.height.p95 : kNaN, number("length", 1));
-    num(ws, r, 7, l.count ? l.translational_energy.p95 / 1000 : kNaN, number("energy", 1));
-    num(ws, r, 8, l.count ? l.translational_energy.max / 1000 : kNaN, number("energy", 1));
-    ++r;
+    num(ws, r, 7, static_cast<double>(l.count), number("count", 1));
+    num(ws, r, 8, static_cast<double>(l.not_reached), number("count", 1));
+    if (l.count == 0) {
+      text(ws, r++, 2, t_.get("labels", "line_not_crossed"), note());
+      continue;
+    }
+    struct Quantity {
+      std::string_view heading, format;
+      const design::QuantityStatistics& q;
+      double scale;
+    };
+    for (const Quantity& q : {Quantity{"speed", "speed", l.speed, 1.0},
+                              Quantity{"height", "length", l.height, 1.0},
+                              Quantity{"energy", "energy", l.translational_energy, 1e-3}}) {
+      text(ws, r, 2, h("lines", q.heading));
+      Col c = 3;
+      for (double v : {q.q.mean, q.q.p50, q.q.p95, q.q.max}) num(ws, r, c++, v * q.scale, number(q.format, 1));
+      ++r;
+    }
   }
   if (d_.statistics.every_crossing) text(ws, r++, 0, t_.get("labels", "lines_every_crossing"), note());
+  return r;
+}
+
+// How the trajectories ended: a row per stop reason (zeros too, so that a reader sees none was
+// cut off), and what a count that is not zero means for the stop points and the runout.
+Row Report::summary_stops(lxw_worksheet* ws, Row r) {
+  const auto& stops = d_.statistics.stop_reasons;
+  if (stops.empty()) return r;
+  std::uint64_t total = 0;
+  for (const auto& s : stops) total += s.count;
+  r = table_title(ws, r, "stop_reasons");
+  headings(ws, r++, 0, "stop_reasons", {"reason", "count", "share", "meaning"}, 20);
+  for (const auto& s : stops) {
+    const std::string_view name = sim::to_string(s.reason);
+    std::string key = "stop_" + std::string(name);
+    std::replace(key.begin(), key.end(), '-', '_');
+    text(ws, r, 0, std::string(name));
+    num(ws, r, 1, static_cast<double>(s.count), number("count", 1));
+    num(ws, r, 2, total ? static_cast<double>(s.count) / static_cast<double>(total) : kNaN,
+        number("percent", 1));
+    text(ws, r++, 3, t_.get("labels", key));
+  }
+  for (const auto& n : design::stop_reason_notes(d_.statistics)) text(ws, r++, 0, n, note());
   return r;
 }
 

@@ -123,6 +123,8 @@ struct BarrierDesign {
 
   // Added with the procedure (design-checks.md §1):
   std::string rules_name;                    // the rule set's name (file stem)
+  std::string rules_file;                    // where the rule set was read from
+  std::string classes_name, classes_title, classes_file;  // the energy class table used
   std::optional<QuantityFit> observed_speed, observed_height, observed_energy;  // energy kJ
   double h_max_sim = 0;                      // m, largest simulated passing height
   double candidate_mel_kJ = 0, candidate_sel_kJ = 0;  // NaN when not declared / no candidate

@@ -57,7 +57,8 @@ struct ResidualHeightCategories {
   std::string source;
 };
 struct EnergyClassTable {
-  std::string name, source;
+  std::string name, title, source;
+  std::string file;  // where it was read from (empty when made in code); for the record
   std::vector<EnergyClass> classes;  // ascending; the last is open-ended ("> 4500 kJ")
   std::optional<ResidualHeightCategories> residual_height;
 };
@@ -66,6 +67,7 @@ struct BarrierRuleSet {
   std::string name;    // file stem, e.g. "thesis-2015"
   std::string title;   // human title
   std::string source;  // citation
+  std::string file;    // where it was read from (empty when made in code); for the record
   double percentile = 95;  // p of the characteristic values
   Governing governing = Governing::weibull;
   DesignOn design_on = DesignOn::both;

@@ -25,6 +25,7 @@ struct QuarryRuleSet {
   std::string name;    // file stem, e.g. "quarry-thesis-2015"
   std::string title;   // human title
   std::string source;  // citation
+  std::string file;    // where it was read from (empty when made in code); for the record
   double floor_angle_deg = 15;  // toe detection: the floor is flatter than this
   std::vector<QuarryGoverning> governing{QuarryGoverning::percentile};
   double percentile = 95;             // % (percentile candidate)

@@ -96,6 +96,7 @@ struct QuarryRow {
 struct QuarrySectionResult {
   QuarrySpec spec;
   std::string rules_title, rules_source;
+  std::string rules_file;  // where the rule set was read from
   QuarryGeometry geometry;
   QuarryDistances distances;  // per-trajectory ID/RD (histograms, CDFs)
   std::size_t row = 0;        // index into QuarryDesign::rows

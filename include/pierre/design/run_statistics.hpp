@@ -99,4 +99,10 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
 // Count, mean, 50th and 95th percentile (stats::percentiles) and maximum; NaN for an empty sample.
 QuantityStatistics quantity_statistics(std::span<const double> values);
 
+// What the engineer must know about how the trajectories ended, one sentence each (the console
+// and the report print the same words): blocks cut off by a limit, whose stop points are not
+// where they came to rest, and blocks that left the profile, whose runouts make the runout
+// percentiles lower bounds. Empty when every block came to rest (energy or friction).
+std::vector<std::string> stop_reason_notes(const RunStatistics& s);
+
 }  // namespace pierre::design

@@ -8,7 +8,8 @@
 // field, what was found and what was expected). A key the file leaves out takes the value of
 // the layout built into the program (templates/report.toml as it was at build time), so that a
 // firm's restyled copy keeps working when a later version adds keys; those keys are listed in
-// ReportTemplate::built_in_keys for the program to say so.
+// ReportTemplate::built_in_keys for the program to say so. A key an earlier layout had and this
+// one dropped is accepted and ignored (ReportTemplate::retired_keys).
 #pragma once
 
 #include <cstddef>
@@ -27,6 +28,9 @@ struct ReportTemplate {
   std::filesystem::path file;  // where it was read from
   // The dotted keys (or whole tables) the file left out, taken from the built-in layout.
   std::vector<std::string> built_in_keys;
+  // The dotted keys the file holds that an earlier layout had and this one no longer uses:
+  // read and ignored, so that an older copy keeps working.
+  std::vector<std::string> retired_keys;
 
   // Text by section and key: "sheets", "titles", "labels", "formats", "headings.<table>",
   // "chart.<chart>" (keys title, x_axis, y_axis). Every key of report_template_sections().

@@ -63,6 +63,15 @@ TEST_F(Check, PassingCandidateExitsZero) {
   const auto& b = j["barriers"][0];
   EXPECT_EQ(b["name"], "Generous");
   EXPECT_EQ(b["rules"]["name"], "thesis-2015");
+  // Which files the design read, for the record: the rule set and the class table it names.
+  EXPECT_TRUE(fs::equivalent(b["rules"]["file"].get<std::string>(),
+                             PIERRE_SOURCE_DIR "/rules/thesis-2015.toml"))
+      << b["rules"];
+  EXPECT_EQ(b["energy_classes"]["name"], "etag027-classes");
+  EXPECT_EQ(b["energy_classes"]["title"], "ETAG 027 / EAD 340059-00-0106 energy classes");
+  EXPECT_TRUE(fs::equivalent(b["energy_classes"]["file"].get<std::string>(),
+                             PIERRE_SOURCE_DIR "/rules/etag027-classes.toml"))
+      << b["energy_classes"];
   EXPECT_EQ(b["mode"], "check");
   // The requirement in summary.json is the limit of the check line.
   EXPECT_DOUBLE_EQ(b["MEL_req_kJ"].get<double>(), check(j, "energy.mel")["limit"].get<double>());

@@ -494,6 +494,28 @@ TEST_F(Cli, AnOlderRestyledLayoutIsCompletedAndNoted) {
   EXPECT_TRUE(fs::is_regular_file(dir_ / "r" / "report.xlsx"));
 }
 
+// A firm's layout holding headings an earlier version used (the Summary's old observation-line
+// columns): the run works and says which keys it ignores, so that the firm can drop them.
+TEST_F(Cli, ARestyledLayoutsRetiredKeysAreIgnoredAndNoted) {
+  std::string layout = slurp(PIERRE_SOURCE_DIR "/templates/report.toml");
+  const auto at = layout.find("\nmax = \"Max\"\n");
+  ASSERT_NE(at, std::string::npos);
+  layout.insert(at + 1, "speed_mean = \"Mean speed (m/s)\"\n");
+  fs::create_directories(dir_ / "firm");
+  std::ofstream(dir_ / "firm" / "report.toml") << layout;
+  const fs::path out = dir_ / "out.txt";
+  const int st = std::system(("PIERRE_TEMPLATES=" + q(dir_ / "firm") + " '" PIERRE_BINARY "' run " +
+                              kScenario + " --quiet --throws 1 --out " + q(dir_ / "r") + " 2>" + q(out))
+                                 .c_str());
+  EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 0) << slurp(out);
+  EXPECT_NE(slurp(out).find("Note: the report layout " + (dir_ / "firm" / "report.toml").string() +
+                            " holds 1 key (headings.lines.speed_mean) that this version of pierre "
+                            "no longer uses: it is ignored."),
+            std::string::npos)
+      << slurp(out);
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "r" / "report.xlsx"));
+}
+
 // Blocks that run off a profile too short for them: their runouts (where they left it) bias the
 // percentiles low, and the summary says so with the count from the stop reasons.
 TEST_F(Cli, BlocksLeavingTheProfileAreNoted) {

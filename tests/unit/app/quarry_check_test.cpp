@@ -65,6 +65,9 @@ TEST_F(QuarryCli, WorkAreasOutsideTheZonesExitZero) {
   EXPECT_EQ(north["name"], "North");
   EXPECT_EQ(north["pooled"], false);
   EXPECT_EQ(north["rules"]["name"], "quarry-thesis-2015");
+  EXPECT_TRUE(fs::equivalent(north["rules"]["file"].get<std::string>(),
+                             PIERRE_SOURCE_DIR "/rules/quarry-thesis-2015.toml"))
+      << north["rules"];
   EXPECT_EQ(north["thrown"], 600);  // 2 blocks x 300 throws
   EXPECT_EQ(north["runout"]["count"], 600);
   EXPECT_DOUBLE_EQ(north["height_m"].get<double>(), 20.0);

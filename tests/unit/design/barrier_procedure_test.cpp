@@ -116,7 +116,14 @@ TEST(BarrierProcedure, EachDesignQuantitySaysWhereItComesFrom) {
   EXPECT_EQ(d.how.at("volume"), "the design block, given");
   EXPECT_EQ(d.how.at("free_board_diameter"), "given");
   EXPECT_EQ(d.how.at("energy_class"),
-            "the smallest class of etag027-classes meeting MEL_req and SEL_req; ETAG 027 (2008) Table 2.3");
+            "the smallest class of the etag027-classes meeting MEL_req and SEL_req; ETAG 027 (2008) Table 2.3");
+  classes.title = "ETAG 027 energy classes";  // as read from a file: the title, then the name
+  const auto titled = design::design_barrier(spec(), rules, classes, sample(), std::nullopt, 100.0, 1);
+  ASSERT_TRUE(titled.design) << titled.error;
+  EXPECT_EQ(titled.design->how.at("energy_class"),
+            "the smallest class of the ETAG 027 energy classes (etag027-classes) meeting MEL_req "
+            "and SEL_req; ETAG 027 (2008) Table 2.3");
+  EXPECT_EQ(titled.design->classes_title, "ETAG 027 energy classes");
   // A factor made of parts cites its parts.
   auto pr = test::peila_ronco_2009();
   pr.gamma_F.parts[0].source = "Peila & Ronco (2009): trajectory";

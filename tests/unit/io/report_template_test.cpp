@@ -146,6 +146,39 @@ TEST(ReportTemplate, KeysACopyLeavesOutComeFromTheBuiltInLayout) {
                                             "sheets.summary"}));
 }
 
+// A firm's copy made before the Summary's observation lines were laid out a row per quantity:
+// its headings of the old columns (speed_mean, …) are keys this version dropped. They are read
+// and listed, not an error, and the new keys come from the built-in layout; a key that no
+// layout ever had is still an error.
+TEST(ReportTemplate, KeysAnEarlierLayoutHadAreIgnoredAndListed) {
+  const std::string old_lines =
+      "[headings.lines]\nname = \"Line\"\nchainage = \"Chainage (m)\"\ncount = \"Crossings\"\n"
+      "not_reached = \"Not reached\"\nspeed_mean = \"Mean speed (m/s)\"\n"
+      "speed_p95 = \"P95 speed (m/s)\"\nheight_p95 = \"P95 passing height (m)\"\n"
+      "energy_p95 = \"P95 energy (kJ)\"\nenergy_max = \"Max energy (kJ)\"\n\n";
+  std::string text = read_file(kTemplate);
+  const auto at = text.find("[headings.lines]");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, text.find("\n[", at + 1) + 1 - at, old_lines);
+  TempDir dir;
+  const auto t = load_report_template(dir.write("report.toml", text));
+  EXPECT_EQ(t.get("headings.lines", "name"), "Line");  // its own value kept
+  EXPECT_EQ(t.get("headings.lines", "p50"), load_report_template(kTemplate).get("headings.lines", "p50"));
+  EXPECT_EQ(t.retired_keys,
+            (std::vector<std::string>{"headings.lines.energy_max", "headings.lines.energy_p95",
+                                      "headings.lines.height_p95", "headings.lines.speed_mean",
+                                      "headings.lines.speed_p95"}));
+  EXPECT_TRUE(load_report_template(kTemplate).retired_keys.empty());
+  // A retired key of one table is unknown in another.
+  const std::string moved = shipped_with("[headings.checks]\n", "[headings.checks]\nspeed_mean = \"x\"\n");
+  try {
+    load_report_template(dir.write("moved.toml", moved));
+    ADD_FAILURE() << "speed_mean under [headings.checks] was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("headings.checks.speed_mean"), std::string::npos) << e.what();
+  }
+}
+
 // A copy's sheet order made before a sheet was added: the sheet goes in after the one it
 // follows in the built-in order, the copy's own order of the rest is kept, and it is listed.
 TEST(ReportTemplate, SheetsACopysOrderLeavesOutGoInAfterTheirBuiltInPredecessor) {

@@ -2,6 +2,7 @@
 // not-reached, NaN when a line is never crossed (the percentiles are stats::, tested there).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -109,6 +110,40 @@ TEST(RunStatistics, TheMeanKeepsValuesARunningSumWouldDrop) {
   EXPECT_EQ(q.max, 1.0);
   EXPECT_EQ(q.p50, 1e-16);
   EXPECT_EQ(q.count, 1'000'001u);
+}
+
+// What the stop reasons mean for the results, in words the console and the report share: none
+// when every block came to rest; a sentence for each limit that cut blocks off and for blocks
+// that left the profile (their runouts make the percentiles lower bounds), singular for one.
+TEST(RunStatistics, StopReasonNotesSayWhatTheCountsMean) {
+  design::RunStatistics s;
+  auto set = [&](std::array<std::uint64_t, 6> n) {
+    s.stop_reasons.clear();
+    for (std::size_t k = 0; k < n.size(); ++k)
+      s.stop_reasons.push_back({static_cast<sim::StopReason>(k), n[k]});
+  };
+  set({90, 10, 0, 0, 0, 0});
+  EXPECT_TRUE(design::stop_reason_notes(s).empty());
+  set({90, 10, 7, 0, 1, 2});
+  const auto notes = design::stop_reason_notes(s);
+  ASSERT_EQ(notes.size(), 3u);
+  EXPECT_EQ(notes[0].rfind("7 trajectories left the profile; their runout is where they left it, "
+                           "so the runout percentiles are lower bounds",
+                           0),
+            0u)
+      << notes[0];
+  EXPECT_EQ(notes[1], "1 trajectory was cut off by simulation.max_impacts (a block bouncing in "
+                      "place, e.g. on a very small roughness), not at rest; its stop point and "
+                      "runout are where it was cut off.");
+  EXPECT_EQ(notes[2].rfind("2 trajectories were cut off by a numerical failure", 0), 0u) << notes[2];
+  EXPECT_NE(notes[2].find("their stop points and runouts are where they were cut off."),
+            std::string::npos);
+  set({0, 0, 1, 3, 0, 0});
+  const auto more = design::stop_reason_notes(s);
+  ASSERT_EQ(more.size(), 2u);
+  EXPECT_EQ(more[0].rfind("1 trajectory left the profile; its runout is where it left it", 0), 0u);
+  EXPECT_EQ(more[1].rfind("3 trajectories were cut off by simulation.max_time, not at rest", 0), 0u)
+      << more[1];
 }
 
 }  // namespace

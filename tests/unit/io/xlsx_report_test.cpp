@@ -133,6 +133,10 @@ std::unique_ptr<Fixture> make_fixture(int crossings = 400, int trajectories = 30
   b.rules_name = "thesis-2015";
   b.rules_title = "Mitchell (2015) §4.7";
   b.rules_source = "Mitchell, PhD thesis, 2015";
+  b.rules_file = "firm-rules/thesis-2015.toml";
+  b.classes_name = "etag027-classes";
+  b.classes_title = "ETAG 027 energy classes";
+  b.classes_file = "firm-rules/etag027-classes.toml";
   b.chainage = 60;
   b.crossings = static_cast<std::uint64_t>(crossings);
   b.not_reached = 200;
@@ -196,7 +200,16 @@ std::unique_ptr<Fixture> make_fixture(int crossings = 400, int trajectories = 30
   ls.height = {400, 1.45, 1.2, 3.4, 6.9};
   ls.translational_energy = {400, 560e3, 520e3, 950e3, 1400e3};
   d.statistics.lines.push_back(ls);
+  design::LineStatistics never;  // a line no trajectory crossed
+  never.name = "Screen 9";
+  never.chainage = 190;
+  never.not_reached = 600;
+  never.speed = never.height = never.translational_energy = design::quantity_statistics({});
+  d.statistics.lines.push_back(never);
   d.statistics.runout = {600, 95, 110, 118, 125};
+  d.statistics.stop_reasons = {{sim::StopReason::energy, 560},    {sim::StopReason::friction, 30},
+                               {sim::StopReason::boundary, 10},   {sim::StopReason::time_limit, 0},
+                               {sim::StopReason::impact_limit, 0}, {sim::StopReason::numerical, 0}};
 
   // Two sample paths.
   for (int p = 0; p < 2; ++p) {
@@ -404,6 +417,46 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto seed = find_row(sum, 0, "Seed");
   ASSERT_TRUE(seed);
   EXPECT_EQ(number(sum, *seed, 2), 12345.0);
+  // The observation lines as the console prints them: mean, P50, P95 and max of each quantity,
+  // energies in kJ; a line nobody crossed says so rather than showing empty cells.
+  const auto sl = find_row(sum, 0, "Screen 1");
+  ASSERT_TRUE(sl);
+  EXPECT_EQ(cell(sum, *sl, 2)->text, "Speed (m/s)");
+  EXPECT_EQ(number(sum, *sl, 3), 18.0);
+  EXPECT_EQ(number(sum, *sl, 4), 18.2);
+  EXPECT_EQ(number(sum, *sl, 5), 24.1);
+  EXPECT_EQ(number(sum, *sl, 6), 31.0);
+  EXPECT_EQ(number(sum, *sl, 7), 400.0);
+  EXPECT_EQ(number(sum, *sl, 8), 200.0);
+  EXPECT_EQ(cell(sum, *sl + 1, 2)->text, "Passing height (m)");
+  EXPECT_EQ(number(sum, *sl + 1, 4), 1.2);
+  EXPECT_EQ(number(sum, *sl + 1, 6), 6.9);
+  EXPECT_EQ(cell(sum, *sl + 2, 2)->text, "Translational energy (kJ)");
+  EXPECT_EQ(number(sum, *sl + 2, 3), 560.0);
+  EXPECT_EQ(number(sum, *sl + 2, 5), 950.0);
+  EXPECT_EQ(number(sum, *sl + 2, 6), 1400.0);
+  const auto never = find_row(sum, 0, "Screen 9");
+  ASSERT_TRUE(never);
+  EXPECT_EQ(number(sum, *never, 8), 600.0);
+  EXPECT_NE(cell(sum, *never, 2)->text.find("no trajectory crossed this line"), std::string::npos);
+  // How the trajectories ended: every reason with its count and share, and what the 10 that
+  // left the profile mean for the runout.
+  const auto stops = find_row(sum, 0, "Stop reason");
+  ASSERT_TRUE(stops);
+  const char* reasons[] = {"energy", "friction", "boundary", "time-limit", "impact-limit", "numerical"};
+  const double counts_by_reason[] = {560, 30, 10, 0, 0, 0};
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(cell(sum, *stops + 1 + k, 0)->text, reasons[k]);
+    EXPECT_EQ(number(sum, *stops + 1 + k, 1), counts_by_reason[k]) << reasons[k];
+    EXPECT_NEAR(*number(sum, *stops + 1 + k, 2), counts_by_reason[k] / 600, 1e-15) << reasons[k];
+  }
+  EXPECT_NE(cell(sum, *stops + 3, 3)->text.find("left the profile"), std::string::npos);
+  EXPECT_NE(cell(sum, *stops + 7, 0)->text.find("10 trajectories left the profile; their runout is "
+                                                "where they left it, so the runout percentiles are "
+                                                "lower bounds"),
+            std::string::npos)
+      << cell(sum, *stops + 7, 0)->text;
+
   // The recommended barrier: MEL_req and h_i as numbers.
   const auto rec = find_row(sum, 0, "Screen A");
   ASSERT_TRUE(rec);
@@ -424,6 +477,14 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto mel_row = find_row(bar, 0, "MEL_req");
   ASSERT_TRUE(mel_row);
   EXPECT_EQ(number(bar, *mel_row, 1), 1386.9);
+  // The files the design read, for the record.
+  const auto rules_row = find_row(bar, 0, "Rule set");
+  ASSERT_TRUE(rules_row);
+  EXPECT_EQ(cell(bar, *rules_row + 2, 1)->text, "read from firm-rules/thesis-2015.toml");
+  const auto classes_row = find_row(bar, 0, "Energy class table");
+  ASSERT_TRUE(classes_row);
+  EXPECT_EQ(cell(bar, *classes_row, 1)->text, "etag027-classes — ETAG 027 energy classes");
+  EXPECT_EQ(cell(bar, *classes_row + 1, 1)->text, "read from firm-rules/etag027-classes.toml");
   const auto gf = find_row(bar, 0, "γF");
   ASSERT_TRUE(gf);
   EXPECT_EQ(number(bar, *gf, 1), 1.16);
