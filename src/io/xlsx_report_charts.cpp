@@ -2,6 +2,8 @@
 // and the data they draw (trajectory paths, histogram outlines, curve grids).
 #include "xlsx_report_writer.hpp"
 
+#include "pierre/io/chart_scale.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -107,18 +109,14 @@ void Report::markers(lxw_chart_series* s, std::uint8_t type, std::uint8_t size,
 
 void Report::equal_scale(lxw_chart* chart, double xmin, double xmax, double zmin, double zmax,
                          double x_scale, double y_scale) {
-  if (!(xmax > xmin) || !(zmax >= zmin)) return;
-  const double w = t_.chart_width * x_scale * 0.85, h = t_.chart_height * y_scale * 0.68;
-  const double margin = 0.05 * std::max(zmax - zmin, 1e-9);
-  const double per_px = std::max((xmax - xmin) / w, (zmax - zmin + 2 * margin) / h);
-  // Bounds on round numbers (Excel labels the ticks from them), widening only.
-  auto round_step = [](double range) { return std::pow(10.0, std::floor(std::log10(range))) / 2; };
-  const double xs = round_step(per_px * w), zs = round_step(per_px * h);
-  const double x0 = std::floor(xmin / xs) * xs, z0 = std::floor((zmin - margin) / zs) * zs;
-  chart_axis_set_min(chart->x_axis, x0);
-  chart_axis_set_max(chart->x_axis, std::ceil((x0 + per_px * w) / xs) * xs);
-  chart_axis_set_min(chart->y_axis, z0);
-  chart_axis_set_max(chart->y_axis, std::ceil((z0 + per_px * h) / zs) * zs);
+  if (!valid_extent(xmin, xmax, zmin, zmax)) return;
+  // The plot area: the chart less its axis labels and legend (about 85 % by 68 %).
+  const AxisBounds b = equal_scale_bounds(xmin, xmax, zmin, zmax, t_.chart_width * x_scale * 0.85,
+                                          t_.chart_height * y_scale * 0.68);
+  chart_axis_set_min(chart->x_axis, b.x0);
+  chart_axis_set_max(chart->x_axis, b.x1);
+  chart_axis_set_min(chart->y_axis, b.z0);
+  chart_axis_set_max(chart->y_axis, b.z1);
 }
 
 void Report::point_labels(lxw_chart_series* s, const std::vector<std::string>& names) {

@@ -1,0 +1,40 @@
+#include "pierre/io/chart_scale.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pierre::io {
+
+bool valid_extent(double xmin, double xmax, double zmin, double zmax) {
+  return std::isfinite(xmin) && std::isfinite(xmax) && std::isfinite(zmin) &&
+         std::isfinite(zmax) && xmax > xmin && zmax >= zmin;
+}
+
+AxisBounds equal_scale_bounds(double xmin, double xmax, double zmin, double zmax, double width,
+                              double height) {
+  AxisBounds b;
+  if (!valid_extent(xmin, xmax, zmin, zmax) || !(width > 0) || !(height > 0)) return b;
+  const double margin = 0.05 * std::max(zmax - zmin, 1e-9);
+  const double lo = zmin - margin, hi = zmax + margin;
+  // Half a power of ten below the range: 50 m ticks on a few hundred metres.
+  auto round_step = [](double range) { return std::pow(10.0, std::floor(std::log10(range))) / 2; };
+  double per_px = std::max((xmax - xmin) / width, (hi - lo) / height);
+  // The lower bounds move down to round numbers, and the window must still reach the upper
+  // ends from there: widen the scale until it does (the steps it implies can only grow, so a
+  // few rounds settle it).
+  double xs = 0, zs = 0;
+  for (int round = 0; round < 8; ++round) {
+    xs = round_step(per_px * width);
+    zs = round_step(per_px * height);
+    b.x0 = std::floor(xmin / xs) * xs;
+    b.z0 = std::floor(lo / zs) * zs;
+    const double need = std::max((xmax - b.x0) / width, (hi - b.z0) / height);
+    if (need <= per_px) break;
+    per_px = need;
+  }
+  b.x1 = std::max(std::ceil((b.x0 + per_px * width) / xs) * xs, std::ceil(xmax / xs) * xs);
+  b.z1 = std::max(std::ceil((b.z0 + per_px * height) / zs) * zs, std::ceil(hi / zs) * zs);
+  return b;
+}
+
+}  // namespace pierre::io

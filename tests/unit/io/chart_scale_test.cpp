@@ -1,0 +1,80 @@
+// io::equal_scale_bounds: a section drawn at one scale holds all of its extent with a margin
+// above and below, whatever the rounding of the bounds to tick values.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pierre/io/chart_scale.hpp"
+
+namespace {
+
+using pierre::io::AxisBounds;
+using pierre::io::equal_scale_bounds;
+
+// What every drawing must satisfy: the extent and its margin inside, the same metres per pixel
+// both ways up to the widening of the upper bounds to a tick (at most half a tick step, which
+// is at most half the window), and bounds on multiples of half a power of ten.
+void expect_drawable(double xmin, double xmax, double zmin, double zmax, double w, double h) {
+  const AxisBounds b = equal_scale_bounds(xmin, xmax, zmin, zmax, w, h);
+  const double margin = 0.05 * std::max(zmax - zmin, 1e-9);
+  SCOPED_TRACE(testing::Message() << "x " << xmin << ".." << xmax << ", z " << zmin << ".." << zmax
+                                  << " in " << w << " x " << h << " px -> x " << b.x0 << ".."
+                                  << b.x1 << ", z " << b.z0 << ".." << b.z1);
+  EXPECT_LE(b.x0, xmin);
+  EXPECT_GE(b.x1, xmax);
+  EXPECT_LE(b.z0, zmin - margin * (1 - 1e-12));
+  EXPECT_GE(b.z1, zmax + margin * (1 - 1e-12));
+  const double across = (b.x1 - b.x0) / w, up = (b.z1 - b.z0) / h;
+  EXPECT_LE(std::max(across, up) / std::min(across, up), 1.5 + 1e-12);
+  // Each bound a multiple of a tick step k · 10^e / 2 that is not tiny against its window (at
+  // least a two-hundredth of it): Excel labels the ticks from the bounds.
+  auto on_tick = [](double v, double window) {
+    for (int e = -12; e <= 12; ++e) {
+      const double step = std::pow(10.0, e) / 2;
+      if (step < window / 200) continue;
+      const double k = v / step;
+      if (std::abs(k - std::round(k)) < 1e-9 * std::max(1.0, std::abs(k))) return true;
+    }
+    return false;
+  };
+  for (double v : {b.x0, b.x1}) EXPECT_TRUE(on_tick(v, b.x1 - b.x0)) << v << " is not a tick value";
+  for (double v : {b.z0, b.z1}) EXPECT_TRUE(on_tick(v, b.z1 - b.z0)) << v << " is not a tick value";
+}
+
+// The quarry section of Preg 1 (examples/quarry-austria): a crest at 20 m over an 80 m floor.
+// The lower bound went down to −5 m and the window, sized from z0 = zmin − margin, stopped at
+// 20 m: the crest, and the paths starting above it, ran along the chart's top edge.
+TEST(ChartScale, TheCrestIsInsideTheChart) {
+  const double w = 620 * 2.0 * 0.85, h = 330 * 1.4 * 0.68;
+  const AxisBounds b = equal_scale_bounds(0, 80, 0, 20, w, h);
+  EXPECT_GE(b.z1, 21.0) << b.z0 << ".." << b.z1;
+  expect_drawable(0, 80, 0, 20, w, h);
+}
+
+// A grid of extents, wide and tall, at and off round numbers, in the chart sizes the report
+// uses (the profile 1.6 × 1.6, the quarry section 2.0 × 1.4 of the default 620 × 330 px).
+TEST(ChartScale, EveryExtentIsHeldAtOneScale) {
+  const double sizes[][2] = {{620 * 1.6 * 0.85, 330 * 1.6 * 0.68}, {620 * 2.0 * 0.85, 330 * 1.4 * 0.68},
+                             {100, 400}};
+  for (const auto& s : sizes)
+    for (double x0 : {-37.5, 0.0, 5.0, 1234.0})
+      for (double dx : {0.3, 12.0, 80.0, 486.0, 999.9, 25000.0})
+        for (double z0 : {-120.0, -2.0, 0.0, 96.86})
+          for (double dz : {0.0, 0.4, 20.0, 20.5, 302.0, 4000.0})
+            expect_drawable(x0, x0 + dx, z0, z0 + dz, s[0], s[1]);
+}
+
+TEST(ChartScale, NothingToGoByLeavesTheDefaults) {
+  for (const AxisBounds& b : {equal_scale_bounds(5, 5, 0, 1, 100, 100),
+                              equal_scale_bounds(0, 1, 2, 1, 100, 100),
+                              equal_scale_bounds(0, NAN, 0, 1, 100, 100),
+                              equal_scale_bounds(0, 1, 0, 1, 0, 100)}) {
+    EXPECT_EQ(b.x0, 0);
+    EXPECT_EQ(b.x1, 1);
+    EXPECT_EQ(b.z0, 0);
+    EXPECT_EQ(b.z1, 1);
+  }
+}
+
+}  // namespace
