@@ -46,7 +46,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "scenario_text", "barrier",     "statistics",     "bootstrap",
                  "design",       "factors",      "exceedance",     "barrier_checks",
                  "notes",        "chart_data",   "profile",        "trajectories",
-                 "crossings",    "capped",       "complete",     "quarry",
+                 "crossings",    "capped",       "complete",     "no_rows",     "quarry",
                  "quarry_summary", "quarry_average", "quarry_geometry", "quarry_counts",
                  "quarry_zones", "quarry_statistics", "quarry_fits", "quarry_exceedance",
                  "quarry_governing", "stop_reasons"};

@@ -8,7 +8,7 @@ namespace pierre::io::detail {
 
 Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t total,
                      const char* csv) {
-  const std::string key = shown < total ? "capped" : "complete";
+  const std::string key = total == 0 ? "no_rows" : shown < total ? "capped" : "complete";
   std::string s = replace_all(t_.get("titles", key), "{shown}", std::to_string(shown));
   s = replace_all(replace_all(s, "{total}", std::to_string(total)), "{file}", csv);
   s = replace_all(s, "{printed}", std::to_string(std::min<std::size_t>(shown, t_.print_rows)));

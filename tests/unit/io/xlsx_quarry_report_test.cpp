@@ -371,6 +371,13 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     EXPECT_EQ(cell(s, *office, 4)->text, "FAIL");
     expect_number(s, *office, 1, 8);
   }
+  // Crossings: a quarry scenario has no observation lines, and the sheet says why it is empty
+  // (it said "All 0 rows").
+  {
+    const Sheet& s = sheets["Crossings"];
+    ASSERT_GE(s.size(), 2u);
+    EXPECT_EQ(s[1][0].text.rfind("No rows: the CSV file crossings.csv holds none", 0), 0u) << s[1][0].text;
+  }
   // Summary: Tables 6.2/6.3's rows, the average rows and every quarry check line.
   {
     const Sheet& s = sheets["Summary"];

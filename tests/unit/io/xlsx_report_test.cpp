@@ -413,7 +413,7 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
             std::to_string(f->data.checks.size()) + " check lines: " + std::to_string(counts[1]) +
                 " FAIL, " + std::to_string(counts[2]) + " WARN, " + std::to_string(counts[0]) +
                 " PASS, " + std::to_string(counts[3]) +
-                " N/A (a FAIL makes `pierre check` exit 1; a WARN is advisory)");
+                " N/A (a FAIL makes pierre check exit with code 1, for pipelines; a WARN is advisory)");
   const auto seed = find_row(sum, 0, "Seed");
   ASSERT_TRUE(seed);
   EXPECT_EQ(number(sum, *seed, 2), 12345.0);
