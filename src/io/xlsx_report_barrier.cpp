@@ -311,9 +311,13 @@ Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesig
 // The probabilities of exceeding the barrier's capacities (Table 4.2's columns).
 Row Report::barrier_exceedance(lxw_worksheet* ws, Row r, const design::BarrierDesign& b) {
   r = table_title(ws, r, "exceedance");
-  headings(ws, r++, 0, "exceedance",
-           {"what", "threshold", "unit", "simulated_weibull", "simulated_empirical",
-            "observed_weibull"});
+  // The observed column only with observed data: an empty column reads as values missing.
+  const bool observed = std::any_of(b.exceedance.begin(), b.exceedance.end(),
+                                    [](const design::ExceedanceRow& e) { return e.observed_weibull.has_value(); });
+  headings(ws, r, 0, "exceedance",
+           {"what", "threshold", "unit", "simulated_weibull", "simulated_empirical"});
+  if (observed) headings(ws, r, 5, "exceedance", {"observed_weibull"});
+  ++r;
   for (const auto& e : b.exceedance) {
     text(ws, r, 0, e.what, bold());
     num(ws, r, 1, e.threshold, number(e.unit == "kJ" ? "energy" : "length"));

@@ -492,6 +492,8 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto ex = find_row(bar, 0, "P(h > h_i)");
   ASSERT_TRUE(ex);
   EXPECT_EQ(number(bar, *ex, 3), 0.025) << dump(bar, *ex);
+  EXPECT_EQ(number(bar, *ex, 5), 0.025) << dump(bar, *ex);  // observed data: its column
+  EXPECT_EQ(cell(bar, *find_row(bar, 0, "Probability"), 5)->text, "Observed, Weibull");
   const auto wk = find_row(bar, 0, "Weibull shape k");
   ASSERT_TRUE(wk);
   EXPECT_EQ(number(bar, *wk, 1), 3.5);  // speed
@@ -579,6 +581,7 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   ex.at(1).simulated_weibull = 2.17e-5;
   ex.at(1).simulated_empirical = 0.0;
   ex.at(3).simulated_weibull = 1.26e-6;
+  for (auto& e : ex) e.observed_weibull.reset();  // no observed data: no Observed column
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   // Every sheet, as shown.
@@ -596,6 +599,11 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   const auto hi = find_row(*bar, 0, "P(h > h_i)");
   ASSERT_TRUE(hi);
   EXPECT_EQ(cell(*bar, *hi, 3)->text, "2.500%") << dump(*bar, *hi);
+  const auto head = find_row(*bar, 0, "Probability");
+  ASSERT_TRUE(head);
+  EXPECT_EQ(cell(*bar, *head, 4)->text, "Simulated, empirical");
+  const auto beyond = cell(*bar, *head, 5);
+  EXPECT_TRUE(!beyond || beyond->text.empty()) << "an empty Observed column: " << beyond->text;
 }
 
 TEST(XlsxReport, LibreOfficePrintsToPdf) {
