@@ -3,6 +3,7 @@
 // help and --version 0, usage errors and bad input 2, anything unexpected 3.
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -20,8 +21,26 @@
 #define PIERRE_VERSION "unknown"
 #endif
 
+namespace {
+
+// A failed write to stdout (a full disk, a reader that closed the pipe): what the command
+// printed is lost, so a script reading it must not take exit 0, nor an "internal error" for a
+// fault of where the output went.
+int lost_stdout() {
+  const int err = errno;
+  std::fputs(("error: cannot write to standard output: " + std::string(std::strerror(err)) +
+              " (the result files, if any, were written)\n")
+                 .c_str(),
+             stderr);
+  return pierre::app::kExitInternal;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace pierre::app;
+  // A closed pipe is a failed write (EPIPE, exit 3 below), not a silent death by SIGPIPE (141).
+  std::signal(SIGPIPE, SIG_IGN);
   try {
     CLI::App app{"pierre " PIERRE_VERSION
                  " — stochastic lumped-mass rockfall simulation (PIERRE 2) and protection design",
@@ -84,12 +103,7 @@ int main(int argc, char** argv) {
       const int code = commands[i]->run();
       // What the command printed must have reached stdout (a full disk, a closed pipe): else a
       // script reading it would take a lost verdict for a given one.
-      if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        std::fputs(("error: cannot write to standard output: " + std::string(std::strerror(errno)) +
-                    "\n").c_str(),
-                   stderr);
-        return kExitInternal;
-      }
+      if (std::fflush(stdout) != 0 || std::ferror(stdout)) return lost_stdout();
       return code;
     }
     return kExitInput;
@@ -103,7 +117,8 @@ int main(int argc, char** argv) {
                stderr);
     return kExitInput;
   } catch (const std::exception& e) {
-    std::fflush(stdout);
+    // fmt throws when a print to stdout fails: that is the output's fault, said as such.
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) return lost_stdout();
     std::fputs(("internal error: " + std::string(e.what()) + "\n").c_str(), stderr);
     return kExitInternal;
   } catch (...) {

@@ -1,7 +1,9 @@
 // The real `pierre` binary: exit codes, files written, CSV headers, row counts, summary.json,
 // nothing written on bad input, --help examples, usage errors, reproducibility across runs and
 // thread counts.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -535,8 +537,6 @@ TEST_F(Cli, BlocksLeavingTheProfileAreNoted) {
   EXPECT_EQ(r.out.find("cut off by"), std::string::npos) << r.out;  // no limit was reached
 }
 
-// A verdict that never reached stdout (a full disk, here /dev/full) is not a success: exit 3
-// and a message on stderr, not 0 with the output lost.
 // An --out that cannot be a folder is named, with why, before anything is simulated; the file in
 // the way is left as it was.
 TEST_F(Cli, AnOutputPathThatCannotBeAFolderIsRefusedByName) {
@@ -555,18 +555,53 @@ TEST_F(Cli, AnOutputPathThatCannotBeAFolderIsRefusedByName) {
   EXPECT_EQ(slurp(file), "mine\n");
 }
 
+// A verdict that never reached stdout (a full disk, here /dev/full) is not a success: exit 3
+// and a message on stderr saying so, not 0 with the output lost, nor an "internal error" (the
+// run's table, printed by fmt, failed by an exception that was reported as one).
 TEST_F(Cli, OutputThatCannotBeWrittenIsAnError) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
   const fs::path e = dir_ / "stderr.txt";
-  const std::string cmd = std::string("'") + PIERRE_BINARY + "' validate " + q(kScenario) +
-                          " >/dev/full 2>" + q(e);
-  const int st = std::system(cmd.c_str());
-  ASSERT_TRUE(WIFEXITED(st));
-  EXPECT_EQ(WEXITSTATUS(st), 3);
-  EXPECT_NE(slurp(e).find("cannot write to standard output"), std::string::npos)
-      << slurp(e);
+  for (const std::string args : {"validate " + q(kScenario),
+                                 "run " + q(kScenario) + " --throws 2 --out " + q(dir_ / "r")}) {
+    const std::string cmd = std::string("'") + PIERRE_BINARY + "' " + args + " >/dev/full 2>" + q(e);
+    const int st = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(st)) << args;
+    EXPECT_EQ(WEXITSTATUS(st), 3) << args;
+    EXPECT_NE(slurp(e).find("error: cannot write to standard output: No space left on device"),
+              std::string::npos)
+        << args << ": " << slurp(e);
+    EXPECT_EQ(slurp(e).find("internal error"), std::string::npos) << args << ": " << slurp(e);
+  }
   // The same command into a file that can be written: 0.
   EXPECT_EQ(pierre("validate " + q(kScenario)).code, 0);
+}
+
+// A reader that closed the pipe (`pierre check … | head -1` after its line) is a failed write
+// too: exit 3 and the message, not a silent death by SIGPIPE (exit 141). The pipe's read end
+// is closed before pierre starts, so that the first write fails whatever the timing.
+TEST_F(Cli, AClosedPipeIsAFailedWriteNotADeath) {
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  close(fds[0]);
+  const fs::path e = dir_ / "stderr.txt";
+  posix_spawn_file_actions_t acts;
+  posix_spawn_file_actions_init(&acts);
+  posix_spawn_file_actions_adddup2(&acts, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addopen(&acts, STDERR_FILENO, e.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> args = {PIERRE_BINARY, "validate", kScenario};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, PIERRE_BINARY, &acts, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&acts);
+  close(fds[1]);
+  int st = 0;
+  ASSERT_EQ(waitpid(pid, &st, 0), pid);
+  ASSERT_TRUE(WIFEXITED(st)) << "killed by signal " << (WIFSIGNALED(st) ? WTERMSIG(st) : 0);
+  EXPECT_EQ(WEXITSTATUS(st), 3);
+  EXPECT_NE(slurp(e).find("error: cannot write to standard output: Broken pipe"), std::string::npos)
+      << slurp(e);
 }
 
 }  // namespace
