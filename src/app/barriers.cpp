@@ -50,7 +50,7 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
         l.value = static_cast<double>(s.speed.size());
         l.limit = loaded.barrier_rules[i].min_crossings;
         l.status = design::CheckStatus::warn;
-        l.reason = "no design: " + o.error + (spec.candidate ? "; the candidate is not checked" : "") +
+        l.reason = "no design: " + o.error + (spec.candidate ? "; the candidate is not checked (FAIL)" : "") +
                    ": is the line where the barrier stands?";
       } else {
         l.what = "the barrier's design from the crossings of its line";
@@ -62,6 +62,20 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
                                              static_cast<std::uint64_t>(s.speed.size()),
                                              o.failed_check, o.error});
       out.checks.push_back(std::move(l));
+      // A candidate with nothing to be checked against has not passed: `pierre check` must not
+      // exit 0 for it, as a pipeline gating on the exit code would take it for checked.
+      if (spec.candidate) {
+        design::CheckLine c;
+        c.subject = spec.name;
+        c.id = "candidate";
+        c.rule = design::rule_reference(loaded.barrier_rules[i], c.id);
+        c.what = "the candidate barrier against the design values of its line";
+        c.status = design::CheckStatus::fail;
+        c.reason = "not checked: the line gave no design (" + o.error +
+                   "); a candidate is never passed unchecked: place the line where the blocks pass, "
+                   "or see whether the profile runs from the source end";
+        out.checks.push_back(std::move(c));
+      }
     }
   }
   return out;

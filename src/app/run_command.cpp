@@ -129,7 +129,9 @@ class RunCommand final : public Command {
       // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
       io::check_trajectory_count(sc, loaded.file, 0, "--throws", std::to_string(*throws));
     }
-    if (!quiet_) print_source_notes(stdout, sc);
+    // A source falling against the profile's direction is likely a mistake that empties every
+    // line: said even when quiet, on stderr, where a pipeline's log keeps it.
+    print_source_notes(quiet_ ? stderr : stdout, sc);
 
     sim::RunOptions opt;
     opt.threads = threads_;

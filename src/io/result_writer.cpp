@@ -566,7 +566,8 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
       for (const auto& d : results.barriers) barriers.push_back(barrier_json(d));
       j["barriers"] = barriers;
     }
-    if (!results.barriers_without_design.empty()) {
+    if (!results.barriers.empty() || !results.barriers_without_design.empty()) {
+      // With barriers, always (empty when each has a design): a script reads it without a guard.
       json none = json::array();
       for (const auto& b : results.barriers_without_design)
         none.push_back({{"name", b.name}, {"line", b.line}, {"chainage_m", b.chainage},

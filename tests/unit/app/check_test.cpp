@@ -63,6 +63,9 @@ TEST_F(Check, PassingCandidateExitsZero) {
   const auto& b = j["barriers"][0];
   EXPECT_EQ(b["name"], "Generous");
   EXPECT_EQ(b["rules"]["name"], "thesis-2015");
+  // Every barrier has a design: the list of those without is there, empty (no guard needed).
+  ASSERT_TRUE(j.contains("barriers_without_design"));
+  EXPECT_TRUE(j["barriers_without_design"].is_array() && j["barriers_without_design"].empty());
   // Which files the design read, for the record: the rule set and the class table it names.
   EXPECT_TRUE(fs::equivalent(b["rules"]["file"].get<std::string>(),
                              PIERRE_SOURCE_DIR "/rules/thesis-2015.toml"))
@@ -187,6 +190,36 @@ TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
   EXPECT_EQ(b["crossings"].get<std::uint64_t>(), reached);
   EXPECT_EQ(b["failed_check"], "reach");
   EXPECT_NE(b["reason"].get<std::string>().find("fewer than two"), std::string::npos) << b["reason"];
+}
+
+// A candidate on a line that no block reaches has nothing to be checked against: besides the
+// advisory reach WARN it gets a FAIL line ("candidate"), so that `check` exits 1. Before, it
+// said "0 FAIL" and exited 0, and a pipeline gating on the exit code passed a barrier nobody
+// had compared with anything.
+TEST_F(Check, ACandidateThatCouldNotBeCheckedFails) {
+  std::string text = slurp(kData + "pass.toml");
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"\"../small/profile.csv\"", "\"" PIERRE_TEST_DATA "/small/profile.csv\""},
+           {"line = \"Screen 1\"", "line = \"Road\""},
+           {"x = 105.0", "x = 199.5"}}) {
+    const auto k = text.find(from);
+    ASSERT_NE(k, std::string::npos) << from;
+    text.replace(k, from.size(), to);
+  }
+  const fs::path scenario = dir_ / "far.toml", out = dir_ / "out";
+  std::ofstream(scenario) << text;
+  const Result r = pierre("check '" + scenario.string() + "' --out '" + out.string() + "' --quiet");
+  const auto j = summary(out);
+  ASSERT_LT(j["lines"][1]["count"].get<std::uint64_t>(), 2u) << "the test needs a line no design comes from";
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_EQ(check(j, "reach")["status"], "WARN");
+  const auto& c = check(j, "candidate");
+  EXPECT_EQ(c["status"], "FAIL");
+  EXPECT_EQ(c["subject"], "Generous");
+  EXPECT_NE(c["reason"].get<std::string>().find("not checked: the line gave no design"), std::string::npos)
+      << c["reason"];
+  EXPECT_EQ(j["checks_failed"], true);
+  EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;
 }
 
 // design-checks.md §1 step 1: the energy a barrier is designed on is the translational energy
