@@ -254,7 +254,7 @@ Row Report::barrier_design_values(lxw_worksheet* ws, Row r, const design::Barrie
   num(ws, r, 5, b.MEL_req_kJ, number("energy"));
   num(ws, r, 6, b.h_i, number("length"));
   if (b.energy_class)
-    num(ws, r, 7, b.energy_class->number, number("count"));
+    num(ws, r, 7, b.energy_class->number, number(b.energy_class->open_ended ? "open_class" : "count"));
   else
     text(ws, r, 7, t_.get("labels", "none"));
   return r + 1;

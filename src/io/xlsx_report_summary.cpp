@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "pierre/design/number_text.hpp"
+
 namespace pierre::io::detail {
 
 void Report::summary(lxw_worksheet* ws) {
@@ -98,9 +100,12 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
     text(ws, r, 2, b.rules_name.empty() ? b.spec.rules : b.rules_name, wrap());
     num(ws, r, 3, b.chainage, number("coordinate", 1));
     if (b.energy_class) {
-      num(ws, r, 4, b.energy_class->number, number("count", 1));
-      num(ws, r, 5, b.energy_class->mel_kJ, number("energy", 1));
-      num(ws, r, 6, b.energy_class->sel_kJ, number("energy", 1));
+      // An open-ended class ("> 4500 kJ") shows as such: its bounds are not its capacity, the
+      // kit declares its own (the note below says what it must reach).
+      const bool open = b.energy_class->open_ended;
+      num(ws, r, 4, b.energy_class->number, number(open ? "open_class" : "count", 1));
+      num(ws, r, 5, b.energy_class->mel_kJ, number(open ? "open_energy" : "energy", 1));
+      num(ws, r, 6, b.energy_class->sel_kJ, number(open ? "open_energy" : "energy", 1));
     } else {
       text(ws, r, 4, t_.get("labels", "none"), centred());
     }
@@ -114,8 +119,15 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
   // How each class was chosen: on which capacity, from which table (its source).
   for (const auto& b : d_.barriers)
     if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
-      text(ws, r++, 0, b.spec.name + ": class " + std::to_string(b.energy_class->number) + ", " +
-                           it->second, note());
+      text(ws, r++, 0, b.spec.name + ": class " + std::to_string(b.energy_class->number) +
+                           (b.energy_class->open_ended ? "+" : "") + ", " + it->second +
+                           (b.energy_class->open_ended
+                                ? fmt::format("; the class is open-ended: the kit must declare MEL >= "
+                                              "{} kJ and SEL >= {} kJ",
+                                              design::number_text(b.MEL_req_kJ, 4),
+                                              design::number_text(b.SEL_req_kJ, 4))
+                                : std::string()),
+           note());
   return r;
 }
 

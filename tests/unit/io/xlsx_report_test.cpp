@@ -582,6 +582,9 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   ex.at(1).simulated_empirical = 0.0;
   ex.at(3).simulated_weibull = 1.26e-6;
   for (auto& e : ex) e.observed_weibull.reset();  // no observed data: no Observed column
+  // Requirements above class 7: the open-ended class 8, whose bounds are not a capacity.
+  f->data.barriers.at(0).energy_class = design::EnergyClass{8, 1500, 4500, true};
+  f->data.barriers.at(0).how["energy_class"] = "the smallest class of the table";
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   // Every sheet, as shown.
@@ -599,6 +602,21 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   const auto hi = find_row(*bar, 0, "P(h > h_i)");
   ASSERT_TRUE(hi);
   EXPECT_EQ(cell(*bar, *hi, 3)->text, "2.500%") << dump(*bar, *hi);
+  // The Summary shows the open class as 8+ with its bounds as bounds, and says what the kit
+  // must declare (it showed 8, MEL 4,500.0 and SEL 1,500.0 beside SEL_req 1,066.9 and a larger
+  // MEL_req, as if the class fell short of its own requirement).
+  const Sheet& sum = sheets.at("Summary");
+  const auto rec = find_row(sum, 0, "Screen A");
+  ASSERT_TRUE(rec);
+  EXPECT_EQ(cell(sum, *rec, 4)->text, "8+") << dump(sum, *rec);
+  EXPECT_EQ(cell(sum, *rec, 5)->text, "> 4,500.0") << dump(sum, *rec);
+  EXPECT_EQ(cell(sum, *rec, 6)->text, "> 1,500.0") << dump(sum, *rec);
+  bool declared = false;
+  for (const auto& row : sum)
+    for (const auto& c : row)
+      declared = declared || c.text == "Screen A: class 8+, the smallest class of the table; the class is "
+                                       "open-ended: the kit must declare MEL >= 1387 kJ and SEL >= 1067 kJ";
+  EXPECT_TRUE(declared);
   const auto head = find_row(*bar, 0, "Probability");
   ASSERT_TRUE(head);
   EXPECT_EQ(cell(*bar, *head, 4)->text, "Simulated, empirical");
