@@ -272,6 +272,8 @@ TEST_F(Check, HelpShowsTheExitCodes) {
   const Result r = pierre("check --help");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("1 when one FAILs"), std::string::npos) << r.out;
+  for (const char* cmd : {"check --help", "run --help"})
+    EXPECT_NE(pierre(cmd).out.find("130 when interrupted"), std::string::npos) << cmd;
 }
 
 }  // namespace
