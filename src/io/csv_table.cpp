@@ -152,8 +152,12 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
           if (h == alias) h = name;
         if (std::find(allowed.begin(), allowed.end(), h) == allowed.end())
           throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
-                           fmt::format("only the columns {}{}", join(allowed),
-                                       aliases.empty() ? "" : alias_note(aliases)));
+                           fmt::format("only the columns {}{}{}", join(allowed),
+                                       aliases.empty() ? "" : alias_note(aliases),
+                                       // A spreadsheet set to a European locale writes ';'.
+                                       h.find_first_of(";\t") != std::string::npos
+                                           ? ", separated by commas (this header uses ';' or tabs)"
+                                           : ""));
         if (std::count(cells.begin(), cells.end(), h) > 1)
           throw InputError(file, line_no, "header", fmt::format("column \"{}\" twice", h),
                            "each column once");

@@ -63,6 +63,31 @@ TEST_P(ScenarioError, NamesFileLineFieldAndValue) {
   }
 }
 
+// A CSV saved by a spreadsheet in a European locale separates with ';': the message says that
+// pierre wants commas, besides naming the columns.
+TEST(ScenarioCsv, ASemicolonHeaderSaysToSeparateByCommas) {
+  TempDir dir;
+  Case c{"semicolons", {{9, "file = \"p.csv\""}}, {}, "p.csv", 1, "header", ""};
+  const auto scenario = dir.write("s.toml", scenario_text(c));
+  dir.write("p.csv", "x;z;material\n0;10;rock\n10;0;rock\n");
+  try {
+    (void)load_scenario(scenario, kRules);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.found(), "column \"x;z;material\"");
+    EXPECT_NE(e.expected().find("separated by commas (this header uses ';' or tabs)"), std::string::npos)
+        << e.what();
+  }
+  // A header that is merely wrong does not get the hint.
+  dir.write("p.csv", "x,z,colour\n0,10,rock\n10,0,rock\n");
+  try {
+    (void)load_scenario(scenario, kRules);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.expected().find("separated by commas"), std::string::npos) << e.what();
+  }
+}
+
 // Rows added to a table written inline: a TOML syntax error whose expectation says what to write.
 TEST(ScenarioSyntax, RowsAfterAnInlineTableSayToWriteATable) {
   TempDir dir;
