@@ -561,7 +561,7 @@ TEST_F(Cli, AnOutputPathThatCannotBeAFolderIsRefusedByName) {
 TEST_F(Cli, OutputThatCannotBeWrittenIsAnError) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
   const fs::path e = dir_ / "stderr.txt";
-  for (const std::string args : {"validate " + q(kScenario),
+  for (const std::string& args : {"validate " + q(kScenario),
                                  "run " + q(kScenario) + " --throws 2 --out " + q(dir_ / "r")}) {
     const std::string cmd = std::string("'") + PIERRE_BINARY + "' " + args + " >/dev/full 2>" + q(e);
     const int st = std::system(cmd.c_str());
