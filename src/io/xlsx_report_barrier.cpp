@@ -111,13 +111,13 @@ Row Report::barrier_overview(lxw_worksheet* ws, Row r, const design::BarrierDesi
                       b.rules_title));
   if (!b.rules_source.empty()) text(ws, r++, 1, b.rules_source, note());
   if (!b.rules_file.empty())
-    text(ws, r++, 1, replace_all(t_.get("labels", "read_from"), "{file}", b.rules_file), note());
+    text(ws, r++, 1, read_from(b.rules_file), note());
   if (!b.classes_name.empty()) {
     kv_text(t_.get("labels", "energy_classes"),
             b.classes_title.empty() ? b.classes_name
                                     : fmt::format("{} — {}", b.classes_name, b.classes_title));
     if (!b.classes_file.empty())
-      text(ws, r++, 1, replace_all(t_.get("labels", "read_from"), "{file}", b.classes_file), note());
+      text(ws, r++, 1, read_from(b.classes_file), note());
   }
   text(ws, r, 0, t_.get("labels", "crossings"), bold());
   count(ws, r++, 1, b.crossings);

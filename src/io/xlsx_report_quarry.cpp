@@ -143,7 +143,7 @@ Row Report::quarry_overview(lxw_worksheet* ws, Row r, const design::QuarryRow& r
            : fmt::format("{} — {}", row.rules, secs[0]->rules_title));
   if (!secs.empty() && !secs[0]->rules_source.empty()) text(ws, r++, 1, secs[0]->rules_source, note());
   if (!secs.empty() && !secs[0]->rules_file.empty())
-    text(ws, r++, 1, replace_all(t_.get("labels", "read_from"), "{file}", secs[0]->rules_file), note());
+    text(ws, r++, 1, read_from(secs[0]->rules_file), note());
   if (row.pooled) {
     std::string names;
     for (const auto* s : secs) names += (names.empty() ? "" : ", ") + s->spec.name;

@@ -219,6 +219,10 @@ class Report {
 
   // -- names (xlsx_report_cells.cpp)
   // The sheet of a barrier or a quarry row: the template's sheets.<key> with {name} replaced.
+  // "read from <file>": under a rule set or class table, the file it was read from.
+  std::string read_from(const std::string& file) const {
+    return replace_all(t_.get("labels", "read_from"), "{file}", file);
+  }
   std::string item_sheet_name(std::string_view key, const std::string& item,
                               std::vector<std::string>& used);
   std::string line_name(std::uint32_t i) const;
