@@ -109,8 +109,11 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
       s->check("min_reached", *n >= 0, "an integer >= 0");
       r.min_reached = static_cast<std::size_t>(*n);
     }
-    r.sample_percentile = s->number("percentile", r.sample_percentile);
-    s->check("percentile", r.sample_percentile > 0 && r.sample_percentile <= 100, pct);
+    // `percentile` chose the percentile sample.size judged; it now judges RD_gov itself (the
+    // value the zones use). An older rule file's key is still read, so it runs, and ignored.
+    const double retired = s->number("percentile", 95.0);
+    s->check("percentile", retired > 0 && retired <= 100, pct + " (read and ignored: sample.size "
+                                                          "judges the governing distance)");
     r.sample_tolerance = s->number("tolerance", r.sample_tolerance);
     s->check("tolerance", r.sample_tolerance > 0, "a relative tolerance > 0");
     detail::read_bootstrap_size(*s, "confidence", "resamples", r.sample_confidence,

@@ -34,8 +34,7 @@ struct QuarryRuleSet {
   double ritchie_factor = 0.2;        // bench.ritchie: width = factor · H + offset
   double ritchie_offset = 4.5;        // m
   std::size_t min_reached = 30;       // sample.size: fewest blocks reaching the floor
-  double sample_percentile = 95;      // sample.size: percentile whose bootstrap CI is judged
-  double sample_tolerance = 0.05;     // sample.size: CI half-width / value above which it WARNs
+  double sample_tolerance = 0.05;     // sample.size: RD_gov's CI half-width / RD_gov above which it WARNs
   double sample_confidence = kMinBootstrapConfidence;  // of the bootstrap interval
   std::size_t sample_resamples = kMinBootstrapResamples;
   double fit_p_value = 0.05;          // fit.ID, fit.RD: KS p-value below which they WARN

@@ -88,7 +88,8 @@ struct QuarryRow {
   DurationStatistics duration;
   std::vector<ExceedanceDistance> exceedance;
   GoverningDistance rd_gov, id_gov;
-  std::optional<stats::BootstrapInterval> rd_interval;  // of the rule's sample percentile (/H)
+  // RD_gov's bootstrap interval (/H): the governing rule applied afresh to each resample.
+  std::optional<stats::BootstrapInterval> rd_interval;
   std::optional<ObservedComparison> observed_id, observed_rd;
 };
 
@@ -145,5 +146,19 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& sections, std
 // The governing distance (/H) of a sample under a rule set.
 GoverningDistance governing_distance(const DistanceSample& sample, const DistanceStatistics& stats,
                                      const QuarryRuleSet& rules);
+
+// The same value computed from the sample alone (its normalized values, censoring thresholds
+// and `beyond`; the metres are not used), without the text: what the bootstrap evaluates on
+// each resample.
+double governing_value_h(const DistanceSample& sample, const QuarryRuleSet& rules);
+
+// The bootstrap interval (/H) of the governing distance at the rule set's confidence, from
+// `sample_resamples` resamples of the blocks (stream `seed`). A rule of one percentile uses the
+// exact order-statistic bootstrap (stats::bootstrap_percentile_interval); any other rule is
+// refitted on every resample (a block keeps its censoring threshold). Empty with fewer than two
+// values or a resample without a value (e.g. no log-normal fit).
+std::optional<stats::BootstrapInterval> governing_interval(const DistanceSample& sample,
+                                                           const QuarryRuleSet& rules,
+                                                           std::uint64_t seed);
 
 }  // namespace pierre::design

@@ -291,6 +291,96 @@ TEST(QuarryZones, SampleSizeWithAnIntervalBeyondTheProfile) {
       << l->reason;
 }
 
+// governing_value_h (what the bootstrap evaluates on each resample) is the governing
+// distance's value, for every candidate, with blocks censored at two floors (a pool).
+TEST(QuarryZones, GoverningValueFromTheSampleAloneIsTheGoverningDistance) {
+  DistanceSample s;
+  auto a = lognormal_runouts(300, 20, 11);
+  a[5] = a[17] = kInf;
+  s.add(a, 20, 80);
+  s.add(lognormal_runouts(200, 14, 12), 14, 60);
+  auto b = lognormal_runouts(100, 14, 13);
+  b[0] = kInf;
+  s.add(b, 14, 50);
+  ASSERT_EQ(s.censored_at.size(), 3u);
+  QuarryRuleSet p98 = thesis();
+  p98.percentile = 98;
+  QuarryRuleSet pm = thesis();
+  pm.governing = {QuarryGoverning::percentile, QuarryGoverning::lognormal};
+  const DistanceStatistics st = distance_statistics(s);
+  ASSERT_TRUE(st.fit);
+  for (const QuarryRuleSet& r : {thesis(), p98, conservative(), pm}) {
+    const GoverningDistance g = governing_distance(s, st, r);
+    EXPECT_EQ(governing_value_h(s, r), g.value_h) << g.how;
+  }
+  // Censored blocks make the maximum beyond the profile; without them it is finite.
+  EXPECT_TRUE(std::isinf(governing_value_h(s, conservative())));
+}
+
+// sample.size judges the distance that sets the zone (design-checks.md §1 step 8 bootstraps
+// the design values). Under the conservative rule that is the log-normal P99: an extrapolation
+// far less certain than the empirical P99 the check used to bootstrap. Two clusters (most
+// blocks near the toe, a tenth far out) fit a log-normal badly: its P99 is far beyond every
+// block, and the interval is wide, while the empirical P99 (among the far blocks) is tight.
+std::vector<double> two_clusters() {
+  std::vector<double> v;  // m: 70 % within 2 cm of the toe, over a decade; 30 % at 20-30 m
+  for (int i = 0; i < 2000; ++i) {
+    const double u = (i % 97) / 97.0;
+    v.push_back(i % 10 < 7 ? 0.001 * std::exp(3 * u) : 20 + 10 * u);
+  }
+  return v;
+}
+
+TEST(QuarryZones, SampleSizeJudgesTheGoverningDistance) {
+  const std::vector<double> v = two_clusters();
+  const auto out = design_quarry({section("Two", v, conservative())}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const QuarryRow& row = out.design->rows[0];
+  ASSERT_TRUE(row.rd_interval);
+  EXPECT_DOUBLE_EQ(row.rd_interval->estimate, row.rd_gov.value_h);
+  EXPECT_GT(row.rd_gov.lognormal_h, row.rd_gov.maximum_h);  // the fit governs
+  EXPECT_LE(row.rd_interval->lower, row.rd_interval->estimate);
+  EXPECT_GE(row.rd_interval->upper, row.rd_interval->estimate);
+  const CheckLine* l = find(*out.design, "Two", "sample.size");
+  ASSERT_TRUE(l);
+  EXPECT_EQ(l->status, CheckStatus::warn) << l->reason;
+  EXPECT_NEAR(l->value, 100 * row.rd_interval->half_width() / row.rd_gov.value_h, 1e-9);
+  // The empirical P99 the check judged before is known far better than the 5 % tolerance.
+  const auto p99 = stats::bootstrap_percentile_interval(row.rd_sample.normalized, 99, 1);
+  ASSERT_TRUE(p99);
+  EXPECT_LT(p99->half_width() / p99->estimate, 0.05);
+  // The thesis rule: the interval is the exact percentile bootstrap of P95, as before.
+  const auto t = design_quarry({section("Two", v)}, 1);
+  ASSERT_TRUE(t.design && t.design->rows[0].rd_interval);
+  const auto p95 = stats::bootstrap_percentile_interval(t.design->rows[0].rd_sample.normalized,
+                                                        95, 1);
+  ASSERT_TRUE(p95);
+  EXPECT_EQ(t.design->rows[0].rd_interval->lower, p95->lower);
+  EXPECT_EQ(t.design->rows[0].rd_interval->upper, p95->upper);
+}
+
+// A zone set by a log-normal that fit.RD rejects says so on the zone line itself; a zone set
+// by a fit that passes, or by a percentile, does not.
+TEST(QuarryZones, AZoneFromARejectedFitSaysSo) {
+  const std::vector<double> two = two_clusters();
+  auto bad = section("Bad", two, conservative());
+  bad.spec.work_areas = {{"office", 35}};
+  auto good = section("Good", lognormal_runouts(1000, 20, 3), conservative());
+  good.spec.work_areas = {{"office", 35}};
+  auto pct = section("Pct", two);
+  pct.spec.work_areas = {{"office", 35}};
+  const auto out = design_quarry({bad, good, pct}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const auto& d = *out.design;
+  ASSERT_EQ(find(d, "Bad", "fit.RD")->status, CheckStatus::warn);
+  ASSERT_EQ(find(d, "Good", "fit.RD")->status, CheckStatus::pass);
+  const std::string rejected = "comes from a log-normal fit that fit.RD rejects";
+  EXPECT_NE(find(d, "Bad", "zone.office")->reason.find(rejected), std::string::npos)
+      << find(d, "Bad", "zone.office")->reason;
+  EXPECT_EQ(find(d, "Good", "zone.office")->reason.find(rejected), std::string::npos);
+  EXPECT_EQ(find(d, "Pct", "zone.office")->reason.find(rejected), std::string::npos);
+}
+
 TEST(QuarryZones, FitChecks) {
   const auto good = design_quarry({section("Good", lognormal_runouts(1000, 20, 3))}, 1);
   // Two clusters, at about 1 m and 100 m: no log-normal fits that.

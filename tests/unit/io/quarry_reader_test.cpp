@@ -362,6 +362,25 @@ TEST(QuarryRules, FromATempFileByPath) {
   EXPECT_DOUBLE_EQ(byname.percentile, 98);
 }
 
+// `[sample] percentile` chose what sample.size judged until it judged RD_gov itself: an older
+// site file that sets it still loads (its value checked, then ignored).
+TEST(QuarryRules, AnOlderFilesSamplePercentileIsReadAndIgnored) {
+  test::TempDir dir;
+  std::string text = kCustom;
+  text.replace(text.find("[sample]\n"), 9, "[sample]\npercentile = 99.0\n");
+  const auto r = load_quarry_rules(dir.write("old.toml", text).string(), dir.path());
+  EXPECT_DOUBLE_EQ(r.percentile, 98);  // the governing percentile, untouched
+  EXPECT_EQ(r.min_reached, 50u);
+  text.replace(text.find("percentile = 99.0"), 17, "percentile = 150.0");
+  try {
+    load_quarry_rules(dir.write("bad.toml", text).string(), dir.path());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "sample.percentile") << e.what();
+    EXPECT_EQ(e.line(), 15) << e.what();
+  }
+}
+
 TEST(QuarryRules, Errors) {
   test::TempDir dir;
   auto err = [&](const std::string& text) {
