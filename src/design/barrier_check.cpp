@@ -275,11 +275,41 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
     d.notes.push_back("class " + std::to_string(d.energy_class->number) +
                       " is open-ended: the barrier must declare MEL >= MEL_req and SEL >= SEL_req");
 
+  // What the simulated Weibull fits leave out: only positive values fit a Weibull, and a block
+  // sliding or rolling across the line has its centre on the ground, h = 0 (model-2d.md §5).
+  // Leaving such zeros out raises the fitted quantiles and survivals: conservative, but said.
+  for (auto [what, q] : {std::pair{"speeds", &d.speed}, std::pair{"passing heights", &d.height},
+                         std::pair{"translational energies", &d.energy}}) {
+    if (!q->weibull || q->weibull->excluded == 0) continue;
+    const std::size_t left = q->weibull->excluded, n = left + q->weibull->used;
+    d.notes.push_back(std::to_string(left) + " of " + std::to_string(n) + " " + what +
+                      " at the line are 0 (blocks sliding or rolling across it): the Weibull fit "
+                      "is of the " + std::to_string(q->weibull->used) +
+                      " positive values, so its characteristic value and exceedance "
+                      "probabilities describe the blocks in flight (conservative); the empirical "
+                      "values count every block");
+  }
+
   // Step 7: exceedance, simulated and observed.
   if (observed) {
     d.observed_speed = observed_fit(observed->speed);
     d.observed_height = observed_fit(observed->height);
     d.observed_energy = observed_fit(scaled(observed->energy, 1e-3));
+    // A Weibull through a handful of values gives a number, not a probability to set beside
+    // the simulated one: say so when a fit rests on fewer values than the rule set asks of a
+    // simulated line (reach).
+    std::string few;
+    for (auto [what, q] : {std::pair{"speeds", &d.observed_speed},
+                           std::pair{"passing heights", &d.observed_height},
+                           std::pair{"energies", &d.observed_energy}}) {
+      if (*q && (*q)->weibull && static_cast<double>((*q)->weibull->used) < rules.min_crossings)
+        few += (few.empty() ? "" : ", ") + std::to_string((*q)->weibull->used) + " " + what;
+    }
+    if (!few.empty())
+      d.notes.push_back("the observed Weibull fits rest on few values (" + few + "; fewer than the " +
+                        number_text(rules.min_crossings) +
+                        " crossings the rule set asks of a simulated line): read the observed "
+                        "exceedance probabilities as indicative only");
   }
   ExceedanceInputs ex;
   ex.SEL_req_kJ = d.SEL_req_kJ;

@@ -236,6 +236,51 @@ TEST(BarrierProcedure, ObservedDataGiveTheObservedColumn) {
   EXPECT_LT(*d.exceedance[1].observed_weibull, *d.exceedance[0].observed_weibull);  // MEL > SEL
 }
 
+bool has_note(const design::BarrierDesign& d, const std::string& text) {
+  return std::any_of(d.notes.begin(), d.notes.end(),
+                     [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
+
+// Weibull fits of 3 heights and 2 energies still fill the observed column, but the design
+// says they rest on fewer values than the rule set asks of a simulated line (reach, 30).
+TEST(BarrierProcedure, ObservedFitsOfAFewValuesAreFlagged) {
+  design::ObservedSample few;
+  few.height = {0.8, 1.9, 1.1};
+  few.energy = {120e3, 310e3};  // J
+  few.speed = test::weibull_sample(40, 2.5, 15, 5);
+  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(), few, 0, 1);
+  ASSERT_TRUE(out.design);
+  ASSERT_TRUE(out.design->exceedance[2].observed_weibull);
+  EXPECT_TRUE(has_note(*out.design, "rest on few values (3 passing heights, 2 energies; fewer than the 30"))
+      << testing::PrintToString(out.design->notes);
+  design::ObservedSample many;
+  many.height = test::weibull_sample(80, 1.37, 1.55, 99);
+  const auto ok = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(), many, 0, 1);
+  ASSERT_TRUE(ok.design);
+  EXPECT_FALSE(has_note(*ok.design, "rest on few values"));
+}
+
+// Blocks rolling across the line pass at h = 0. The Weibull fits the positive heights only
+// (stats/weibull_fit.hpp), and the design says so; the empirical values keep the zeros.
+TEST(BarrierProcedure, ZeroHeightsLeftOutOfTheWeibullAreSaid) {
+  auto s = sample();
+  for (std::size_t i = 0; i < s.height.size(); i += 10) s.height[i] = 0;  // 200 of 2000
+  const auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 1);
+  ASSERT_TRUE(out.design);
+  ASSERT_TRUE(out.design->height.weibull);
+  EXPECT_EQ(out.design->height.weibull->used, 1800u);
+  EXPECT_TRUE(has_note(*out.design, "200 of 2000 passing heights at the line are 0"))
+      << testing::PrintToString(out.design->notes);
+  // The empirical P95 counts the zeros, so it lies below the positive part's P95.
+  std::vector<double> positive;
+  for (double h : s.height)
+    if (h > 0) positive.push_back(h);
+  EXPECT_LT(out.design->h_k.empirical, stats::percentile(positive, 95));
+  const auto plain = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
+  ASSERT_TRUE(plain.design);
+  EXPECT_FALSE(has_note(*plain.design, "at the line are 0"));
+}
+
 TEST(BarrierProcedure, CandidateCapacitiesFromClassOrDeclared) {
   auto b = spec();
   b.candidate = design::CandidateBarrier{};
