@@ -82,9 +82,22 @@ std::string cell(double v, int width) {
 
 }  // namespace
 
+std::string duration_text(double seconds) {
+  // Three significant digits, fixed-point (0.05 s is "50.0 ms", not "0.0 s"); the bounds are
+  // where rounding to the next decade starts.
+  auto three = [](double v) {
+    int decimals = 2;
+    for (double bound = 9.995; v >= bound && decimals > 0; bound *= 10) --decimals;
+    for (double bound = 0.9995; v > 0 && v < bound && decimals < 9; bound /= 10) ++decimals;
+    return fmt::format("{:.{}f}", v, decimals);
+  };
+  if (!(seconds >= 0)) seconds = 0;
+  return seconds < 0.9995 ? three(1e3 * seconds) + " ms" : three(seconds) + " s";
+}
+
 void print_results(std::FILE* out, const design::RunStatistics& s, double seconds,
                    const std::vector<std::filesystem::path>& files) {
-  fmt::print(out, "{} trajectories in {:.1f} s\n\n", s.trajectories, seconds);
+  fmt::print(out, "{} trajectories in {}\n\n", s.trajectories, duration_text(seconds));
   if (!s.lines.empty()) {
     std::fputs(s.every_crossing
                         ? "Observation lines (every crossing, in both directions: --all-crossings; "

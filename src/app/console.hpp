@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -39,6 +40,9 @@ class ProgressBar {
 // travel against the main direction, in which observation lines count first crossings), and
 // for each material that no segment uses.
 void print_source_notes(std::FILE* out, const sim::Scenario& scenario);
+
+// A run's wall time to three significant digits: "42.3 ms" below a second, else "1.25 s".
+std::string duration_text(double seconds);
 
 void print_results(std::FILE* out, const design::RunStatistics& stats, double seconds,
                    const std::vector<std::filesystem::path>& files);
