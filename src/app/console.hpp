@@ -49,6 +49,8 @@ void print_results(std::FILE* out, const design::RunStatistics& stats, double se
 
 // The barriers' design values, then every check line as a table (subject, id, value, limit,
 // unit, status, rule), then the reason of each FAIL and WARN line, then of each N/A line.
-void print_design(std::FILE* out, const io::DesignResults& results);
+// Blocks are separated by a blank line, and one leads only when `follows_output` (something
+// was printed before: `check --quiet` starts with its first table, not an empty line).
+void print_design(std::FILE* out, const io::DesignResults& results, bool follows_output = true);
 
 }  // namespace pierre::app

@@ -88,10 +88,11 @@ void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint6
   }
 }
 
-void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
+void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_output) {
   fmt::print(out,
-             "\nQuarry danger zones (docs/quarry.md; thesis Tables 6.2, 6.3): horizontal "
-             "distances from the toe,\ncalculated / observed where observed values are given\n");
+             "{}Quarry danger zones (docs/quarry.md; thesis Tables 6.2, 6.3): horizontal "
+             "distances from the toe,\ncalculated / observed where observed values are given\n",
+             follows_output ? "\n" : "");
   fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", "row", "n", "H m",
              "", "P50", "P95", "P99", "max", "governing");
   for (const design::QuarryRow& r : d.rows) {
@@ -301,7 +302,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   const auto written = folder->commit({io::kImpactsCsv});
   if (!o.quiet) print_results(stdout, stats, seconds, written);
   if (!o.quiet || o.check) {
-    print_quarries(stdout, *results.quarry);
+    print_quarries(stdout, *results.quarry, !o.quiet);
     print_design(stdout, results);
   }
   if (o.check && design::any_failure(results.checks)) return kExitCheckFailed;

@@ -122,9 +122,23 @@ TEST_F(Check, NothingToCheckSaysSoAndExitsZero) {
                           out.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Nothing to check"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.front(), '\n') << "--quiet output starts with an empty line:\n" << r.out;
   const auto j = summary(out);
   EXPECT_TRUE(j["checks"].empty());
   EXPECT_EQ(j["checks_failed"], false);
+}
+
+// `check --quiet` prints only the tables and the check lines: its output starts with the first
+// of them, not an empty line (one led every block, meant to follow the run's table).
+TEST_F(Check, QuietOutputStartsWithContent) {
+  for (const char* scenario : {"pass.toml", "design.toml"}) {
+    const fs::path out = dir_ / scenario;
+    const Result r = pierre("check " + kData + scenario + " --quiet --out '" + out.string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    ASSERT_FALSE(r.out.empty());
+    EXPECT_NE(r.out.front(), '\n') << scenario << ":\n" << r.out;
+    EXPECT_EQ(r.out.find("\n\n\n"), std::string::npos) << r.out;  // one blank line between blocks
+  }
 }
 
 TEST_F(Check, BadBarrierInputExitsTwoAndWritesNothing) {

@@ -147,6 +147,16 @@ TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
   EXPECT_EQ(check(summary(out2), "North", "zone.crusher")["status"], "FAIL");
 }
 
+// `check --quiet` prints the quarry table and the check lines only, starting with the table (it
+// started with an empty line, meant to follow the run's table).
+TEST_F(QuarryCli, QuietOutputStartsWithContent) {
+  const Result r = pierre("check " + kData + "pass.toml --out '" + (dir_ / "out").string() + "' --quiet");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  ASSERT_FALSE(r.out.empty());
+  EXPECT_NE(r.out.front(), '\n') << r.out;
+  EXPECT_EQ(r.out.find("\n\n\n"), std::string::npos) << r.out;
+}
+
 // A toe given far out on the floor, past where every block stops: no block reaches the floor,
 // so there is no ID and no first-impact zone. The console says "none", not "[0, -] m", and
 // "ID_gov -", not "- the profile".
