@@ -261,7 +261,8 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
     first_crossings.insert(first_crossings.end(), first.crossings.begin(), first.crossings.end());
     total_trajectories += first.total_trajectories;
     total_crossings += first.total_crossings;
-    inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed});
+    inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed,
+                      s.scenario.settings.throws});
     seeds.push_back(s.scenario.settings.seed);
   }
   const double seconds =

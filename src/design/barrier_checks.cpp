@@ -184,14 +184,12 @@ void sample_line(Builder& b) {
     set(l, CheckStatus::pass, "half-width " + pct(worst) + " of " + which + " <= tolerance " + pct(tol));
     return;
   }
-  const double factor = (worst / tol) * (worst / tol);
   const double n = static_cast<double>(d.crossings + d.not_reached);
-  std::string reason = "half-width " + pct(worst) + " of " + which + " > tolerance " + pct(tol) +
-                       ": about " + num(std::ceil(n * factor), 6) + " trajectories needed (n · (" +
-                       num(worst, 3) + " / " + num(tol, 3) + ")² with n = " + num(n, 9) + ")";
-  if (d.throws > 0)
-    reason += ", i.e. throws = " + num(std::ceil(d.throws * factor), 9) + " per block and source";
-  set(l, CheckStatus::warn, reason);
+  const SampleNeeded needed = sample_needed(n, d.throws, worst, tol);
+  set(l, CheckStatus::warn,
+      "half-width " + pct(worst) + " of " + which + " > tolerance " + pct(tol) + ": about " +
+          num(needed.trajectories, 6) + " trajectories needed (n · (" + num(worst, 3) + " / " +
+          num(tol, 3) + ")² with n = " + num(n, 9) + ")" + throws_needed_text(needed));
 }
 
 }  // namespace

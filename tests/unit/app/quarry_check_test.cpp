@@ -18,6 +18,9 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <regex>
+#include <vector>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 
@@ -155,6 +158,26 @@ TEST_F(QuarryCli, QuietOutputStartsWithContent) {
   ASSERT_FALSE(r.out.empty());
   EXPECT_NE(r.out.front(), '\n') << r.out;
   EXPECT_EQ(r.out.find("\n\n\n"), std::string::npos) << r.out;
+}
+
+// sample.size of a quarry row gives, like a barrier's, the throws per block and source it asks
+// for: the throws of the run times (half-width / tolerance)², as the trajectories.
+TEST_F(QuarryCli, SampleSizeSaysTheThrowsNeeded) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " + kData + "pass.toml --out '" + out.string() + "' --throws 20 -q");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  const auto j = summary(out);
+  const auto& l = check(j, "North", "sample.size");
+  ASSERT_EQ(l["status"], "WARN") << l << " (the test needs a sample too small)";
+  const std::string reason = l["reason"].get<std::string>();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(reason, m, std::regex(R"(about (\d+) trajectories would be needed \((\d+) run\), i\.e\. throws = (\d+) per block and source)")))
+      << reason;
+  const double factor = std::pow(l["value"].get<double>() / l["limit"].get<double>(), 2);
+  EXPECT_EQ(std::stoull(m[2].str()), 40u);  // 2 blocks x 20 throws
+  EXPECT_NEAR(std::stod(m[1].str()), std::ceil(40 * factor), 1) << reason;
+  EXPECT_NEAR(std::stod(m[3].str()), std::ceil(20 * factor), 1) << reason;
+  EXPECT_NE(r.out.find(reason), std::string::npos) << r.out;  // printed under the table
 }
 
 // A toe given far out on the floor, past where every block stops: no block reaches the floor,
