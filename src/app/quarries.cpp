@@ -151,13 +151,18 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
   auto avg = [&](double calc, double obs) {
     return a.observed_rows ? pair(calc, obs, 2) : metres(calc, 0, 2);
   };
-  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", a.rows,
+  // n is left blank: the average is a mean of the rows' ratios, not a sample of its own.
+  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", "",
              "", "RD/H", avg(a.rd50_h, a.obs_rd50_h), avg(a.rd95_h, a.obs_rd95_h), "",
              avg(a.rdmax_h, a.obs_rdmax_h));
   fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "", "", "", "ID/H",
              avg(a.id50_h, a.obs_id50_h), avg(a.id95_h, a.obs_id95_h), "",
              avg(a.idmax_h, a.obs_idmax_h));
   fmt::print(out, "n: RD over every block thrown, ID over the blocks that reached the floor.\n");
+  fmt::print(out,
+             "Average /H: the mean over the {} row{} of each row's ratio, so no n of its own; no P99:\n"
+             "  as in Tables 6.2/6.3, the average line has P50, P95 and max.\n",
+             a.rows, a.rows == 1 ? "" : "s");
 
   fmt::print(out, "\nSections\n");
   for (const design::QuarrySectionResult& s : d.sections) {

@@ -58,7 +58,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "id",            "beyond_profile", "pooled",    "observed_source", "total",
                  "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor",
                  "lines_every_crossing", "overrides", "energy_classes", "read_from", "line_not_crossed", "stop_energy", "stop_friction",
-                 "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical"};
+                 "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
+                 "quarry_average_note"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};

@@ -160,6 +160,41 @@ TEST_F(QuarryCli, QuietOutputStartsWithContent) {
   EXPECT_EQ(r.out.find("\n\n\n"), std::string::npos) << r.out;
 }
 
+// The "Average /H" lines are means of the rows' ratios: under the n column (counts of blocks)
+// they printed the number of rows averaged. Now n is blank, and a note says why, and why P99 is.
+TEST_F(QuarryCli, TheAverageLineHasNoCountOfItsOwn) {
+  const Result r = pierre("check " + kData + "pass.toml --out '" + (dir_ / "out").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  std::istringstream in(r.out);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  auto at = [&](const std::string& start) {
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (lines[i].rfind(start, 0) == 0) return i;
+    return lines.size();
+  };
+  const std::size_t head = at("row "), avg = at("Average /H ");
+  ASSERT_LT(head, lines.size()) << r.out;
+  ASSERT_LT(avg, lines.size()) << r.out;
+  // The n column: the header's "n", right-aligned; the average line has nothing under it.
+  // (from the end of the label to the end of the header's "n").
+  const std::size_t n_end = lines[head].find(" n ") + 2, n_begin = std::string("Average /H").size();
+  ASSERT_LT(n_end, lines[avg].size());
+  EXPECT_EQ(lines[avg].substr(n_begin, n_end - n_begin).find_first_not_of(' '), std::string::npos)
+      << "\n" << lines[head] << "\n" << lines[avg];
+  // ... and a line after the table explains the blank n and the blank P99.
+  const std::size_t note = at("Average /H:");
+  ASSERT_LT(note, lines.size()) << r.out;
+  EXPECT_GT(note, avg);
+  std::string text = lines[note] + (note + 1 < lines.size() ? lines[note + 1] : "");
+  EXPECT_NE(text.find("P99"), std::string::npos) << text;
+  EXPECT_NE(text.find(" n "), std::string::npos) << text;
+  const auto j = summary(dir_ / "out");
+  EXPECT_NE(lines[note].find(std::to_string(j["quarry_average"]["rows"].get<int>()) + " rows"),
+            std::string::npos)
+      << lines[note];
+}
+
 // sample.size of a quarry row gives, like a barrier's, the throws per block and source it asks
 // for: the throws of the run times (half-width / tolerance)², as the trajectories.
 TEST_F(QuarryCli, SampleSizeSaysTheThrowsNeeded) {

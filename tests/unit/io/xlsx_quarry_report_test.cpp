@@ -401,6 +401,16 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     const auto avg_obs = find_row2(s, "Average (normalized by H)", "Observed");
     ASSERT_TRUE(avg_obs);
     expect_number(s, *avg_obs, 7, q.average.obs_rd95_h);
+    // The average rows are means of the rows' ratios: no number thrown of their own (column 3
+    // blank), and the line under them says so, naming how many rows were averaged.
+    for (std::size_t k : {*avg, *avg_obs}) {
+      const Field* thrown = cell(s, k, 3);
+      EXPECT_TRUE(!thrown || thrown->text.empty()) << dump(s, k);
+    }
+    const std::size_t note_row = std::max(*avg, *avg_obs) + 1;
+    const Field* note = cell(s, note_row, 0);
+    ASSERT_TRUE(note && !note->text.empty()) << dump(s, note_row);
+    EXPECT_NE(note->text.find(std::to_string(q.average.rows)), std::string::npos) << note->text;
     const auto head = find_row(s, 0, "Subject");
     ASSERT_TRUE(head);
     for (const auto& l : q.checks) {
