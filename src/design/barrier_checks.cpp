@@ -112,9 +112,11 @@ void elongation_line(Builder& b, const CandidateBarrier& c) {
     set(l, CheckStatus::fail, "distance " + num(value) + " m < " + how + " = " + num(limit) + " m");
 }
 
+// Value and limit in % (unit "%"), as the reason words them and as sample.size is; judged on the
+// fractions.
 void exceedance_line(Builder& b, const char* id, const std::string& what, double p,
                      std::optional<double> acceptable) {
-  CheckLine& l = b.add(id, what, p, acceptable.value_or(kNaN), "");
+  CheckLine& l = b.add(id, what, 100 * p, 100 * acceptable.value_or(kNaN), "%");
   if (!acceptable)
     set(l, CheckStatus::not_applicable, "no acceptable probability given (" + pct(p) + ")");
   else if (std::isnan(p))

@@ -39,7 +39,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   s["sheets"] = kSheetKeys;
   s["formats"] = {"count",   "speed",     "length",   "coordinate",  "energy",  "mass",
                   "volume",  "density",   "factor",   "parameter",   "p_value", "scientific", "probability",
-                  "percent", "time",      "angle",    "material",    "general", "date",
+                  "percent", "small_percent", "time",      "angle",    "material",    "general", "date",
                   "open_class", "open_energy"};
   s["titles"] = {"summary",      "run",          "barriers",       "lines",
                  "checks",       "inputs",       "simulation",     "materials",

@@ -585,6 +585,9 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   // Requirements above class 7: the open-ended class 8, whose bounds are not a capacity.
   f->data.barriers.at(0).energy_class = design::EnergyClass{8, 1500, 4500, true};
   f->data.barriers.at(0).how["energy_class"] = "the smallest class of the table";
+  // A check line's probability of exceedance in % (unit "%"): 0.00217 %, not "0.00".
+  f->data.checks.push_back(
+      line("Screen A", "exceedance.energy", 100 * 2.17e-5, 0.1, "%", design::CheckStatus::pass));
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   // Every sheet, as shown.
@@ -617,6 +620,14 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
       declared = declared || c.text == "Screen A: class 8+, the smallest class of the table; the class is "
                                        "open-ended: the kit must declare MEL >= 1387 kJ and SEL >= 1067 kJ";
   EXPECT_TRUE(declared);
+  {
+    const auto ex_line = find_row(sum, 1, "exceedance.energy");
+    ASSERT_TRUE(ex_line);
+    const std::string shown = cell(sum, *ex_line, 3)->text;
+    EXPECT_NEAR(std::strtod(shown.c_str(), nullptr), 100 * 2.17e-5, 0.01 * 100 * 2.17e-5)
+        << dump(sum, *ex_line);
+    EXPECT_EQ(cell(sum, *ex_line, 5)->text, "%");
+  }
   const auto head = find_row(*bar, 0, "Probability");
   ASSERT_TRUE(head);
   EXPECT_EQ(cell(*bar, *head, 4)->text, "Simulated, empirical");
