@@ -59,7 +59,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor",
                  "lines_every_crossing", "overrides", "energy_classes", "read_from", "line_not_crossed", "stop_energy", "stop_friction",
                  "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
-                 "quarry_average_note"};
+                 "quarry_average_note", "resolved", "defaulted", "from_class",
+                 "open_class_capacity"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};

@@ -2,7 +2,20 @@
 // profile's vertices, observation lines), the barriers' inputs, and the scenario's text.
 #include "xlsx_report_writer.hpp"
 
+#include <cmath>
+#include <tuple>
+
 namespace pierre::io::detail {
+namespace {
+
+// A number inside a text: four significant digits, a whole number of kJ up to a million whole
+// (a MEL of 10 000 kJ as 1e+04 would read as a typo).
+std::string shown(double v) {
+  if (std::isfinite(v) && std::abs(v) >= 1e4 && std::abs(v) < 1e6) return fmt::format("{:.0f}", v);
+  return format_number(v);
+}
+
+}  // namespace
 
 void Report::inputs(lxw_worksheet* ws) {
   page_setup(ws);
@@ -178,8 +191,19 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
             resid = row("residual_height"), acc_e = row("acceptable_energy"),
             acc_h = row("acceptable_height"), obs = row("observed_file");
   for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i) {
-    const auto& s = d_.barriers[i].spec;
+    const design::BarrierDesign& bd = d_.barriers[i];
+    const auto& s = bd.spec;
     const Col c = static_cast<Col>(1 + i);
+    // A value the scenario gives is a number; one the procedure resolved or defaulted is a text
+    // with the value used and where it comes from: a blank would read as a missing input.
+    auto derived = [&](Row at, std::string_view label, double v, std::string_view key,
+                       const std::string& fallback) {
+      const auto how = bd.how.find(std::string(key));
+      std::string t = replace_all(t_.get("labels", label), "{value}", shown(v));
+      t = replace_all(std::move(t), "{how}", how == bd.how.end() ? fallback : how->second);
+      text(ws, at, c, keep(std::move(t)), wrap());
+      fit_row(ws, at, {{&strings_.back(), 16}});
+    };
     text(ws, line, c, s.line);
     text(ws, rules, c, s.rules);
     using K = design::DesignBlock::Kind;
@@ -188,10 +212,21 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
          db.kind == K::given     ? "given"
          : db.kind == K::largest ? "largest"
                                  : "percentile");
-    if (db.kind == K::given) num(ws, volume, c, db.volume, number("volume"));
-    if (db.density > 0) num(ws, density, c, db.density, number("density"));
+    if (db.kind == K::given)
+      num(ws, volume, c, db.volume, number("volume"));
+    else
+      derived(volume, "resolved", bd.design_volume, "volume",
+              db.kind == K::largest ? "largest" : "percentile");
+    if (db.density > 0)
+      num(ws, density, c, db.density, number("density"));
+    else
+      derived(density, "resolved", bd.design_density, "density", "the blocks'");
     if (db.kind == K::percentile) num(ws, pct, c, db.percentile, number("general"));
-    opt(ws, df, c, s.free_board_diameter, number("length"));
+    if (s.free_board_diameter)
+      num(ws, df, c, *s.free_board_diameter, number("length"));
+    else
+      derived(df, "defaulted", bd.free_board_diameter, "free_board_diameter",
+              "the mean equivalent diameter of the blocks thrown");
     std::string q;
     for (const auto& [k, v] : s.data_quality) q += (q.empty() ? "" : "; ") + k + " = " + v;
     text(ws, dq, c, keep(q), wrap());
@@ -199,8 +234,20 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
     if (s.candidate) {
       const auto& cb = *s.candidate;
       if (cb.energy_class) num(ws, cls, c, *cb.energy_class, number("count"));
-      opt(ws, mel, c, cb.mel_kJ, number("energy"));
-      opt(ws, sel, c, cb.sel_kJ, number("energy"));
+      // MEL and SEL given, or those of the class (an open-ended class has none of its own).
+      for (auto [at, given, used] : {std::tuple{mel, &cb.mel_kJ, bd.candidate_mel_kJ},
+                                     std::tuple{sel, &cb.sel_kJ, bd.candidate_sel_kJ}}) {
+        if (*given) {
+          num(ws, at, c, **given, number("energy"));
+        } else if (cb.energy_class) {
+          const std::string cls_text = std::to_string(*cb.energy_class);
+          std::string t = std::isfinite(used)
+                              ? replace_all(t_.get("labels", "from_class"), "{value}", shown(used))
+                              : t_.get("labels", "open_class_capacity");
+          text(ws, at, c, keep(replace_all(std::move(t), "{class}", cls_text)), wrap());
+          fit_row(ws, at, {{&strings_.back(), 16}});
+        }
+      }
       opt(ws, height, c, cb.height, number("length"));
       opt(ws, el_mel, c, cb.elongation_mel, number("length"));
       opt(ws, el_sel, c, cb.elongation_sel, number("length"));
