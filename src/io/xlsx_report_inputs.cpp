@@ -20,7 +20,7 @@ std::string shown(double v) {
 void Report::inputs(lxw_worksheet* ws) {
   page_setup(ws);
   width(ws, 0, 0, 30);
-  width(ws, 1, 8, 16);
+  width(ws, 1, 12, 16);
   text(ws, 0, 0, t_.get("titles", "inputs"), title());
   Row r = 2;
   const LoadedScenario* sc = d_.scenario;
@@ -32,6 +32,7 @@ void Report::inputs(lxw_worksheet* ws) {
     r = inputs_vertices(ws, r, *sc);
     r = inputs_lines(ws, r, *sc);
   }
+  r = inputs_quarries(ws, r);
   r = inputs_barriers(ws, r);
   if (sc) inputs_scenario_text(ws, r, *sc);
 }
@@ -161,11 +162,56 @@ Row Report::inputs_vertices(lxw_worksheet* ws, Row r, const LoadedScenario& sc) 
 
 Row Report::inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
   const auto& s = sc.scenario;
+  if (s.lines.empty()) return r;  // a quarry scenario, or none drawn: no empty table
   r = table_title(ws, r, "observation_lines");
   headings(ws, r++, 0, "observation_lines", {"name", "x"});
   for (const auto& l : s.lines) {
     text(ws, r, 0, l.name);
     num(ws, r++, 1, l.x, number("coordinate"));
+  }
+  return r;
+}
+
+// The quarry sections' inputs (docs/quarry.md), one row per section: group, rule set, crest, toe
+// and H with whether each was given or found, bench width, work areas, the probabilities of
+// exceedance asked for and where the observed values come from.
+Row Report::inputs_quarries(lxw_worksheet* ws, Row r) {
+  if (!d_.quarry || d_.quarry->sections.empty()) return r;
+  r = table_title(ws, r, "quarry_inputs");
+  headings(ws, r++, 0, "quarry_inputs",
+           {"section", "group", "rules", "crest_x", "crest_origin", "toe_x", "toe_origin",
+            "height", "height_origin", "bench_width", "work_areas", "exceedance",
+            "observed_source"},
+           45);
+  lxw_format *xf = number("coordinate"), *lf = number("length");
+  const std::string& none = t_.get("labels", "none");
+  for (const design::QuarrySectionResult& s : d_.quarry->sections) {
+    const design::QuarryGeometry& g = s.geometry;
+    text(ws, r, 0, s.spec.name, wrap());
+    text(ws, r, 1, s.spec.group.empty() ? none : s.spec.group, wrap());
+    text(ws, r, 2, s.spec.rules, wrap());
+    num(ws, r, 3, g.crest.x, xf);
+    text(ws, r, 4, std::string(design::to_string(g.crest_origin)), centred());
+    num(ws, r, 5, g.toe.x, xf);
+    text(ws, r, 6, std::string(design::to_string(g.toe_origin)), centred());
+    num(ws, r, 7, g.height, lf);
+    text(ws, r, 8, std::string(design::to_string(g.height_origin)), centred());
+    if (s.spec.bench_width)
+      num(ws, r, 9, *s.spec.bench_width, lf);
+    else
+      text(ws, r, 9, none, centred());
+    std::string areas, probabilities;
+    for (const auto& w : s.spec.work_areas)
+      areas += fmt::format("{}{} {} m", areas.empty() ? "" : "; ", w.name, format_number(w.distance));
+    for (double p : s.spec.exceedance)
+      probabilities += fmt::format("{}{} %", probabilities.empty() ? "" : ", ", format_number(100 * p));
+    text(ws, r, 10, keep(areas.empty() ? none : areas), wrap());
+    const std::string* areas_text = &strings_.back();
+    text(ws, r, 11, keep(probabilities.empty() ? none : probabilities), wrap());
+    const std::string* observed = &s.spec.observed_source;
+    text(ws, r, 12, observed->empty() ? none : *observed, wrap());
+    fit_row(ws, r, {{areas_text, 16}, {&s.spec.name, 30}, {observed, 16}, {&s.spec.rules, 16}});
+    ++r;
   }
   return r;
 }

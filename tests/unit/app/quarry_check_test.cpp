@@ -26,6 +26,8 @@
 
 #include "support/cli_fixture.hpp"
 #include "support/tools.hpp"
+#include "support/workbook_reader.hpp"
+#include "pierre/io/report_template.hpp"
 
 namespace {
 
@@ -304,6 +306,42 @@ TEST_F(QuarryCli, SeedOptionMovesEverySectionWithoutItsOwnSeed) {
   EXPECT_EQ(j["quarries"][0]["sections"][0]["seed"], 500);
   EXPECT_EQ(j["quarries"][1]["sections"][0]["seed"], 501);
   EXPECT_EQ(j["quarries"][0]["thrown"], 40);
+}
+
+// The report's Inputs sheet of a quarry scenario: a table of the sections' inputs (the work
+// areas and their distances, the bench width, the rule set) and no "Observation lines" heading
+// over an empty table (a quarry scenario has no observation lines).
+TEST_F(QuarryCli, TheInputsSheetListsTheSectionsAndNoEmptyLineTable) {
+  PIERRE_NEED_PROGRAM("soffice");
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(pierre("run " + kData + "pass.toml --out '" + out.string() + "' --throws 5 -q").code, 0);
+  const auto e = pierre::test::export_sheets(out / "report.xlsx", dir_);
+  ASSERT_EQ(e.exec.status, 0) << e.exec.output;
+  ASSERT_TRUE(e.sheets.count("Inputs"));
+  const pierre::test::Sheet& s = e.sheets.at("Inputs");
+  const pierre::io::ReportTemplate tpl = pierre::io::load_report_template(PIERRE_SOURCE_DIR "/templates/report.toml");
+  EXPECT_FALSE(pierre::test::find_row(s, 0, tpl.get("titles", "observation_lines")))
+      << "an Observation lines table in a quarry scenario";
+  const auto title = pierre::test::find_row(s, 0, tpl.get("titles", "quarry_inputs"));
+  ASSERT_TRUE(title);
+  const auto j = summary(out);
+  for (const auto& row : j["quarries"])
+    for (const auto& sec : row["sections"]) {
+      const std::string name = sec["name"].get<std::string>();
+      const auto k = pierre::test::find_row(s, 0, name, *title);
+      ASSERT_TRUE(k) << name;
+      EXPECT_EQ(s[*k][2].text, row["rules"]["name"].get<std::string>()) << name;
+      for (const auto& w : sec["work_areas"]) {
+        const std::string areas = s[*k][10].text;
+        EXPECT_NE(areas.find(w["name"].get<std::string>()), std::string::npos) << areas;
+      }
+    }
+  const auto north = pierre::test::find_row(s, 0, "North", *title);
+  ASSERT_TRUE(north);
+  const auto bench = pierre::test::number(s, *north, 9);
+  ASSERT_TRUE(bench) << pierre::test::dump(s, *north);
+  EXPECT_EQ(*bench, 40.0);  // bench_width of pass.toml
+  EXPECT_NE(s[*north][10].text.find("crusher 65 m"), std::string::npos) << s[*north][10].text;
 }
 
 TEST_F(QuarryCli, TheAustrianExampleValidatesAndRuns) {
