@@ -344,6 +344,28 @@ TEST_F(QuarryCli, TheInputsSheetListsTheSectionsAndNoEmptyLineTable) {
   EXPECT_NE(s[*north][10].text.find("crusher 65 m"), std::string::npos) << s[*north][10].text;
 }
 
+// The README's example of `pierre check` on examples/quarry-austria names every line that FAILs
+// (it named one of three).
+TEST_F(QuarryCli, TheReadmeNamesEveryFailOfTheAustrianExample) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check '" + kExample + "' --out '" + out.string() + "' -q");
+  ASSERT_EQ(r.code, 1) << r.err;
+  const std::string readme = slurp(PIERRE_SOURCE_DIR "/README.md");
+  const auto begin = readme.find("pierre check examples/quarry-austria/scenario.toml");
+  ASSERT_NE(begin, std::string::npos);
+  const std::string paragraph = readme.substr(begin, readme.find("\n\n", begin) - begin);
+  int fails = 0;
+  const auto j = summary(out);
+  for (const auto& c : j["checks"]) {
+    if (c["status"] != "FAIL") continue;
+    ++fails;
+    for (const char* key : {"subject", "id"})
+      EXPECT_NE(paragraph.find(c[key].get<std::string>()), std::string::npos)
+          << c[key] << " of a FAIL line is not in the README's paragraph:\n" << paragraph;
+  }
+  EXPECT_GT(fails, 0);
+}
+
 TEST_F(QuarryCli, TheAustrianExampleValidatesAndRuns) {
   const Result v = pierre("validate '" + kExample + "'");
   ASSERT_EQ(v.code, 0) << v.err;
