@@ -82,9 +82,22 @@ std::string cell(double v, int width) {
 
 }  // namespace
 
+std::string duration_text(double seconds) {
+  // Three significant digits, fixed-point (0.05 s is "50.0 ms", not "0.0 s"); the bounds are
+  // where rounding to the next decade starts.
+  auto three = [](double v) {
+    int decimals = 2;
+    for (double bound = 9.995; v >= bound && decimals > 0; bound *= 10) --decimals;
+    for (double bound = 0.9995; v > 0 && v < bound && decimals < 9; bound /= 10) ++decimals;
+    return fmt::format("{:.{}f}", v, decimals);
+  };
+  if (!(seconds >= 0)) seconds = 0;
+  return seconds < 0.9995 ? three(1e3 * seconds) + " ms" : three(seconds) + " s";
+}
+
 void print_results(std::FILE* out, const design::RunStatistics& s, double seconds,
                    const std::vector<std::filesystem::path>& files) {
-  fmt::print(out, "{} trajectories in {:.1f} s\n\n", s.trajectories, seconds);
+  fmt::print(out, "{} trajectories in {}\n\n", s.trajectories, duration_text(seconds));
   if (!s.lines.empty()) {
     std::fputs(s.every_crossing
                         ? "Observation lines (every crossing, in both directions: --all-crossings; "
@@ -164,10 +177,17 @@ std::string g(double v, int width) {
 
 }  // namespace
 
-void print_design(std::FILE* out, const io::DesignResults& r) {
+void print_design(std::FILE* out, const io::DesignResults& r, bool follows_output) {
   if (r.barriers.empty() && r.checks.empty()) return;
+  // A blank line between blocks, not before the first thing printed (`check --quiet`).
+  bool printed = follows_output;
+  auto blank = [&] {
+    if (printed) fmt::print(out, "\n");
+    printed = true;
+  };
   if (!r.barriers.empty()) {
-    fmt::print(out, "\nBarriers (ETAG 027, docs/barriers.md; characteristic values at the rule set's percentile)\n");
+    blank();
+    fmt::print(out, "Barriers (ETAG 027, docs/barriers.md; characteristic values at the rule set's percentile)\n");
     fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>10} {:>10} {:>6} {:>7}\n", "barrier",
                "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req kJ", "SEL_req kJ",
                "class", "h_i m");
@@ -180,7 +200,8 @@ void print_design(std::FILE* out, const io::DesignResults& r) {
                                 : std::string("-"),
                  g(d.h_i, 7));
   }
-  fmt::print(out, "\nChecks\n{:<18} {:<20} {:>10} {:>10} {:<4} {:<6} {}\n", "subject", "id", "value",
+  blank();
+  fmt::print(out, "Checks\n{:<18} {:<20} {:>10} {:>10} {:<4} {:<6} {}\n", "subject", "id", "value",
              "limit", "unit", "status", "rule");
   for (const auto& c : r.checks)
     fmt::print(out, "{:<18} {:<20} {} {} {:<4} {:<6} {}\n", c.subject, c.id, g(c.value, 10),
@@ -194,13 +215,14 @@ void print_design(std::FILE* out, const io::DesignResults& r) {
           c.status == design::CheckStatus::fail || c.status == design::CheckStatus::warn;
       if (is_judged != judged || c.status == design::CheckStatus::pass || c.reason.empty())
         continue;
-      if (!header) fmt::print(out, "\n");
+      if (!header) blank();
       header = true;
       fmt::print(out, "{} {} {}: {}\n", design::to_string(c.status), c.subject, c.id, c.reason);
     }
   const std::size_t fails = static_cast<std::size_t>(std::count_if(
       r.checks.begin(), r.checks.end(), [](const auto& c) { return c.status == design::CheckStatus::fail; }));
-  fmt::print(out, "\n{} check line{}, {} FAIL\n", r.checks.size(), r.checks.size() == 1 ? "" : "s", fails);
+  blank();
+  fmt::print(out, "{} check line{}, {} FAIL\n", r.checks.size(), r.checks.size() == 1 ? "" : "s", fails);
 }
 
 }  // namespace pierre::app

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -40,11 +41,16 @@ class ProgressBar {
 // for each material that no segment uses.
 void print_source_notes(std::FILE* out, const sim::Scenario& scenario);
 
+// A run's wall time to three significant digits: "42.3 ms" below a second, else "1.25 s".
+std::string duration_text(double seconds);
+
 void print_results(std::FILE* out, const design::RunStatistics& stats, double seconds,
                    const std::vector<std::filesystem::path>& files);
 
 // The barriers' design values, then every check line as a table (subject, id, value, limit,
 // unit, status, rule), then the reason of each FAIL and WARN line, then of each N/A line.
-void print_design(std::FILE* out, const io::DesignResults& results);
+// Blocks are separated by a blank line, and one leads only when `follows_output` (something
+// was printed before: `check --quiet` starts with its first table, not an empty line).
+void print_design(std::FILE* out, const io::DesignResults& results, bool follows_output = true);
 
 }  // namespace pierre::app

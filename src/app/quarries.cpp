@@ -88,10 +88,11 @@ void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint6
   }
 }
 
-void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
+void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_output) {
   fmt::print(out,
-             "\nQuarry danger zones (docs/quarry.md; thesis Tables 6.2, 6.3): horizontal "
-             "distances from the toe,\ncalculated / observed where observed values are given\n");
+             "{}Quarry danger zones (docs/quarry.md; thesis Tables 6.2, 6.3): horizontal "
+             "distances from the toe,\ncalculated / observed where observed values are given\n",
+             follows_output ? "\n" : "");
   fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", "row", "n", "H m",
              "", "P50", "P95", "P99", "max", "governing");
   for (const design::QuarryRow& r : d.rows) {
@@ -150,13 +151,18 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d) {
   auto avg = [&](double calc, double obs) {
     return a.observed_rows ? pair(calc, obs, 2) : metres(calc, 0, 2);
   };
-  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", a.rows,
+  // n is left blank: the average is a mean of the rows' ratios, not a sample of its own.
+  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", "",
              "", "RD/H", avg(a.rd50_h, a.obs_rd50_h), avg(a.rd95_h, a.obs_rd95_h), "",
              avg(a.rdmax_h, a.obs_rdmax_h));
   fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "", "", "", "ID/H",
              avg(a.id50_h, a.obs_id50_h), avg(a.id95_h, a.obs_id95_h), "",
              avg(a.idmax_h, a.obs_idmax_h));
   fmt::print(out, "n: RD over every block thrown, ID over the blocks that reached the floor.\n");
+  fmt::print(out,
+             "Average /H: the mean over the {} row{} of each row's ratio, so no n of its own; no P99:\n"
+             "  as in Tables 6.2/6.3, the average line has P50, P95 and max.\n",
+             a.rows, a.rows == 1 ? "" : "s");
 
   fmt::print(out, "\nSections\n");
   for (const design::QuarrySectionResult& s : d.sections) {
@@ -260,7 +266,8 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
     first_crossings.insert(first_crossings.end(), first.crossings.begin(), first.crossings.end());
     total_trajectories += first.total_trajectories;
     total_crossings += first.total_crossings;
-    inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed});
+    inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed,
+                      s.scenario.settings.throws});
     seeds.push_back(s.scenario.settings.seed);
   }
   const double seconds =
@@ -301,7 +308,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   const auto written = folder->commit({io::kImpactsCsv});
   if (!o.quiet) print_results(stdout, stats, seconds, written);
   if (!o.quiet || o.check) {
-    print_quarries(stdout, *results.quarry);
+    print_quarries(stdout, *results.quarry, !o.quiet);
     print_design(stdout, results);
   }
   if (o.check && design::any_failure(results.checks)) return kExitCheckFailed;

@@ -40,8 +40,9 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
                  const QuarryRunOptions& options);
 
 // The quarry table (Tables 6.2/6.3: n, RD and ID P50/P95/P99/max in m and /H, calculated beside
-// observed where given, RD_gov and ID_gov) and each section's geometry and zones.
-void print_quarries(std::FILE* out, const design::QuarryDesign& design);
+// observed where given, RD_gov and ID_gov) and each section's geometry and zones. A blank line
+// leads only when `follows_output` (`check --quiet` starts with the table).
+void print_quarries(std::FILE* out, const design::QuarryDesign& design, bool follows_output = true);
 
 // What the report shows of a quarry run: the design and, per section, its profile and
 // `paths_per_section` trajectories re-run with their paths recorded (the section's own random

@@ -112,9 +112,11 @@ void elongation_line(Builder& b, const CandidateBarrier& c) {
     set(l, CheckStatus::fail, "distance " + num(value) + " m < " + how + " = " + num(limit) + " m");
 }
 
+// Value and limit in % (unit "%"), as the reason words them and as sample.size is; judged on the
+// fractions.
 void exceedance_line(Builder& b, const char* id, const std::string& what, double p,
                      std::optional<double> acceptable) {
-  CheckLine& l = b.add(id, what, p, acceptable.value_or(kNaN), "");
+  CheckLine& l = b.add(id, what, 100 * p, 100 * acceptable.value_or(kNaN), "%");
   if (!acceptable)
     set(l, CheckStatus::not_applicable, "no acceptable probability given (" + pct(p) + ")");
   else if (std::isnan(p))
@@ -184,14 +186,12 @@ void sample_line(Builder& b) {
     set(l, CheckStatus::pass, "half-width " + pct(worst) + " of " + which + " <= tolerance " + pct(tol));
     return;
   }
-  const double factor = (worst / tol) * (worst / tol);
   const double n = static_cast<double>(d.crossings + d.not_reached);
-  std::string reason = "half-width " + pct(worst) + " of " + which + " > tolerance " + pct(tol) +
-                       ": about " + num(std::ceil(n * factor), 6) + " trajectories needed (n · (" +
-                       num(worst, 3) + " / " + num(tol, 3) + ")² with n = " + num(n, 9) + ")";
-  if (d.throws > 0)
-    reason += ", i.e. throws = " + num(std::ceil(d.throws * factor), 9) + " per block and source";
-  set(l, CheckStatus::warn, reason);
+  const SampleNeeded needed = sample_needed(n, d.throws, worst, tol);
+  set(l, CheckStatus::warn,
+      "half-width " + pct(worst) + " of " + which + " > tolerance " + pct(tol) + ": about " +
+          num(needed.trajectories, 6) + " trajectories needed (n · (" + num(worst, 3) + " / " +
+          num(tol, 3) + ")² with n = " + num(n, 9) + ")" + throws_needed_text(needed));
 }
 
 }  // namespace

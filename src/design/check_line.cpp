@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "pierre/design/number_text.hpp"
+
 namespace pierre::design {
 
 std::string_view to_string(CheckStatus s) {
@@ -17,6 +19,20 @@ std::string_view to_string(CheckStatus s) {
 bool any_failure(const std::vector<CheckLine>& lines) {
   return std::any_of(lines.begin(), lines.end(),
                      [](const CheckLine& l) { return l.status == CheckStatus::fail; });
+}
+
+SampleNeeded sample_needed(double trajectories, std::uint32_t throws, double relative,
+                           double tolerance) {
+  const double factor = (relative / tolerance) * (relative / tolerance);
+  SampleNeeded n;
+  n.trajectories = std::ceil(trajectories * factor);
+  if (throws > 0) n.throws = std::ceil(static_cast<double>(throws) * factor);
+  return n;
+}
+
+std::string throws_needed_text(const SampleNeeded& needed) {
+  if (!(needed.throws > 0)) return {};
+  return ", i.e. throws = " + number_text(needed.throws, 9) + " per block and source";
 }
 
 }  // namespace pierre::design

@@ -181,7 +181,9 @@ std::string group_rows(const std::vector<QuarrySectionInput>& in, QuarryDesign& 
       d.rows.push_back(std::move(row));
       if (!s.spec.group.empty()) group_row[s.spec.group] = r;
     }
-    d.rows[r].sections.push_back(i);
+    QuarryRow& row = d.rows[r];
+    row.throws = row.sections.empty() || row.throws == s.throws ? s.throws : 0;  // else unknown
+    row.sections.push_back(i);
     QuarrySectionResult sr;
     sr.spec = s.spec;
     sr.rules_title = s.rules.title;
@@ -196,7 +198,7 @@ std::string group_rows(const std::vector<QuarrySectionInput>& in, QuarryDesign& 
 }
 
 // A row's pooled statistics (/H over its sections), counts, exceedance distances, governing
-// distances, RD_p's bootstrap interval (stream seed + r) and observed comparison; a group's
+// distances, RD_gov's bootstrap interval (stream seed + r) and observed comparison; a group's
 // sections get their own statistics too.
 void pool_row(QuarryDesign& d, std::size_t r, const std::vector<QuarrySectionInput>& in,
               std::uint64_t seed) {
@@ -418,11 +420,11 @@ CheckLine sample_size_line(const QuarryRow& row, const QuarryRuleSet& rules) {
     l.value = 100.0 * rel;
     if (rel > rules.sample_tolerance) {
       warn = true;
-      const double needed = static_cast<double>(row.thrown) * (rel / rules.sample_tolerance) *
-                            (rel / rules.sample_tolerance);
-      why = "RD_gov known to ±" + num(l.value, 3) + " % > " + num(l.limit, 3) +
-            " %: about " + std::to_string(static_cast<long long>(std::ceil(needed))) +
-            " trajectories would be needed (" + std::to_string(row.thrown) + " run)";
+      const SampleNeeded needed =
+          sample_needed(static_cast<double>(row.thrown), row.throws, rel, rules.sample_tolerance);
+      why = "RD_gov known to ±" + num(l.value, 3) + " % > " + num(l.limit, 3) + " %: about " +
+            number_text(needed.trajectories, 9) + " trajectories would be needed (" +
+            std::to_string(row.thrown) + " run)" + throws_needed_text(needed);
     } else {
       why = "RD_gov known to ±" + num(l.value, 3) + " %";
     }

@@ -39,7 +39,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   s["sheets"] = kSheetKeys;
   s["formats"] = {"count",   "speed",     "length",   "coordinate",  "energy",  "mass",
                   "volume",  "density",   "factor",   "parameter",   "p_value", "scientific", "probability",
-                  "percent", "time",      "angle",    "material",    "general", "date",
+                  "percent", "small_percent", "time",      "angle",    "material",    "general", "date",
                   "open_class", "open_energy"};
   s["titles"] = {"summary",      "run",          "barriers",       "lines",
                  "checks",       "inputs",       "simulation",     "materials",
@@ -50,7 +50,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "crossings",    "capped",       "complete",     "no_rows",     "quarry",
                  "quarry_summary", "quarry_average", "quarry_geometry", "quarry_counts",
                  "quarry_zones", "quarry_statistics", "quarry_fits", "quarry_exceedance",
-                 "quarry_governing", "stop_reasons"};
+                 "quarry_governing", "stop_reasons", "quarry_profile", "quarry_inputs"};
   s["labels"] = {"project",       "description", "scenario_file", "date",        "version",
                  "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
@@ -58,7 +58,9 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "id",            "beyond_profile", "pooled",    "observed_source", "total",
                  "quarry_profile", "verdict", "no_checks", "fit_doubtful", "fit_past_floor",
                  "lines_every_crossing", "overrides", "energy_classes", "read_from", "line_not_crossed", "stop_energy", "stop_friction",
-                 "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical"};
+                 "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
+                 "quarry_average_note", "resolved", "defaulted", "from_class",
+                 "open_class_capacity"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};
@@ -127,6 +129,10 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                                    "toe_x",   "toe_z",    "toe_origin", "height",
                                    "height_derived", "height_origin", "floor_angle",
                                    "floor_length", "seed"};
+  s["headings.quarry_inputs"] = {"section",       "group",       "rules",       "crest_x",
+                                 "crest_origin",  "toe_x",       "toe_origin",  "height",
+                                 "height_origin", "bench_width", "work_areas",  "exceedance",
+                                 "observed_source"};
   s["headings.quarry_counts"] = {"section",   "thrown",       "reached_floor", "not_reached_floor",
                                  "above_toe", "left_profile", "left_upslope",  "abnormal"};
   s["headings.quarry_zones"] = {"section",   "danger_zone", "first_impact_zone", "bench_width",

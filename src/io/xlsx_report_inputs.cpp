@@ -2,12 +2,25 @@
 // profile's vertices, observation lines), the barriers' inputs, and the scenario's text.
 #include "xlsx_report_writer.hpp"
 
+#include <cmath>
+#include <tuple>
+
 namespace pierre::io::detail {
+namespace {
+
+// A number inside a text: four significant digits, a whole number of kJ up to a million whole
+// (a MEL of 10 000 kJ as 1e+04 would read as a typo).
+std::string shown(double v) {
+  if (std::isfinite(v) && std::abs(v) >= 1e4 && std::abs(v) < 1e6) return fmt::format("{:.0f}", v);
+  return format_number(v);
+}
+
+}  // namespace
 
 void Report::inputs(lxw_worksheet* ws) {
   page_setup(ws);
   width(ws, 0, 0, 30);
-  width(ws, 1, 8, 16);
+  width(ws, 1, 12, 16);
   text(ws, 0, 0, t_.get("titles", "inputs"), title());
   Row r = 2;
   const LoadedScenario* sc = d_.scenario;
@@ -19,6 +32,7 @@ void Report::inputs(lxw_worksheet* ws) {
     r = inputs_vertices(ws, r, *sc);
     r = inputs_lines(ws, r, *sc);
   }
+  r = inputs_quarries(ws, r);
   r = inputs_barriers(ws, r);
   if (sc) inputs_scenario_text(ws, r, *sc);
 }
@@ -148,11 +162,56 @@ Row Report::inputs_vertices(lxw_worksheet* ws, Row r, const LoadedScenario& sc) 
 
 Row Report::inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
   const auto& s = sc.scenario;
+  if (s.lines.empty()) return r;  // a quarry scenario, or none drawn: no empty table
   r = table_title(ws, r, "observation_lines");
   headings(ws, r++, 0, "observation_lines", {"name", "x"});
   for (const auto& l : s.lines) {
     text(ws, r, 0, l.name);
     num(ws, r++, 1, l.x, number("coordinate"));
+  }
+  return r;
+}
+
+// The quarry sections' inputs (docs/quarry.md), one row per section: group, rule set, crest, toe
+// and H with whether each was given or found, bench width, work areas, the probabilities of
+// exceedance asked for and where the observed values come from.
+Row Report::inputs_quarries(lxw_worksheet* ws, Row r) {
+  if (!d_.quarry || d_.quarry->sections.empty()) return r;
+  r = table_title(ws, r, "quarry_inputs");
+  headings(ws, r++, 0, "quarry_inputs",
+           {"section", "group", "rules", "crest_x", "crest_origin", "toe_x", "toe_origin",
+            "height", "height_origin", "bench_width", "work_areas", "exceedance",
+            "observed_source"},
+           45);
+  lxw_format *xf = number("coordinate"), *lf = number("length");
+  const std::string& none = t_.get("labels", "none");
+  for (const design::QuarrySectionResult& s : d_.quarry->sections) {
+    const design::QuarryGeometry& g = s.geometry;
+    text(ws, r, 0, s.spec.name, wrap());
+    text(ws, r, 1, s.spec.group.empty() ? none : s.spec.group, wrap());
+    text(ws, r, 2, s.spec.rules, wrap());
+    num(ws, r, 3, g.crest.x, xf);
+    text(ws, r, 4, std::string(design::to_string(g.crest_origin)), centred());
+    num(ws, r, 5, g.toe.x, xf);
+    text(ws, r, 6, std::string(design::to_string(g.toe_origin)), centred());
+    num(ws, r, 7, g.height, lf);
+    text(ws, r, 8, std::string(design::to_string(g.height_origin)), centred());
+    if (s.spec.bench_width)
+      num(ws, r, 9, *s.spec.bench_width, lf);
+    else
+      text(ws, r, 9, none, centred());
+    std::string areas, probabilities;
+    for (const auto& w : s.spec.work_areas)
+      areas += fmt::format("{}{} {} m", areas.empty() ? "" : "; ", w.name, format_number(w.distance));
+    for (double p : s.spec.exceedance)
+      probabilities += fmt::format("{}{} %", probabilities.empty() ? "" : ", ", format_number(100 * p));
+    text(ws, r, 10, keep(areas.empty() ? none : areas), wrap());
+    const std::string* areas_text = &strings_.back();
+    text(ws, r, 11, keep(probabilities.empty() ? none : probabilities), wrap());
+    const std::string* observed = &s.spec.observed_source;
+    text(ws, r, 12, observed->empty() ? none : *observed, wrap());
+    fit_row(ws, r, {{areas_text, 16}, {&s.spec.name, 30}, {observed, 16}, {&s.spec.rules, 16}});
+    ++r;
   }
   return r;
 }
@@ -178,8 +237,19 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
             resid = row("residual_height"), acc_e = row("acceptable_energy"),
             acc_h = row("acceptable_height"), obs = row("observed_file");
   for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i) {
-    const auto& s = d_.barriers[i].spec;
+    const design::BarrierDesign& bd = d_.barriers[i];
+    const auto& s = bd.spec;
     const Col c = static_cast<Col>(1 + i);
+    // A value the scenario gives is a number; one the procedure resolved or defaulted is a text
+    // with the value used and where it comes from: a blank would read as a missing input.
+    auto derived = [&](Row at, std::string_view label, double v, std::string_view key,
+                       const std::string& fallback) {
+      const auto how = bd.how.find(std::string(key));
+      std::string t = replace_all(t_.get("labels", label), "{value}", shown(v));
+      t = replace_all(std::move(t), "{how}", how == bd.how.end() ? fallback : how->second);
+      text(ws, at, c, keep(std::move(t)), wrap());
+      fit_row(ws, at, {{&strings_.back(), 16}});
+    };
     text(ws, line, c, s.line);
     text(ws, rules, c, s.rules);
     using K = design::DesignBlock::Kind;
@@ -188,10 +258,21 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
          db.kind == K::given     ? "given"
          : db.kind == K::largest ? "largest"
                                  : "percentile");
-    if (db.kind == K::given) num(ws, volume, c, db.volume, number("volume"));
-    if (db.density > 0) num(ws, density, c, db.density, number("density"));
+    if (db.kind == K::given)
+      num(ws, volume, c, db.volume, number("volume"));
+    else
+      derived(volume, "resolved", bd.design_volume, "volume",
+              db.kind == K::largest ? "largest" : "percentile");
+    if (db.density > 0)
+      num(ws, density, c, db.density, number("density"));
+    else
+      derived(density, "resolved", bd.design_density, "density", "the blocks'");
     if (db.kind == K::percentile) num(ws, pct, c, db.percentile, number("general"));
-    opt(ws, df, c, s.free_board_diameter, number("length"));
+    if (s.free_board_diameter)
+      num(ws, df, c, *s.free_board_diameter, number("length"));
+    else
+      derived(df, "defaulted", bd.free_board_diameter, "free_board_diameter",
+              "the mean equivalent diameter of the blocks thrown");
     std::string q;
     for (const auto& [k, v] : s.data_quality) q += (q.empty() ? "" : "; ") + k + " = " + v;
     text(ws, dq, c, keep(q), wrap());
@@ -199,8 +280,20 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
     if (s.candidate) {
       const auto& cb = *s.candidate;
       if (cb.energy_class) num(ws, cls, c, *cb.energy_class, number("count"));
-      opt(ws, mel, c, cb.mel_kJ, number("energy"));
-      opt(ws, sel, c, cb.sel_kJ, number("energy"));
+      // MEL and SEL given, or those of the class (an open-ended class has none of its own).
+      for (auto [at, given, used] : {std::tuple{mel, &cb.mel_kJ, bd.candidate_mel_kJ},
+                                     std::tuple{sel, &cb.sel_kJ, bd.candidate_sel_kJ}}) {
+        if (*given) {
+          num(ws, at, c, **given, number("energy"));
+        } else if (cb.energy_class) {
+          const std::string cls_text = std::to_string(*cb.energy_class);
+          std::string t = std::isfinite(used)
+                              ? replace_all(t_.get("labels", "from_class"), "{value}", shown(used))
+                              : t_.get("labels", "open_class_capacity");
+          text(ws, at, c, keep(replace_all(std::move(t), "{class}", cls_text)), wrap());
+          fit_row(ws, at, {{&strings_.back(), 16}});
+        }
+      }
       opt(ws, height, c, cb.height, number("length"));
       opt(ws, el_mel, c, cb.elongation_mel, number("length"));
       opt(ws, el_sel, c, cb.elongation_sel, number("length"));

@@ -18,7 +18,9 @@ struct Report::Mark {
 void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   page_setup(ws);
   width(ws, 0, 7, 12);
-  text(ws, 0, 0, t_.get("titles", "profile"), title());
+  // A quarry's sections are drawn on their rows' sheets: the title says so, not what a slope
+  // scenario's chart would show.
+  text(ws, 0, 0, t_.get("titles", d_.quarry ? "quarry_profile" : "profile"), title());
   if (d_.quarry) {
     text(ws, 2, 0, t_.get("labels", "quarry_profile"), note());
     return;

@@ -92,6 +92,11 @@ Row Report::quarry_averages(lxw_worksheet* ws, Row r) {
   if (a.observed_rows > 0)
     avg(t_.get("labels", "observed"), a.obs_rd50_h, a.obs_rd95_h, a.obs_rdmax_h, a.obs_id50_h,
         a.obs_id95_h, a.obs_idmax_h);
+  // Why the average rows have no number thrown: they are means of the rows' ratios.
+  if (a.rows > 0)
+    text(ws, r++, 0,
+         replace_all(t_.get("labels", "quarry_average_note"), "{rows}", std::to_string(a.rows)),
+         note());
   return r;
 }
 

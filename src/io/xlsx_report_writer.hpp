@@ -252,6 +252,7 @@ class Report {
   Row inputs_sources(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
   Row inputs_vertices(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
   Row inputs_lines(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
+  Row inputs_quarries(lxw_worksheet* ws, Row r);
   Row inputs_barriers(lxw_worksheet* ws, Row r);
   void inputs_scenario_text(lxw_worksheet* ws, Row r, const LoadedScenario& sc);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -38,5 +39,19 @@ inline bool at_most(double value, double limit) { return at_least(limit, value);
 
 // True when any line FAILs: the exit code of `pierre check`.
 bool any_failure(const std::vector<CheckLine>& lines);
+
+// sample.size, barriers' and quarries' alike (design-checks.md §1 step 8, docs/quarry.md): a
+// bootstrap interval's half-width falls as 1/√n, so a relative half-width `relative` above
+// `tolerance` asks for n · (relative / tolerance)² trajectories instead of the n = `trajectories`
+// run, i.e. `throws` · (relative / tolerance)² throws per block and source. Both rounded up.
+struct SampleNeeded {
+  double trajectories = 0;
+  double throws = 0;  // per block and source; 0 when the run's throws are not known (0)
+};
+SampleNeeded sample_needed(double trajectories, std::uint32_t throws, double relative,
+                           double tolerance);
+// ", i.e. throws = 17 per block and source", the end of a sample.size reason; empty when the
+// throws are not known.
+std::string throws_needed_text(const SampleNeeded& needed);
 
 }  // namespace pierre::design

@@ -59,6 +59,7 @@ struct QuarrySectionInput {
   QuarryGeometry geometry;
   QuarryDistances distances;
   QuarryObserved observed;  // may be empty
+  std::uint32_t throws = 0;  // per block and source (0: unknown), for sample.size's advice
 };
 
 struct ExceedanceDistance {  // one asked probability of exceedance
@@ -80,6 +81,7 @@ struct QuarryRow {
   std::vector<std::size_t> sections;  // indices into QuarryDesign::sections
   bool pooled = false;
   std::string rules;                 // rule set name
+  std::uint32_t throws = 0;          // per block and source of its sections (0: unknown, or unequal)
   double height = 0;                 // m: the section's H, or the mean H of the group
   std::uint64_t thrown = 0, reached_floor = 0, not_reached_floor = 0, above_toe = 0,
                 left_profile = 0, left_upslope = 0, abnormal = 0;

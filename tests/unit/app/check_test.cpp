@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -122,9 +123,72 @@ TEST_F(Check, NothingToCheckSaysSoAndExitsZero) {
                           out.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Nothing to check"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.front(), '\n') << "--quiet output starts with an empty line:\n" << r.out;
   const auto j = summary(out);
   EXPECT_TRUE(j["checks"].empty());
   EXPECT_EQ(j["checks_failed"], false);
+}
+
+// `check --quiet` prints only the tables and the check lines: its output starts with the first
+// of them, not an empty line (one led every block, meant to follow the run's table).
+TEST_F(Check, QuietOutputStartsWithContent) {
+  for (const char* scenario : {"pass.toml", "design.toml"}) {
+    const fs::path out = dir_ / scenario;
+    const Result r = pierre("check " + kData + scenario + " --quiet --out '" + out.string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    ASSERT_FALSE(r.out.empty());
+    EXPECT_NE(r.out.front(), '\n') << scenario << ":\n" << r.out;
+    EXPECT_EQ(r.out.find("\n\n\n"), std::string::npos) << r.out;  // one blank line between blocks
+  }
+}
+
+// The exceedance lines' value and limit are in % with the unit "%", as their reasons word them
+// ("0.00524 % <= acceptable 1 %"): before, 5.243e-05 and 0.01 stood beside an empty unit. The
+// value is the barrier's P(E > MEL_req) and P(h > h_i) (fractions in its Table 4.2) times 100.
+TEST_F(Check, ExceedanceLinesAreInPercentLikeTheirReasons) {
+  std::string text = slurp(kData + "pass.toml");
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"\"../small/profile.csv\"", "\"" PIERRE_TEST_DATA "/small/profile.csv\""},
+           {"free_board_diameter = 1.0\n",
+            "free_board_diameter = 1.0\nacceptable_energy_exceedance = 0.5\n"
+            "acceptable_height_exceedance = 0.25\n"}}) {
+    const auto k = text.find(from);
+    ASSERT_NE(k, std::string::npos) << from;
+    text.replace(k, from.size(), to);
+  }
+  const fs::path scenario = dir_ / "exceedance.toml", out = dir_ / "out";
+  std::ofstream(scenario) << text;
+  const Result r = pierre("check '" + scenario.string() + "' --out '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  const auto j = summary(out);
+  const auto& table = j["barriers"][0]["exceedance"];
+  for (const auto& [id, what, acceptable] :
+       {std::tuple{"exceedance.energy", "P(E > MEL_req)", 0.5},
+        std::tuple{"exceedance.height", "P(h > h_i)", 0.25}}) {
+    const auto& c = check(j, id);
+    EXPECT_EQ(c["unit"], "%") << c;
+    EXPECT_DOUBLE_EQ(c["limit"].get<double>(), 100 * acceptable) << c;
+    double p = -1;
+    for (const auto& row : table)
+      if (row["what"] == what) p = row["simulated_weibull"].get<double>();
+    ASSERT_GE(p, 0.0) << what << " not in the barrier's exceedance table";
+    EXPECT_DOUBLE_EQ(c["value"].get<double>(), 100 * p) << c;
+    // The reason's first number is the value, in %.
+    const std::string reason = c["reason"].get<std::string>();
+    std::size_t used = 0;
+    const double in_reason = std::stod(reason, &used);
+    EXPECT_EQ(reason.substr(used, 2), " %") << reason;
+    EXPECT_NEAR(in_reason, c["value"].get<double>(), 0.005 * c["value"].get<double>()) << reason;
+    // The console's check table shows the unit.
+    std::istringstream lines(r.out);
+    bool shown = false;
+    for (std::string l; std::getline(lines, l);)
+      if (l.find(std::string(" ") + id + " ") != std::string::npos && l.find("Generous") == 0) {
+        shown = true;
+        EXPECT_NE(l.find(" % "), std::string::npos) << l;
+      }
+    EXPECT_TRUE(shown) << id << "\n" << r.out;
+  }
 }
 
 TEST_F(Check, BadBarrierInputExitsTwoAndWritesNothing) {

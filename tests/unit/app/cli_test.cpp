@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -106,6 +107,28 @@ TEST_F(Cli, RunWritesTheResults) {
   EXPECT_NE(r.out.find("speed (m/s)"), std::string::npos);
   EXPECT_NE(r.out.find("P99"), std::string::npos);
   EXPECT_NE(r.out.find((out / "trajectories.csv").string()), std::string::npos);
+}
+
+// The run's time with three significant digits, in ms below a second: 600 trajectories take
+// milliseconds, which "in 0.0 s" hid.
+TEST_F(Cli, TheRunTimeIsShownToThreeSignificantDigits) {
+  const Result r = pierre("run " + kScenario + " --out " + q(dir_ / "out"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string line = first_line(r.out);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_match(line, m, std::regex(R"((\d+) trajectories in ([0-9.]+) (ms|s))")))
+      << line;
+  EXPECT_EQ(std::stoull(m[1].str()), 600u) << line;  // 2 blocks x 300 throws
+  const double v = std::stod(m[2].str());
+  EXPECT_GT(v, 0.0) << line;
+  if (m[3].str() == "ms")
+    EXPECT_LT(v, 1000.0) << line;
+  else
+    EXPECT_GE(v, 1.0) << line;
+  std::string digits;
+  for (char c : m[2].str())
+    if (c != '.' && !(digits.empty() && c == '0')) digits += c;
+  EXPECT_EQ(digits.size(), 3u) << line;  // significant digits
 }
 
 TEST_F(Cli, OptionsOverrideTheScenario) {

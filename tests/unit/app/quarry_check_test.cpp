@@ -18,11 +18,16 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <regex>
+#include <vector>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 
 #include "support/cli_fixture.hpp"
 #include "support/tools.hpp"
+#include "support/workbook_reader.hpp"
+#include "pierre/io/report_template.hpp"
 
 namespace {
 
@@ -147,6 +152,71 @@ TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
   EXPECT_EQ(check(summary(out2), "North", "zone.crusher")["status"], "FAIL");
 }
 
+// `check --quiet` prints the quarry table and the check lines only, starting with the table (it
+// started with an empty line, meant to follow the run's table).
+TEST_F(QuarryCli, QuietOutputStartsWithContent) {
+  const Result r = pierre("check " + kData + "pass.toml --out '" + (dir_ / "out").string() + "' --quiet");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  ASSERT_FALSE(r.out.empty());
+  EXPECT_NE(r.out.front(), '\n') << r.out;
+  EXPECT_EQ(r.out.find("\n\n\n"), std::string::npos) << r.out;
+}
+
+// The "Average /H" lines are means of the rows' ratios: under the n column (counts of blocks)
+// they printed the number of rows averaged. Now n is blank, and a note says why, and why P99 is.
+TEST_F(QuarryCli, TheAverageLineHasNoCountOfItsOwn) {
+  const Result r = pierre("check " + kData + "pass.toml --out '" + (dir_ / "out").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  std::istringstream in(r.out);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  auto at = [&](const std::string& start) {
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (lines[i].rfind(start, 0) == 0) return i;
+    return lines.size();
+  };
+  const std::size_t head = at("row "), avg = at("Average /H ");
+  ASSERT_LT(head, lines.size()) << r.out;
+  ASSERT_LT(avg, lines.size()) << r.out;
+  // The n column: the header's "n", right-aligned; the average line has nothing under it.
+  // (from the end of the label to the end of the header's "n").
+  const std::size_t n_end = lines[head].find(" n ") + 2, n_begin = std::string("Average /H").size();
+  ASSERT_LT(n_end, lines[avg].size());
+  EXPECT_EQ(lines[avg].substr(n_begin, n_end - n_begin).find_first_not_of(' '), std::string::npos)
+      << "\n" << lines[head] << "\n" << lines[avg];
+  // ... and a line after the table explains the blank n and the blank P99.
+  const std::size_t note = at("Average /H:");
+  ASSERT_LT(note, lines.size()) << r.out;
+  EXPECT_GT(note, avg);
+  std::string text = lines[note] + (note + 1 < lines.size() ? lines[note + 1] : "");
+  EXPECT_NE(text.find("P99"), std::string::npos) << text;
+  EXPECT_NE(text.find(" n "), std::string::npos) << text;
+  const auto j = summary(dir_ / "out");
+  EXPECT_NE(lines[note].find(std::to_string(j["quarry_average"]["rows"].get<int>()) + " rows"),
+            std::string::npos)
+      << lines[note];
+}
+
+// sample.size of a quarry row gives, like a barrier's, the throws per block and source it asks
+// for: the throws of the run times (half-width / tolerance)², as the trajectories.
+TEST_F(QuarryCli, SampleSizeSaysTheThrowsNeeded) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check " + kData + "pass.toml --out '" + out.string() + "' --throws 20 -q");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  const auto j = summary(out);
+  const auto& l = check(j, "North", "sample.size");
+  ASSERT_EQ(l["status"], "WARN") << l << " (the test needs a sample too small)";
+  const std::string reason = l["reason"].get<std::string>();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(reason, m, std::regex(R"(about (\d+) trajectories would be needed \((\d+) run\), i\.e\. throws = (\d+) per block and source)")))
+      << reason;
+  const double factor = std::pow(l["value"].get<double>() / l["limit"].get<double>(), 2);
+  EXPECT_EQ(std::stoull(m[2].str()), 40u);  // 2 blocks x 20 throws
+  EXPECT_NEAR(std::stod(m[1].str()), std::ceil(40 * factor), 1) << reason;
+  EXPECT_NEAR(std::stod(m[3].str()), std::ceil(20 * factor), 1) << reason;
+  EXPECT_NE(r.out.find(reason), std::string::npos) << r.out;  // printed under the table
+}
+
 // A toe given far out on the floor, past where every block stops: no block reaches the floor,
 // so there is no ID and no first-impact zone. The console says "none", not "[0, -] m", and
 // "ID_gov -", not "- the profile".
@@ -236,6 +306,64 @@ TEST_F(QuarryCli, SeedOptionMovesEverySectionWithoutItsOwnSeed) {
   EXPECT_EQ(j["quarries"][0]["sections"][0]["seed"], 500);
   EXPECT_EQ(j["quarries"][1]["sections"][0]["seed"], 501);
   EXPECT_EQ(j["quarries"][0]["thrown"], 40);
+}
+
+// The report's Inputs sheet of a quarry scenario: a table of the sections' inputs (the work
+// areas and their distances, the bench width, the rule set) and no "Observation lines" heading
+// over an empty table (a quarry scenario has no observation lines).
+TEST_F(QuarryCli, TheInputsSheetListsTheSectionsAndNoEmptyLineTable) {
+  PIERRE_NEED_PROGRAM("soffice");
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(pierre("run " + kData + "pass.toml --out '" + out.string() + "' --throws 5 -q").code, 0);
+  const auto e = pierre::test::export_sheets(out / "report.xlsx", dir_);
+  ASSERT_EQ(e.exec.status, 0) << e.exec.output;
+  ASSERT_TRUE(e.sheets.count("Inputs"));
+  const pierre::test::Sheet& s = e.sheets.at("Inputs");
+  const pierre::io::ReportTemplate tpl = pierre::io::load_report_template(PIERRE_SOURCE_DIR "/templates/report.toml");
+  EXPECT_FALSE(pierre::test::find_row(s, 0, tpl.get("titles", "observation_lines")))
+      << "an Observation lines table in a quarry scenario";
+  const auto title = pierre::test::find_row(s, 0, tpl.get("titles", "quarry_inputs"));
+  ASSERT_TRUE(title);
+  const auto j = summary(out);
+  for (const auto& row : j["quarries"])
+    for (const auto& sec : row["sections"]) {
+      const std::string name = sec["name"].get<std::string>();
+      const auto k = pierre::test::find_row(s, 0, name, *title);
+      ASSERT_TRUE(k) << name;
+      EXPECT_EQ(s[*k][2].text, row["rules"]["name"].get<std::string>()) << name;
+      for (const auto& w : sec["work_areas"]) {
+        const std::string areas = s[*k][10].text;
+        EXPECT_NE(areas.find(w["name"].get<std::string>()), std::string::npos) << areas;
+      }
+    }
+  const auto north = pierre::test::find_row(s, 0, "North", *title);
+  ASSERT_TRUE(north);
+  const auto bench = pierre::test::number(s, *north, 9);
+  ASSERT_TRUE(bench) << pierre::test::dump(s, *north);
+  EXPECT_EQ(*bench, 40.0);  // bench_width of pass.toml
+  EXPECT_NE(s[*north][10].text.find("crusher 65 m"), std::string::npos) << s[*north][10].text;
+}
+
+// The README's example of `pierre check` on examples/quarry-austria names every line that FAILs
+// (it named one of three).
+TEST_F(QuarryCli, TheReadmeNamesEveryFailOfTheAustrianExample) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("check '" + kExample + "' --out '" + out.string() + "' -q");
+  ASSERT_EQ(r.code, 1) << r.err;
+  const std::string readme = slurp(PIERRE_SOURCE_DIR "/README.md");
+  const auto begin = readme.find("pierre check examples/quarry-austria/scenario.toml");
+  ASSERT_NE(begin, std::string::npos);
+  const std::string paragraph = readme.substr(begin, readme.find("\n\n", begin) - begin);
+  int fails = 0;
+  const auto j = summary(out);
+  for (const auto& c : j["checks"]) {
+    if (c["status"] != "FAIL") continue;
+    ++fails;
+    for (const char* key : {"subject", "id"})
+      EXPECT_NE(paragraph.find(c[key].get<std::string>()), std::string::npos)
+          << c[key] << " of a FAIL line is not in the README's paragraph:\n" << paragraph;
+  }
+  EXPECT_GT(fails, 0);
 }
 
 TEST_F(QuarryCli, TheAustrianExampleValidatesAndRuns) {

@@ -172,9 +172,14 @@ TEST(BarrierCheckLines, ExceedancePassFailAndNotApplicable) {
   d.spec.acceptable_height_exceedance = 0.05;   // P(h > h_i) = 0.02
   auto lines = design::barrier_check_lines(d, rules());
   EXPECT_EQ(line(lines, "exceedance.energy").status, CheckStatus::pass);
-  EXPECT_DOUBLE_EQ(line(lines, "exceedance.energy").value, 0.001);  // the MEL row, not the SEL one
+  // In %, as the reasons word them: P = 0.001 is 0.1 %.
+  EXPECT_DOUBLE_EQ(line(lines, "exceedance.energy").value, 100 * 0.001);  // the MEL row, not the SEL one
+  EXPECT_DOUBLE_EQ(line(lines, "exceedance.energy").limit, 100 * 0.002);
+  EXPECT_EQ(line(lines, "exceedance.energy").unit, "%");
   EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::pass);
-  EXPECT_DOUBLE_EQ(line(lines, "exceedance.height").value, 0.02);
+  EXPECT_DOUBLE_EQ(line(lines, "exceedance.height").value, 100 * 0.02);
+  EXPECT_DOUBLE_EQ(line(lines, "exceedance.height").limit, 100 * 0.05);
+  EXPECT_EQ(line(lines, "exceedance.height").unit, "%");
   d.spec.acceptable_energy_exceedance = 0.0005;
   d.spec.acceptable_height_exceedance = 0.01;
   lines = design::barrier_check_lines(d, rules());

@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 
+#include "pierre/design/number_text.hpp"
 #include "support/builders.hpp"
 
 namespace pierre::design {
@@ -253,6 +254,42 @@ TEST(QuarryZones, SampleSize) {
   EXPECT_EQ(b->status, CheckStatus::pass) << b->reason;
   EXPECT_LT(b->value, 5);
   ASSERT_TRUE(big.design->rows[0].rd_interval);
+}
+
+// A row whose RD95 is known too loosely says, as a barrier's sample.size does, how many
+// trajectories and how many throws per block and source would do: n · (half-width / tolerance)²
+// and throws · (half-width / tolerance)². Without the throws (0: unknown) it names none; a group
+// of sections run with one number of throws names that one.
+TEST(QuarryZones, SampleSizeNamesTheThrowsNeeded) {
+  auto s = section("Loose", lognormal_runouts(200, 20, 4));
+  s.throws = 8;  // e.g. 25 blocks x 8 throws
+  const auto out = design_quarry({s}, 1);
+  ASSERT_TRUE(out.design);
+  const CheckLine* l = find(*out.design, "Loose", "sample.size");
+  ASSERT_TRUE(l);
+  ASSERT_EQ(l->status, CheckStatus::warn) << l->reason << " (the test needs a loose RD95)";
+  const double factor = (l->value / l->limit) * (l->value / l->limit);
+  const SampleNeeded needed = sample_needed(200, 8, l->value / 100, l->limit / 100);
+  EXPECT_DOUBLE_EQ(needed.throws, std::ceil(8 * factor));
+  EXPECT_DOUBLE_EQ(needed.trajectories, std::ceil(200 * factor));
+  EXPECT_NE(l->reason.find("about " + number_text(needed.trajectories, 9) + " trajectories"),
+            std::string::npos)
+      << l->reason;
+  EXPECT_NE(l->reason.find(throws_needed_text(needed)), std::string::npos) << l->reason;
+  EXPECT_NE(l->reason.find("throws = " + number_text(std::ceil(8 * factor), 9) + " per block and source"),
+            std::string::npos)
+      << l->reason;
+
+  s.throws = 0;  // not known: no throws named
+  const auto unknown = design_quarry({s}, 1);
+  EXPECT_EQ(find(*unknown.design, "Loose", "sample.size")->reason.find("throws ="), std::string::npos);
+
+  auto a = section("Loose A", lognormal_runouts(100, 20, 5)), b = section("Loose B", lognormal_runouts(100, 20, 6));
+  a.spec.group = b.spec.group = "Loose";
+  a.throws = b.throws = 4;
+  const auto pooled = design_quarry({a, b}, 1);
+  ASSERT_TRUE(pooled.design);
+  EXPECT_EQ(pooled.design->rows[0].throws, 4u);
 }
 
 // One block: a bootstrap of one value has no spread, so no interval (it said "RD95 known to

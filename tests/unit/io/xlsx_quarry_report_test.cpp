@@ -12,6 +12,7 @@
 
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <map>
@@ -45,6 +46,13 @@ std::optional<std::size_t> find_row2(const Sheet& s, const std::string& a, const
   for (std::size_t r = from; r < s.size(); ++r)
     if (s[r].size() > 1 && s[r][0].text == a && s[r][1].text == b) return r;
   return std::nullopt;
+}
+
+// A number as a text in the report writes it: %.4g.
+std::string format_g(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
 }
 
 void expect_number(const Sheet& s, std::size_t r, std::size_t c, double want) {
@@ -371,6 +379,49 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     EXPECT_EQ(cell(s, *office, 4)->text, "FAIL");
     expect_number(s, *office, 1, 8);
   }
+  // Inputs: a row per section with its inputs as used (rule set, crest and toe given or found,
+  // H, bench width, work areas with their distances, the probabilities of exceedance asked for);
+  // before, they were only in the echoed scenario text.
+  {
+    const Sheet& s = sheets["Inputs"];
+    const auto title = find_row(s, 0, tpl.get("titles", "quarry_inputs"));
+    ASSERT_TRUE(title) << "no table of the quarry sections' inputs";
+    for (const auto& sec : q.sections) {
+      SCOPED_TRACE(sec.spec.name);
+      const auto k = find_row(s, 0, sec.spec.name, *title);
+      ASSERT_TRUE(k);
+      EXPECT_EQ(cell(s, *k, 1)->text, sec.spec.group.empty() ? tpl.get("labels", "none") : sec.spec.group);
+      EXPECT_EQ(cell(s, *k, 2)->text, sec.spec.rules);
+      expect_number(s, *k, 3, sec.geometry.crest.x);
+      EXPECT_EQ(cell(s, *k, 4)->text, design::to_string(sec.geometry.crest_origin));
+      expect_number(s, *k, 5, sec.geometry.toe.x);
+      EXPECT_EQ(cell(s, *k, 6)->text, design::to_string(sec.geometry.toe_origin));
+      expect_number(s, *k, 7, sec.geometry.height);
+      EXPECT_EQ(cell(s, *k, 8)->text, design::to_string(sec.geometry.height_origin));
+      if (sec.spec.bench_width)
+        expect_number(s, *k, 9, *sec.spec.bench_width);
+      const std::string areas = cell(s, *k, 10)->text;
+      for (const auto& w : sec.spec.work_areas) {
+        EXPECT_NE(areas.find(w.name), std::string::npos) << areas;
+        EXPECT_NE(areas.find(format_g(w.distance) + " m"), std::string::npos) << areas;
+      }
+      const std::string asked = cell(s, *k, 11)->text;
+      ASSERT_FALSE(sec.spec.exceedance.empty());
+      for (double p : sec.spec.exceedance)
+        EXPECT_NE(asked.find(format_g(100 * p) + " %"), std::string::npos) << asked;
+    }
+    ASSERT_FALSE(q.sections[0].spec.work_areas.empty());  // the test needs some
+  }
+  // Profile: a quarry's sections are drawn on their rows' sheets; the title says what the sheet
+  // holds, not a slope scenario's "observation lines and barriers" that a quarry has none of.
+  {
+    const Sheet& s = sheets["Profile"];
+    ASSERT_FALSE(s.empty());
+    const std::string title = cell(s, 0, 0)->text;
+    EXPECT_FALSE(title.empty());
+    EXPECT_EQ(title.find("observation lines"), std::string::npos) << title;
+    EXPECT_EQ(title.find("barriers"), std::string::npos) << title;
+  }
   // Crossings: a quarry scenario has no observation lines, and the sheet says why it is empty
   // (it said "All 0 rows").
   {
@@ -401,6 +452,16 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     const auto avg_obs = find_row2(s, "Average (normalized by H)", "Observed");
     ASSERT_TRUE(avg_obs);
     expect_number(s, *avg_obs, 7, q.average.obs_rd95_h);
+    // The average rows are means of the rows' ratios: no number thrown of their own (column 3
+    // blank), and the line under them says so, naming how many rows were averaged.
+    for (std::size_t k : {*avg, *avg_obs}) {
+      const Field* thrown = cell(s, k, 3);
+      EXPECT_TRUE(!thrown || thrown->text.empty()) << dump(s, k);
+    }
+    const std::size_t note_row = std::max(*avg, *avg_obs) + 1;
+    const Field* note = cell(s, note_row, 0);
+    ASSERT_TRUE(note && !note->text.empty()) << dump(s, note_row);
+    EXPECT_NE(note->text.find(std::to_string(q.average.rows)), std::string::npos) << note->text;
     const auto head = find_row(s, 0, "Subject");
     ASSERT_TRUE(head);
     for (const auto& l : q.checks) {

@@ -585,6 +585,9 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   // Requirements above class 7: the open-ended class 8, whose bounds are not a capacity.
   f->data.barriers.at(0).energy_class = design::EnergyClass{8, 1500, 4500, true};
   f->data.barriers.at(0).how["energy_class"] = "the smallest class of the table";
+  // A check line's probability of exceedance in % (unit "%"): 0.00217 %, not "0.00".
+  f->data.checks.push_back(
+      line("Screen A", "exceedance.energy", 100 * 2.17e-5, 0.1, "%", design::CheckStatus::pass));
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   // Every sheet, as shown.
@@ -617,11 +620,75 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
       declared = declared || c.text == "Screen A: class 8+, the smallest class of the table; the class is "
                                        "open-ended: the kit must declare MEL >= 1387 kJ and SEL >= 1067 kJ";
   EXPECT_TRUE(declared);
+  {
+    const auto ex_line = find_row(sum, 1, "exceedance.energy");
+    ASSERT_TRUE(ex_line);
+    const std::string shown = cell(sum, *ex_line, 3)->text;
+    EXPECT_NEAR(std::strtod(shown.c_str(), nullptr), 100 * 2.17e-5, 0.01 * 100 * 2.17e-5)
+        << dump(sum, *ex_line);
+    EXPECT_EQ(cell(sum, *ex_line, 5)->text, "%");
+  }
   const auto head = find_row(*bar, 0, "Probability");
   ASSERT_TRUE(head);
   EXPECT_EQ(cell(*bar, *head, 4)->text, "Simulated, empirical");
   const auto beyond = cell(*bar, *head, 5);
   EXPECT_TRUE(!beyond || beyond->text.empty()) << "an empty Observed column: " << beyond->text;
+}
+
+// Inputs, a barrier's inputs that the procedure resolved or defaulted: the design block's volume
+// and density by a rule (`largest`), D_f by default, MEL and SEL from the candidate's class. Each
+// shows the value used and where it comes from; they were blank, which a client cannot tell
+// from a missing input.
+TEST(XlsxReport, ResolvedBarrierInputsShowTheirValuesAndOrigins) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  design::BarrierDesign& b = f->data.barriers.at(0);
+  b.spec.design_block = design::DesignBlock{};  // largest, its own density
+  b.spec.free_board_diameter.reset();
+  ASSERT_TRUE(b.spec.candidate && b.spec.candidate->energy_class && !b.spec.candidate->mel_kJ &&
+              !b.spec.candidate->sel_kJ);
+  b.design_volume = 1.4375;
+  b.design_density = 2650;
+  b.free_board_diameter = 1.1875;
+  b.how["volume"] = "the largest block thrown";
+  b.how["density"] = "the largest block's";
+  b.how["free_board_diameter"] = "the mean equivalent diameter of the blocks thrown";
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  const auto tpl = io::load_report_template(kTemplate);
+  io::write_report(xlsx, f->data, tpl);
+  const auto [r, sheets] = export_sheets(xlsx, dir.path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  ASSERT_TRUE(sheets.count("Inputs")) << r.output;
+  const Sheet& in = sheets.at("Inputs");
+  // The barrier's column (1) of a row named by the template.
+  auto value = [&](std::string_view key) -> std::string {
+    const auto k = find_row(in, 0, tpl.get("headings.barrier_inputs", key));
+    if (!k) return "(no row " + std::string(key) + ")";
+    const Field* c = cell(in, *k, 1);
+    return c ? c->text : "";
+  };
+  // Not blank, the value used first, then where it comes from.
+  auto expect_resolved = [&](std::string_view key, double used, const std::string& origin) {
+    const std::string t = value(key);
+    SCOPED_TRACE(std::string(key) + ": " + t);
+    ASSERT_FALSE(t.empty());
+    char* end = nullptr;
+    const double v = std::strtod(t.c_str(), &end);
+    EXPECT_NEAR(v, used, 1e-3 * used);
+    EXPECT_NE(std::string_view(end).find(origin), std::string::npos);
+  };
+  expect_resolved("volume", b.design_volume, b.how["volume"]);
+  expect_resolved("density", b.design_density, b.how["density"]);
+  expect_resolved("free_board_diameter", b.free_board_diameter, b.how["free_board_diameter"]);
+  expect_resolved("free_board_diameter", b.free_board_diameter, "default");
+  const std::string cls = std::to_string(*b.spec.candidate->energy_class);
+  expect_resolved("mel", b.candidate_mel_kJ, "class " + cls);
+  expect_resolved("sel", b.candidate_sel_kJ, "class " + cls);
+  // A given input stays a number.
+  const auto height = find_row(in, 0, tpl.get("headings.barrier_inputs", "height"));
+  ASSERT_TRUE(height);
+  EXPECT_TRUE(number(in, *height, 1));
 }
 
 TEST(XlsxReport, LibreOfficePrintsToPdf) {
