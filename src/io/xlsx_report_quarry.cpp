@@ -60,7 +60,23 @@ Row Report::quarry_summary(lxw_worksheet* ws, Row r) {
       ++r;
     }
   }
-  return quarry_averages(ws, r);
+  r = quarry_averages(ws, r);
+  // Every section pooled (thesis Fig 6.5), when there is more than one row to pool.
+  if (q.rows.size() > 1) {
+    std::uint64_t thrown = 0;
+    for (const auto& row : q.rows) thrown += row.thrown;
+    const std::string& label = t_.get("labels", "quarry_all");
+    text(ws, r, 0, label, bold());
+    text(ws, r, 1, t_.get("labels", "calculated"), centred());
+    num(ws, r, 3, static_cast<double>(thrown), number("count", 1));
+    const auto &rd = q.all_rd_statistics, &id = q.all_id_statistics;
+    Col c = 6;
+    for (double v : {rd.p50_h, rd.p95_h, rd.max_h, id.p50_h, id.p95_h, id.max_h})
+      distance(ws, r, c++, v, hf);
+    ++r;
+    text(ws, r++, 0, t_.get("labels", "quarry_all_note"), note());
+  }
+  return r;
 }
 
 // The thesis's last rows: means over the rows of the per-row ratios, calculated and observed.
@@ -154,6 +170,16 @@ Row Report::quarry_overview(lxw_worksheet* ws, Row r, const design::QuarryRow& r
     for (const auto* s : secs) names += (names.empty() ? "" : ", ") + s->spec.name;
     label(t_.get("labels", "pooled"));
     text(ws, r++, 1, names);
+  }
+  if (row.duration.count > 0) {
+    label(t_.get("labels", "travel_time"));
+    auto sec = [](double v) { return fmt::format("{:.3g}", v); };
+    text(ws, r++, 1,
+         replace_all(replace_all(replace_all(replace_all(t_.get("labels", "travel_time_value"),
+                                                         "{p50}", sec(row.duration.p50)),
+                                             "{p95}", sec(row.duration.p95)),
+                                 "{max}", sec(row.duration.max)),
+                     "{count}", std::to_string(row.duration.count)));
   }
   for (const auto* s : secs)
     if (!s->spec.observed_source.empty()) {

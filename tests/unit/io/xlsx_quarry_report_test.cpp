@@ -334,6 +334,12 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
       EXPECT_EQ(find_row(s, 0, note).has_value(), warns) << note;
     }
     // The governing distances, / H and in m.
+    // The row's time of travel, from its trajectories (every one takes 4 s here).
+    const auto travel = find_row(s, 0, tpl.get("labels", "travel_time"));
+    ASSERT_TRUE(travel);
+    EXPECT_EQ(row.duration.count, row.thrown);
+    EXPECT_EQ(cell(s, *travel, 1)->text,
+              "P50 4, P95 4, max 4 over " + std::to_string(row.thrown) + " trajectories");
     const auto gov = find_row(s, 0, "RD_gov (danger zone)");
     ASSERT_TRUE(gov);
     expect_number(s, *gov, 1, row.rd_gov.value_h);
@@ -462,6 +468,20 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     const Field* note = cell(s, note_row, 0);
     ASSERT_TRUE(note && !note->text.empty()) << dump(s, note_row);
     EXPECT_NE(note->text.find(std::to_string(q.average.rows)), std::string::npos) << note->text;
+    // Every section pooled (thesis Fig 6.5): all blocks, each distance over its own H; no H
+    // and no zone of its own, and the note under it says why.
+    const auto all = find_row2(s, tpl.get("labels", "quarry_all"), "Calculated");
+    ASSERT_TRUE(all);
+    expect_number(s, *all, 3, static_cast<double>(q.rows[0].thrown + q.rows[1].thrown));
+    expect_number(s, *all, 6, q.all_rd_statistics.p50_h);
+    expect_number(s, *all, 7, q.all_rd_statistics.p95_h);
+    expect_number(s, *all, 11, q.all_id_statistics.max_h);
+    ASSERT_NE(q.all_rd_statistics.p95_h, q.rows[0].rd.p95_h);  // a pool, not a row
+    for (int c : {2, 4, 5}) {
+      const Field* blank = cell(s, *all, c);
+      EXPECT_TRUE(!blank || blank->text.empty()) << dump(s, *all);
+    }
+    EXPECT_EQ(cell(s, *all + 1, 0)->text, tpl.get("labels", "quarry_all_note"));
     const auto head = find_row(s, 0, "Subject");
     ASSERT_TRUE(head);
     for (const auto& l : q.checks) {
