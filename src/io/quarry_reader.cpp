@@ -243,9 +243,10 @@ std::string section_label(std::size_t index, const std::string& name) {
 }
 
 std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
-                                         const std::filesystem::path& rules_dir,
+                                         const RulesFolder& rules,
                                          const std::vector<model::Material>& materials,
                                          const sim::SimulationSettings& settings) {
+  const fs::path& rules_dir = rules.path;
   std::vector<QuarrySection> out;
   const TomlTable top(file, root, "", 0, {});
   const toml::array* a = top.array_of_tables("quarries");
@@ -278,9 +279,9 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
       // An error inside the rule file is reported there; only a file that is not there (or
       // cannot be read) is said at the scenario's rules key.
       if (e.field() != "file") throw;
-      q.fail("rules", fmt::format("a rule set in {} (e.g. \"quarry-thesis-2015\", "
-                                  "\"quarry-conservative\") or a path to a .toml file ({}: {})",
-                                  rules_dir.string(), e.file().string(), e.found()));
+      q.fail("rules", fmt::format("a rule set in {} or a path to a .toml file (e.g. "
+                                  "\"quarry-thesis-2015\", \"quarry-conservative\"; {}: {})",
+                                  rules.named(), e.file().string(), e.found()));
     }
     s.rules_file = is_path(rules_arg) ? fs::path(rules_arg) : rules_dir / (rules_arg + ".toml");
 

@@ -18,6 +18,7 @@
 #include "pierre/design/quarry_zones.hpp"
 #include "pierre/io/block_group.hpp"
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/rules_folder.hpp"
 #include "pierre/model/material.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -54,7 +55,7 @@ design::QuarryRuleSet load_quarry_rules(const std::string& name_or_path,
 // relative paths); `materials` the scenario's [materials] (indices shared by every section);
 // `settings` its [simulation] (each section gets a copy with its own seed and floor_segment).
 std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
-                                         const std::filesystem::path& rules_dir,
+                                         const RulesFolder& rules,
                                          const std::vector<model::Material>& materials,
                                          const sim::SimulationSettings& settings);
 
