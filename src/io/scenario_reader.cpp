@@ -580,9 +580,10 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
     if (out.quarries.empty())
       throw InputError(scenario_file, line_of(*top.find("quarries")), "quarries", "no section",
                        "at least one [[quarries]] section");
+    for (const auto& q : out.quarries) out.notes.insert(out.notes.end(), q.notes.begin(), q.notes.end());
     return out;
   }
-  out.scenario.profile = detail::read_profile(top, out.scenario.materials, "");
+  out.scenario.profile = detail::read_profile(top, out.scenario.materials, "", out.notes);
   detail::read_blocks(top, out.block_groups, out.scenario.blocks, "");
   detail::read_sources(top, out.scenario, "");
   {

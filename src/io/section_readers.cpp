@@ -95,10 +95,36 @@ std::vector<Vertex> read_profile_csv(const fs::path& file) {
   return out;
 }
 
+// Overhangs are valid (the air is on the left of the walking direction: a segment that goes
+// back in x has the air below it), but one x typed out of order makes one too, silently: 30
+// for 40 and 20 for 70 read as a ledge, and every result changes. One note per run of segments
+// going back, at the first vertex behind its predecessor.
+void note_runs_back_in_x(const std::vector<Vertex>& vs, bool from_csv, std::vector<InputNote>& notes) {
+  auto where = [&](const Vertex& v) {
+    return from_csv ? fmt::format("line {}", v.line) : v.field;
+  };
+  for (std::size_t i = 0; i + 1 < vs.size(); ++i) {
+    if (!(vs[i + 1].p.x < vs[i].p.x)) continue;
+    std::size_t last = i;  // the run: segments i..last
+    while (last + 2 < vs.size() && vs[last + 2].p.x < vs[last + 1].p.x) ++last;
+    const Vertex &from = vs[i], &to = vs[last + 1], &behind = vs[i + 1];
+    const bool one = last == i;
+    notes.push_back(
+        {behind.file, behind.line, from_csv ? std::string("x") : behind.field,
+         fmt::format("profile segment{} {} ({} → {}, x {} → {} m) run{} back in x: {} read as an "
+                     "overhang (the air below {}); check the x values if the slope has none",
+                     one ? "" : "s",
+                     one ? std::to_string(i) : fmt::format("{}-{}", i, last), where(from),
+                     where(to), from.p.x, to.p.x, one ? "s" : "", one ? "it is" : "they are",
+                     one ? "it" : "them")});
+    i = last;
+  }
+}
+
 }  // namespace
 
 geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Material>& mats,
-                               std::string_view table_path) {
+                               std::string_view table_path, std::vector<InputNote>& notes) {
   const auto prof = top.subtable("profile", {"file", "points"});
   if (!prof)
     top.missing("profile", fmt::format("a [{}] table with file = \"...\" or points = [...]",
@@ -174,6 +200,7 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
         "the air above most of the ground: the air is on the left of the walking direction, so "
         "list the vertices from the source end of a slope that descends towards +x (mirror the "
         "x coordinates of one that descends towards -x)");
+  note_runs_back_in_x(vs, has_file, notes);
   return std::move(*profile);
 }
 

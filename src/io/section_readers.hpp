@@ -12,6 +12,7 @@
 
 #include "pierre/geometry/profile.hpp"
 #include "pierre/io/block_group.hpp"
+#include "pierre/io/input_error.hpp"
 #include "pierre/model/block.hpp"
 #include "pierre/model/material.hpp"
 #include "pierre/sim/scenario.hpp"
@@ -25,9 +26,10 @@ namespace pierre::io::detail {
 // used in messages: "a [quarries.profile] table".
 
 // parent.profile: { file = CSV } or { points = [[x, z, "material"], …] }; material names from
-// `materials`.
+// `materials`. A run of segments that goes back in x (an overhang, or an x typed out of order)
+// adds a note to `notes`, at the first vertex that lies behind its predecessor.
 geometry::Profile read_profile(const TomlTable& parent, const std::vector<model::Material>& materials,
-                               std::string_view table_path);
+                               std::string_view table_path, std::vector<InputNote>& notes);
 
 // parent.blocks: the block rows as written (appended to `groups`) and the blocks they expand
 // to (appended to `blocks`, a row of count n giving ids "<id>.1" … "<id>.n").

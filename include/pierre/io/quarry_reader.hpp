@@ -35,6 +35,7 @@ struct QuarrySection {
   std::vector<BlockGroup> block_groups;  // the block rows as written
   std::filesystem::path rules_file;
   bool seed_given = false;  // `seed` was written (else [simulation].seed + the section's index)
+  std::vector<InputNote> notes;  // on its profile and sources (LoadedScenario::notes holds them too)
 };
 
 // The seed of section `index` that gives none: the run's seed + index, wrapped into 0 to 2^63 − 1

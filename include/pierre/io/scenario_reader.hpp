@@ -30,6 +30,9 @@ struct LoadedScenario {
   // What the command line set instead of the file (--seed, --throws), each with the file's
   // value: the echoed text no longer says what ran, so summary.json and the report say it.
   std::vector<std::string> overrides;
+  // Notes on the input, in reading order (a profile that runs back in x, a source far above
+  // the ground; those of quarry sections too): printed by `run` and `validate`, never fatal.
+  std::vector<InputNote> notes;
 
   // [[barriers]] (docs/scenario-format.md), in file order; index i of every vector below is
   // barrier i. The rule set, its class table and the observed data are loaded and checked

@@ -217,6 +217,32 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   EXPECT_TRUE(pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o")).out.empty());
 }
 
+// The reader's notes (a profile x out of order read as an overhang): validate and run print
+// them with file, line and field and still exit 0; under --quiet run says them on stderr,
+// where a pipeline's log keeps them.
+TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
+  std::ofstream(dir_ / "p.csv") << "x,z,material\n0,130,t\n30,122,t\n20,106,t\n150,40,t\n200,38,\n";
+  std::ofstream(dir_ / "s.toml") << one_block_scenario(
+      {"typos", 2, "file = \"p.csv\"", "t", "preset = \"talus\"", 1000,
+       "name = \"crest\"\nx = 1.0\nz = 131.0"});
+  const std::string overhang =
+      "Note: " + (dir_ / "p.csv").string() +
+      ":4: x: profile segment 1 (line 3 → line 4, x 30 → 20 m) runs back in x: it is read as an "
+      "overhang (the air below it); check the x values if the slope has none\n";
+  const Result v = pierre("validate " + q(dir_ / "s.toml"));
+  EXPECT_EQ(v.code, 0) << v.err;
+  EXPECT_NE(v.out.find(overhang), std::string::npos) << v.out;
+  const Result r = pierre("run " + q(dir_ / "s.toml") + " --out " + q(dir_ / "o"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(overhang), std::string::npos) << r.out;
+  const Result quiet = pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o"));
+  EXPECT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+  EXPECT_NE(quiet.err.find(overhang), std::string::npos) << quiet.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "o" / "summary.json"));
+
+}
+
 // A material that no segment uses is noted (it changes nothing; often one left over); the used
 // one is not.
 TEST_F(Cli, AMaterialNoSegmentUsesIsNoted) {
