@@ -585,7 +585,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
   }
   out.scenario.profile = detail::read_profile(top, out.scenario.materials, "", out.notes);
   detail::read_blocks(top, out.block_groups, out.scenario.blocks, "");
-  detail::read_sources(top, out.scenario, "");
+  detail::read_sources(top, out.scenario, "", out.notes);
   {
     const auto s = top.subtable("simulation", {});
     const toml::node& throws = *s->find("throws");

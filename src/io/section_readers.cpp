@@ -432,7 +432,13 @@ std::string extent(const geometry::Profile& p) {
   return fmt::format("inside the profile's horizontal extent [{}, {}] m", p.x_min(), p.x_max());
 }
 
-void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view table_path) {
+void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view table_path,
+                  std::vector<InputNote>& notes) {
+  double z_lo = sc.profile.vertices().front().z, z_hi = z_lo;
+  for (const auto& v : sc.profile.vertices()) {
+    z_lo = std::min(z_lo, v.z);
+    z_hi = std::max(z_hi, v.z);
+  }
   const toml::array* a = top.array_of_tables("sources");
   if (!a)
     top.missing("sources", fmt::format("at least one [[{}]] table with x and z",
@@ -468,6 +474,26 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     t.check("vz", std::abs(s.velocity.z) <= ModelDefaults::max_source_speed, speed);
     t.check("omega", std::abs(s.omega) <= ModelDefaults::max_source_spin,
             fmt::format("a spin from −{0:g} to {0:g} rad/s", ModelDefaults::max_source_spin));
+    // In the air (not inside the rock, where it is placed on the ground over it): how far it
+    // falls to the ground below.
+    const geometry::Vec2 p = s.position;
+    const auto above = sc.profile.line_above(p.x, p.z);
+    const auto below = sc.profile.ground_below(p.x, p.z);
+    if (!(above && above->ground) && below) {
+      const double drop = p.z - below->z;
+      if (drop > kFarAboveGround && drop > z_hi - z_lo)
+        notes.push_back(
+            {top.file(), line_of(*t.find("z")), t.field("z"),
+             fmt::format("source \"{}\" is {:.0f} m above the ground under it (z = {} m; the "
+                         "ground at x = {} m is at {:.1f} m), more than {:g} m and more than the "
+                         "profile's whole height ({:.1f} m, z from {:.1f} to {:.1f} m): its blocks "
+                         "fall freely that far before their first impact, which then governs the "
+                         "results. Check that z is an elevation of the same kind as the "
+                         "profile's (local, or absolute such as m a.s.l.); a source on or below "
+                         "the ground starts on it",
+                         s.name, drop, p.z, p.x, below->z, kFarAboveGround, z_hi - z_lo, z_lo,
+                         z_hi)});
+    }
     sc.sources.push_back(std::move(s));
   }
 }

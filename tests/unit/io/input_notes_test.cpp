@@ -92,4 +92,78 @@ TEST(InputNotes, InlinePointsAreNamedByTheirField) {
                          "(the air below it); check the x values if the slope has none");
 }
 
+// The walkthrough's source 4 880 m above the ground (z = 5000 over a profile at about 120 m).
+TEST(InputNotes, ASourceFarAboveTheGroundIsNoted) {
+  TempDir dir;
+  const fs::path s = dir.path() / "s.toml";
+  const auto notes = notes_of(dir, base_with(22, "z = 5000.0"));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].file, s);
+  EXPECT_EQ(notes[0].line, 22);
+  EXPECT_EQ(notes[0].field, "sources[0].z");
+  EXPECT_EQ(notes[0].message(),
+            s.string() +
+                ":22: sources[0].z: source \"S1\" is 4991 m above the ground under it (z = 5000 m; "
+                "the ground at x = 1 m is at 9.0 m), more than 100 m and more than the profile's "
+                "whole height (10.0 m, z from 0.0 to 10.0 m): its blocks fall freely that far "
+                "before their first impact, which then governs the results. Check that z is an "
+                "elevation of the same kind as the profile's (local, or absolute such as m "
+                "a.s.l.); a source on or below the ground starts on it");
+}
+
+// The threshold: more than 100 m and more than the profile's whole height. A drop from the
+// lip of a high face onto the ground far below (less than the section's height) is a release
+// from the slope drawn; a source below the ground (placed on it) says nothing either.
+TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
+  TempDir dir;
+  EXPECT_TRUE(notes_of(dir, base_with(22, "z = 108.0")).empty());     // 99 m above the ground
+  EXPECT_EQ(notes_of(dir, base_with(22, "z = 110.0")).size(), 1u);    // 101 m
+  EXPECT_TRUE(notes_of(dir, base_with(22, "z = -5000.0")).empty());   // below: placed on it
+  const std::string tall = "points = [[0.0, 400.0, \"rock\"], [10.0, 0.0, \"rock\"], [200.0, 0.0, \"\"]]";
+  auto scenario = [&](const std::string& source) {
+    auto lines = pierre::test::base_lines();
+    lines.at(8) = tall;
+    lines.at(20) = source;
+    lines.at(21) = "z = " + std::string(source == "x = 100.0" ? "350.0" : "420.0");
+    std::string text;
+    for (const auto& l : lines) text += l + "\n";
+    return text;
+  };
+  EXPECT_TRUE(notes_of(dir, scenario("x = 100.0")).empty());  // 350 m: less than 400 m
+  const auto n = notes_of(dir, scenario("x = 150.0"));         // 420 m: more
+  ASSERT_EQ(n.size(), 1u);
+  EXPECT_NE(n[0].text.find("is 420 m above the ground under it"), std::string::npos) << n[0].text;
+  EXPECT_NE(n[0].text.find("whole height (400.0 m, z from 0.0 to 400.0 m)"), std::string::npos)
+      << n[0].text;
+}
+
+// A quarry section's profile and sources are read by the same readers: its notes are the
+// scenario's, named by the section's field.
+TEST(InputNotes, AQuarrySectionsNotesAreTheScenarios) {
+  TempDir dir;
+  const std::string text = R"([scenario]
+name = "pit"
+
+[simulation]
+seed = 40
+throws = 3
+
+[materials.face]
+preset = "quarry-face"
+
+[[quarries]]
+name = "East"
+profile = { points = [[0.0, 20.0, "face"], [10.0, 20.0, "face"], [20.0, 0.0, "face"], [90.0, 0.0, ""]] }
+blocks = { table = [{ id = "A", mass = 500.0 }] }
+sources = [{ x = 10.3, z = 500.0 }]
+)";
+  const auto l = load_scenario(dir.write("s.toml", text), kRules);
+  ASSERT_EQ(l.notes.size(), 1u);
+  EXPECT_EQ(l.notes[0].line, 15);
+  EXPECT_EQ(l.notes[0].field, "quarries[0].sources[0].z");
+  ASSERT_EQ(l.quarries.size(), 1u);
+  ASSERT_EQ(l.quarries[0].notes.size(), 1u);
+  EXPECT_EQ(l.quarries[0].notes[0].message(), l.notes[0].message());
+}
+
 }  // namespace
