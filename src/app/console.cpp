@@ -142,6 +142,10 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
   for (const auto& f : files) fmt::print(out, "  {}\n", f.string());
 }
 
+void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes) {
+  for (const auto& n : notes) fmt::print(out, "Note: {}\n", n.message());
+}
+
 void print_source_notes(std::FILE* out, const sim::Scenario& scenario) {
   for (std::size_t i : sim::sources_against_main_direction(scenario)) {
     const sim::Source& src = scenario.sources[i];

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pierre/design/run_statistics.hpp"
+#include "pierre/io/input_error.hpp"
 #include "pierre/io/result_writer.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -35,6 +36,10 @@ class ProgressBar {
   bool drawn_ = false;
   clock::time_point start_, last_;
 };
+
+// The reader's notes on the input (io::LoadedScenario::notes), one line each: "Note: <file>:<line>:
+// <field>: <text>".
+void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes);
 
 // A note for each source whose ground falls towards the profile's first vertex (its blocks
 // travel against the main direction, in which observation lines count first crossings), and

@@ -18,7 +18,15 @@ namespace fs = std::filesystem;
 struct DataFolder {
   fs::path path;                      // the folder to use
   std::vector<std::string> searched;  // every place looked at, in order, for error messages
+  bool from_env = false;              // path is the environment variable's
+  bool found = false;                 // path holds the probe file (or came from the variable)
 };
+
+std::string listed(const std::vector<std::string>& places) {
+  std::string s;
+  for (const auto& p : places) s += (s.empty() ? "" : ", ") + p;
+  return s;
+}
 
 // A folder found under the working folder, named relative to it: the report records the rules
 // files' paths, and a firm whose pipeline runs each job in a fresh workspace (a different
@@ -38,6 +46,7 @@ DataFolder find(const char* name, const char* env_var, const char* probe) {
   if (const char* env = std::getenv(env_var); env && *env) {
     f.path = env;
     f.searched.push_back(fmt::format("${} = {}", env_var, env));
+    f.from_env = f.found = true;
     return f;
   }
   f.searched.push_back(fmt::format("${} (not set)", env_var));
@@ -57,6 +66,7 @@ DataFolder find(const char* name, const char* env_var, const char* probe) {
     f.searched.push_back(c.string());
     if (fs::is_regular_file(c / probe, ec)) {
       f.path = as_shown(c);
+      f.found = true;
       return f;
     }
   }
@@ -66,9 +76,14 @@ DataFolder find(const char* name, const char* env_var, const char* probe) {
 
 }  // namespace
 
-fs::path rules_folder(const std::string& option) {
-  if (!option.empty()) return option;
-  return find("rules", "PIERRE_RULES", "materials.toml").path;
+io::RulesFolder rules_folder(const std::string& option) {
+  if (!option.empty()) return {option, "the rules folder given by --rules"};
+  const DataFolder f = find("rules", "PIERRE_RULES", "materials.toml");
+  if (f.from_env) return {f.path, "the rules folder given by $PIERRE_RULES"};
+  if (f.found) return {f.path};
+  return {f.path, fmt::format("no rules folder holds materials.toml: looked in {} (give --rules "
+                              "or set PIERRE_RULES to the folder that holds it)",
+                              listed(f.searched))};
 }
 
 io::ReportTemplate load_report_layout(std::FILE* notes) {
@@ -76,12 +91,10 @@ io::ReportTemplate load_report_layout(std::FILE* notes) {
   const fs::path file = f.path / "report.toml";
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) {
-    std::string places;
-    for (const auto& s : f.searched) places += (places.empty() ? "" : ", ") + s;
     throw io::InputError(file, 0, "file", "no such file",
                          fmt::format("the report layout report.toml in a templates folder; looked "
                                      "in {} (set PIERRE_TEMPLATES to the folder that holds it)",
-                                     places));
+                                     listed(f.searched)));
   }
   io::ReportTemplate layout = io::load_report_template(file);
   // What a firm's copy lacks (the built-in layout gives it) or holds in vain (an earlier

@@ -8,14 +8,17 @@
 #include <string>
 
 #include "pierre/io/report_template.hpp"
+#include "pierre/io/rules_folder.hpp"
 
 namespace pierre::app {
 
 // The rules folder: `option` (--rules) when given; else $PIERRE_RULES when set; else the first
 // of <executable>/../rules, <executable>/../share/pierre/rules, ./rules and the source tree's
 // rules/ (when built from source) that holds materials.toml (the last when none does). A folder
-// found under the working folder is named relative to it (the report records the paths).
-std::filesystem::path rules_folder(const std::string& option);
+// found under the working folder is named relative to it (the report records the paths). Its
+// `how` says which it was (--rules, $PIERRE_RULES, or the places searched when none held
+// materials.toml) for the messages about a file it lacks.
+io::RulesFolder rules_folder(const std::string& option);
 
 // The report layout, templates/report.toml, with templates/ looked for the same way
 // ($PIERRE_TEMPLATES, then the same places). Read before anything is simulated, so that a

@@ -112,6 +112,9 @@ class RunCommand final : public Command {
     const auto throws =
         throws_opt_->count() ? std::optional<std::uint32_t>(throws_) : std::nullopt;
     loaded.overrides = command_line_overrides(loaded, seed, throws);
+    // Likely mistakes that do not stop the run (an x out of order read as an overhang, a source
+    // far above the ground): said even when quiet, on stderr, where a pipeline's log keeps them.
+    print_input_notes(quiet_ ? stderr : stdout, loaded.notes);
     if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
       QuarryRunOptions q;
       q.out = out_;

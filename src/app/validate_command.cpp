@@ -29,7 +29,11 @@ class ValidateCommand final : public Command {
     const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
     load_report_layout(stdout);  // `run` needs it too: a missing or broken one is said now
     (void)report_date();   // and the date SOURCE_DATE_EPOCH gives it
-    if (!l.quarries.empty()) return print_quarries(l);
+    if (!l.quarries.empty()) {
+      const int code = print_quarries(l);
+      print_input_notes(stdout, l.notes);
+      return code;
+    }
     const sim::Scenario& s = l.scenario;
     std::string mats;
     for (const auto& m : s.materials)
@@ -54,6 +58,7 @@ class ValidateCommand final : public Command {
                  l.barrier_rules[i].name, l.barrier_rules_files[i].string(),
                  b.candidate ? "checks a candidate" : "a design (no candidate)");
     }
+    print_input_notes(stdout, l.notes);
     print_source_notes(stdout, s);
     return kExitOk;
   }

@@ -39,4 +39,9 @@ InputError::InputError(std::filesystem::path file, long line, std::string field,
       found_(std::move(found)),
       expected_(std::move(expected)) {}
 
+std::string InputNote::message() const {
+  if (line > 0) return fmt::format("{}:{}: {}: {}", file.string(), line, field, text);
+  return fmt::format("{}: {}: {}", file.string(), field, text);
+}
+
 }  // namespace pierre::io

@@ -246,9 +246,10 @@ std::string section_label(std::size_t index, const std::string& name) {
 }
 
 std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
-                                         const std::filesystem::path& rules_dir,
+                                         const RulesFolder& rules,
                                          const std::vector<model::Material>& materials,
                                          const sim::SimulationSettings& settings) {
+  const fs::path& rules_dir = rules.path;
   std::vector<QuarrySection> out;
   const TomlTable top(file, root, "", 0, {});
   const toml::array* a = top.array_of_tables("quarries");
@@ -281,9 +282,9 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
       // An error inside the rule file is reported there; only a file that is not there (or
       // cannot be read) is said at the scenario's rules key.
       if (e.field() != "file") throw;
-      q.fail("rules", fmt::format("a rule set in {} (e.g. \"quarry-thesis-2015\", "
-                                  "\"quarry-conservative\") or a path to a .toml file ({}: {})",
-                                  rules_dir.string(), e.file().string(), e.found()));
+      q.fail("rules", fmt::format("a rule set in {} or a path to a .toml file (e.g. "
+                                  "\"quarry-thesis-2015\", \"quarry-conservative\"; {}: {})",
+                                  rules.named(), e.file().string(), e.found()));
     }
     s.rules_file = is_path(rules_arg) ? fs::path(rules_arg) : rules_dir / (rules_arg + ".toml");
 
@@ -320,9 +321,9 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     } else {
       sc.settings.seed = section_seed(settings.seed, i);  // independent streams, pooled sections
     }
-    sc.profile = detail::read_profile(q, materials, "quarries");
+    sc.profile = detail::read_profile(q, materials, "quarries", s.notes);
     detail::read_blocks(q, s.block_groups, sc.blocks, "quarries");
-    detail::read_sources(q, sc, "quarries");
+    detail::read_sources(q, sc, "quarries", s.notes);
     {
       // Each section is a run of its own: its count, not the sum, is what must stay countable.
       // (`settings` may come from elsewhere than `root`: then the message names no line.)

@@ -79,7 +79,8 @@ std::vector<std::string> read_material_fields(const TomlTable& t, model::Materia
 
 class Presets {
  public:
-  explicit Presets(fs::path file) : file_(std::move(file)) {}
+  // `what` names the file in a message when it cannot be read ("materials file (TOML) in …").
+  Presets(fs::path file, std::string what) : file_(std::move(file)), what_(std::move(what)) {}
   const fs::path& file() const { return file_; }
 
   const model::Material* find(const std::string& name) {
@@ -98,7 +99,7 @@ class Presets {
   void load() {
     if (loaded_) return;
     loaded_ = true;
-    text_ = read_text(file_, "materials file (TOML)");
+    text_ = read_text(file_, what_);
     root_ = parse_toml(file_, text_);
     const TomlTable root(file_, root_, "", 0, {});
     for (auto&& [k, v] : root_) {
@@ -120,6 +121,7 @@ class Presets {
   }
 
   fs::path file_;
+  std::string what_;
   bool loaded_ = false;
   std::string text_;
   toml::table root_;
@@ -386,9 +388,32 @@ design::ObservedSample read_observed(const fs::path& file) {
   return o;
 }
 
-void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenario& out) {
+// The energy class table a rule set names ([rule_set].classes): beside the rule set first, then
+// in the rules folder. When neither holds it, an InputError at the line of `classes` in the rule
+// file, or of its [rule_set] header when it gives none (the default table is meant).
+fs::path energy_classes_file(const design::BarrierRuleSet& rules, const fs::path& rules_file,
+                             const RulesFolder& rules_folder) {
+  const fs::path name = rules.classes + ".toml";
+  std::error_code ec;
+  for (const fs::path& f : {rules_file.parent_path() / name, rules_folder.path / name})
+    if (fs::is_regular_file(f, ec)) return f;
+  // Read again for the line: an error path, and the rule set has been read without fault.
+  const toml::table root = parse_toml(rules_file, read_text(rules_file, "barrier rule set (TOML)"));
+  const toml::node* header = root.get("rule_set");
+  const toml::node* given = header && header->as_table() ? header->as_table()->get("classes") : nullptr;
+  const long line = given ? line_of(*given) : header ? line_of(*header) : 0;
+  throw InputError(
+      rules_file, line, "rule_set.classes",
+      fmt::format("\"{}\"{}", rules.classes,
+                  given ? "" : " (the default: [rule_set] names no classes)"),
+      fmt::format("an energy class table {} beside the rule set or in {}", name.string(),
+                  rules_folder.named()));
+}
+
+void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, LoadedScenario& out) {
   const toml::array* a = top.array_of_tables("barriers");
   if (!a) return;
+  const fs::path& rules_dir = rules_folder.path;
   const sim::Scenario& sc = out.scenario;
   std::vector<std::string> line_names;
   for (const auto& l : sc.lines) line_names.push_back(l.name);
@@ -419,16 +444,16 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
       const auto names = barrier_rule_set_names(rules_dir);
       const std::string held = names.empty() ? "it holds none" : "it holds " + quoted_list(names);
       const std::string expected = fmt::format(
-          "a rule set of {} ({}) or a path to a rule-set TOML file", rules_dir.string(), held);
+          "a rule set of {} or a path to a rule-set TOML file", rules_folder.named(held));
       if (t.has("rules"))
         t.fail("rules", expected + fmt::format(" ({} {})", rules_file.string(),
                                                fs::exists(rules_file, ec) ? "is not a file"
                                                                           : "does not exist"));
       // The default was looked for: say which, and how a rules folder of one's own gets it.
-      t.missing("rules", fmt::format("the default rule set \"{}\" in {} ({}): copy {}.toml and the "
+      t.missing("rules", fmt::format("the default rule set \"{}\" in {}: copy {}.toml and the "
                                      "class table it names (etag027-classes.toml) there, or give "
                                      "rules = a name or a path",
-                                     b.rules, rules_dir.string(), held, b.rules));
+                                     b.rules, rules_folder.named(held), b.rules));
     }
     auto cached = cache.find(rules_file);
     if (cached == cache.end()) {  // read once per file, however many barriers name it
@@ -438,13 +463,8 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
                                     rules_file.string(), detail::describe(kind), rules_dir.string(),
                                     quoted_list(barrier_rule_set_names(rules_dir))));
       design::BarrierRuleSet rules = load_rule_set_file(rules_file);
-      fs::path classes_file = rules_file.parent_path() / (rules.classes + ".toml");
-      if (!fs::is_regular_file(classes_file, ec)) classes_file = rules_dir / (rules.classes + ".toml");
-      if (!fs::is_regular_file(classes_file, ec))
-        throw InputError(rules_file, 0, "rule_set.classes", fmt::format("\"{}\"", rules.classes),
-                         fmt::format("an energy class table beside the rule set or in {}",
-                                     rules_dir.string()));
-      design::EnergyClassTable classes = load_energy_classes_file(classes_file);
+      design::EnergyClassTable classes =
+          load_energy_classes_file(energy_classes_file(rules, rules_file, rules_folder));
       cached = cache.emplace(rules_file, std::make_pair(std::move(rules), std::move(classes))).first;
     }
     const design::BarrierRuleSet& rules = cached->second.first;
@@ -511,8 +531,8 @@ void read_barriers(const TomlTable& top, const fs::path& rules_dir, LoadedScenar
 
 }  // namespace
 
-LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
-                             const std::filesystem::path& rules_dir) {
+LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const RulesFolder& rules) {
+  const fs::path& rules_dir = rules.path;
   LoadedScenario out;
   out.file = scenario_file;
   out.text = read_text(scenario_file, "scenario file (TOML)");
@@ -532,7 +552,10 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
     out.materials_file = rules_dir / "materials.toml";
 
   out.scenario.settings = read_simulation(top);
-  Presets presets(out.materials_file);
+  Presets presets(out.materials_file,
+                  head->has("materials_file")
+                      ? std::string("materials file (TOML)")
+                      : "materials file (TOML) in " + rules.named());
   out.scenario.materials = read_materials(top, presets);
   if (top.has("quarries")) {
     // A quarry scenario: every section brings its own profile, blocks and sources; the
@@ -552,16 +575,17 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
                                    key));
     }
     if (!top.array_of_tables("quarries")) top.fail("quarries", "one or more [[quarries]] tables");
-    out.quarries = read_quarries(root, scenario_file, rules_dir, out.scenario.materials,
+    out.quarries = read_quarries(root, scenario_file, rules, out.scenario.materials,
                                  out.scenario.settings);
     if (out.quarries.empty())
       throw InputError(scenario_file, line_of(*top.find("quarries")), "quarries", "no section",
                        "at least one [[quarries]] section");
+    for (const auto& q : out.quarries) out.notes.insert(out.notes.end(), q.notes.begin(), q.notes.end());
     return out;
   }
-  out.scenario.profile = detail::read_profile(top, out.scenario.materials, "");
+  out.scenario.profile = detail::read_profile(top, out.scenario.materials, "", out.notes);
   detail::read_blocks(top, out.block_groups, out.scenario.blocks, "");
-  detail::read_sources(top, out.scenario, "");
+  detail::read_sources(top, out.scenario, "", out.notes);
   {
     const auto s = top.subtable("simulation", {});
     const toml::node& throws = *s->find("throws");
@@ -569,7 +593,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
                            describe(throws));
   }
   read_lines(top, out.scenario);
-  read_barriers(top, rules_dir, out);
+  read_barriers(top, rules, out);
   return out;
 }
 

@@ -95,10 +95,36 @@ std::vector<Vertex> read_profile_csv(const fs::path& file) {
   return out;
 }
 
+// Overhangs are valid (the air is on the left of the walking direction: a segment that goes
+// back in x has the air below it), but one x typed out of order makes one too, silently: 30
+// for 40 and 20 for 70 read as a ledge, and every result changes. One note per run of segments
+// going back, at the first vertex behind its predecessor.
+void note_runs_back_in_x(const std::vector<Vertex>& vs, bool from_csv, std::vector<InputNote>& notes) {
+  auto where = [&](const Vertex& v) {
+    return from_csv ? fmt::format("line {}", v.line) : v.field;
+  };
+  for (std::size_t i = 0; i + 1 < vs.size(); ++i) {
+    if (!(vs[i + 1].p.x < vs[i].p.x)) continue;
+    std::size_t last = i;  // the run: segments i..last
+    while (last + 2 < vs.size() && vs[last + 2].p.x < vs[last + 1].p.x) ++last;
+    const Vertex &from = vs[i], &to = vs[last + 1], &behind = vs[i + 1];
+    const bool one = last == i;
+    notes.push_back(
+        {behind.file, behind.line, from_csv ? std::string("x") : behind.field,
+         fmt::format("profile segment{} {} ({} → {}, x {} → {} m) run{} back in x: {} read as an "
+                     "overhang (the air below {}); check the x values if the slope has none",
+                     one ? "" : "s",
+                     one ? std::to_string(i) : fmt::format("{}-{}", i, last), where(from),
+                     where(to), from.p.x, to.p.x, one ? "s" : "", one ? "it is" : "they are",
+                     one ? "it" : "them")});
+    i = last;
+  }
+}
+
 }  // namespace
 
 geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Material>& mats,
-                               std::string_view table_path) {
+                               std::string_view table_path, std::vector<InputNote>& notes) {
   const auto prof = top.subtable("profile", {"file", "points"});
   if (!prof)
     top.missing("profile", fmt::format("a [{}] table with file = \"...\" or points = [...]",
@@ -174,6 +200,7 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
         "the air above most of the ground: the air is on the left of the walking direction, so "
         "list the vertices from the source end of a slope that descends towards +x (mirror the "
         "x coordinates of one that descends towards -x)");
+  note_runs_back_in_x(vs, has_file, notes);
   return std::move(*profile);
 }
 
@@ -405,7 +432,13 @@ std::string extent(const geometry::Profile& p) {
   return fmt::format("inside the profile's horizontal extent [{}, {}] m", p.x_min(), p.x_max());
 }
 
-void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view table_path) {
+void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view table_path,
+                  std::vector<InputNote>& notes) {
+  double z_lo = sc.profile.vertices().front().z, z_hi = z_lo;
+  for (const auto& v : sc.profile.vertices()) {
+    z_lo = std::min(z_lo, v.z);
+    z_hi = std::max(z_hi, v.z);
+  }
   const toml::array* a = top.array_of_tables("sources");
   if (!a)
     top.missing("sources", fmt::format("at least one [[{}]] table with x and z",
@@ -441,6 +474,26 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     t.check("vz", std::abs(s.velocity.z) <= ModelDefaults::max_source_speed, speed);
     t.check("omega", std::abs(s.omega) <= ModelDefaults::max_source_spin,
             fmt::format("a spin from −{0:g} to {0:g} rad/s", ModelDefaults::max_source_spin));
+    // In the air (not inside the rock, where it is placed on the ground over it): how far it
+    // falls to the ground below.
+    const geometry::Vec2 p = s.position;
+    const auto above = sc.profile.line_above(p.x, p.z);
+    const auto below = sc.profile.ground_below(p.x, p.z);
+    if (!(above && above->ground) && below) {
+      const double drop = p.z - below->z;
+      if (drop > kFarAboveGround && drop > z_hi - z_lo)
+        notes.push_back(
+            {top.file(), line_of(*t.find("z")), t.field("z"),
+             fmt::format("source \"{}\" is {:.0f} m above the ground under it (z = {} m; the "
+                         "ground at x = {} m is at {:.1f} m), more than {:g} m and more than the "
+                         "profile's whole height ({:.1f} m, z from {:.1f} to {:.1f} m): its blocks "
+                         "fall freely that far before their first impact, which then governs the "
+                         "results. Check that z is an elevation of the same kind as the "
+                         "profile's (local, or absolute such as m a.s.l.); a source on or below "
+                         "the ground starts on it",
+                         s.name, drop, p.z, p.x, below->z, kFarAboveGround, z_hi - z_lo, z_lo,
+                         z_hi)});
+    }
     sc.sources.push_back(std::move(s));
   }
 }

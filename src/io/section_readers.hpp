@@ -12,6 +12,7 @@
 
 #include "pierre/geometry/profile.hpp"
 #include "pierre/io/block_group.hpp"
+#include "pierre/io/input_error.hpp"
 #include "pierre/model/block.hpp"
 #include "pierre/model/material.hpp"
 #include "pierre/sim/scenario.hpp"
@@ -25,9 +26,10 @@ namespace pierre::io::detail {
 // used in messages: "a [quarries.profile] table".
 
 // parent.profile: { file = CSV } or { points = [[x, z, "material"], …] }; material names from
-// `materials`.
+// `materials`. A run of segments that goes back in x (an overhang, or an x typed out of order)
+// adds a note to `notes`, at the first vertex that lies behind its predecessor.
 geometry::Profile read_profile(const TomlTable& parent, const std::vector<model::Material>& materials,
-                               std::string_view table_path);
+                               std::string_view table_path, std::vector<InputNote>& notes);
 
 // parent.blocks: the block rows as written (appended to `groups`) and the blocks they expand
 // to (appended to `blocks`, a row of count n giving ids "<id>.1" … "<id>.n").
@@ -35,8 +37,19 @@ void read_blocks(const TomlTable& parent, std::vector<BlockGroup>& groups,
                  std::vector<model::Block>& blocks, std::string_view table_path);
 
 // parent.sources (one or more): appended to scenario.sources, each inside scenario.profile's
-// horizontal extent.
-void read_sources(const TomlTable& parent, sim::Scenario& scenario, std::string_view table_path);
+// horizontal extent. A source far above the ground under it (kFarAboveGround) adds a note to
+// `notes`, at its z.
+void read_sources(const TomlTable& parent, sim::Scenario& scenario, std::string_view table_path,
+                  std::vector<InputNote>& notes);
+
+// A source is noted when it is more than this far above the ground under it and more than the
+// profile's whole height (m). Higher than the whole section, its block gains more speed in the
+// air than the slope drawn could give it: it is not a release from that slope. The 100 m spares
+// a deliberate drop over a short section (a test bench, a small cut); 100 m of free fall already
+// reaches 44 m/s at the first impact, beyond what blocks reach on talus (20-30 m/s). Either
+// way the first impact governs the results, and the usual cause is a z in absolute elevations
+// (m a.s.l.) over a profile in local ones.
+inline constexpr double kFarAboveGround = 100.0;
 
 // "inside the profile's horizontal extent [x0, x1] m"
 std::string extent(const geometry::Profile& profile);

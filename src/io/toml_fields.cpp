@@ -175,6 +175,37 @@ const toml::array* TomlTable::array(std::string_view key) const {
   return a;
 }
 
+namespace {
+
+// toml++'s description, "Error while parsing floating-point: expected decimal digit or exponent,
+// saw '.'", as what was found: "a malformed floating-point number (expected decimal digit or
+// exponent, saw '.'; column 9)". Control characters it quotes (a '\n' it saw) are escaped, so
+// that the message stays on one line. A description of another shape is kept as it is.
+std::string syntax_problem(std::string_view description, long column) {
+  std::string detail;
+  for (const char c : description) {
+    if (c == '\n') detail += "\\n";
+    else if (c == '\r') detail += "\\r";
+    else if (c == '\t') detail += "\\t";
+    else if (static_cast<unsigned char>(c) < 0x20) detail += fmt::format("\\x{:02x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    else detail += c;
+  }
+  constexpr std::string_view kPrefix = "Error while parsing ";
+  const std::size_t colon = detail.find(": ");
+  if (detail.rfind(kPrefix, 0) != 0 || colon == std::string::npos)
+    return fmt::format("{} (column {})", detail, column);
+  std::string what = detail.substr(kPrefix.size(), colon - kPrefix.size());
+  const std::string rest = detail.substr(colon + 2);
+  // The root table's errors are about a line that starts no key, table or comment.
+  if (what.empty() || what == "root table")
+    return fmt::format("a line that is not TOML ({}; column {})", rest, column);
+  if (what.size() >= 14 && what.compare(what.size() - 14, 14, "floating-point") == 0)
+    what += " number";
+  return fmt::format("a malformed {} ({}; column {})", what, rest, column);
+}
+
+}  // namespace
+
 toml::table parse_toml(const std::filesystem::path& file, const std::string& text) {
   try {
     return toml::parse(text, file.string());
@@ -186,7 +217,7 @@ toml::table parse_toml(const std::filesystem::path& file, const std::string& tex
       expected += "; an inline table `name = { … }` cannot take rows or sub-tables later: write it "
                   "as a table, `[name]` with its keys on the lines below";
     throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
-                     fmt::format("{} (column {})", e.description(), e.source().begin.column),
+                     syntax_problem(e.description(), static_cast<long>(e.source().begin.column)),
                      expected);
   }
 }

@@ -63,10 +63,12 @@ class PierreCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   // Runs `pierre ARGS` with stdout and stderr captured in files.
-  CliResult pierre(const std::string& args) {
+  CliResult pierre(const std::string& args) { return pierre_with_env("", args); }
+  // The same with `env` ("NAME=value ...", quoted as the shell needs) set for the run.
+  CliResult pierre_with_env(const std::string& env, const std::string& args) {
     const fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
-    const std::string cmd = std::string("'") + PIERRE_BINARY + "' " + args + " >'" + o.string() +
-                            "' 2>'" + e.string() + "'";
+    const std::string cmd = env + (env.empty() ? "'" : " '") + PIERRE_BINARY + "' " + args +
+                            " >'" + o.string() + "' 2>'" + e.string() + "'";
     const int st = std::system(cmd.c_str());
     CliResult r;
     r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;

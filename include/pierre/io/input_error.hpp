@@ -24,4 +24,15 @@ class InputError : public std::runtime_error {
   std::string field_, found_, expected_;
 };
 
+// A note on the input: something that does not stop a run but is likely a mistake (an x typed
+// out of order read as an overhang, a source far above the ground). Said where it is, like an
+// error: "<file>:<line>: <field>: <text>". `run` and `validate` print them.
+struct InputNote {
+  std::filesystem::path file;
+  long line = 0;  // 1-based; 0 when about the whole file
+  std::string field;
+  std::string text;
+  std::string message() const;
+};
+
 }  // namespace pierre::io

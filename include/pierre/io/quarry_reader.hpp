@@ -18,6 +18,7 @@
 #include "pierre/design/quarry_zones.hpp"
 #include "pierre/io/block_group.hpp"
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/rules_folder.hpp"
 #include "pierre/model/material.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -34,6 +35,7 @@ struct QuarrySection {
   std::vector<BlockGroup> block_groups;  // the block rows as written
   std::filesystem::path rules_file;
   bool seed_given = false;  // `seed` was written (else [simulation].seed + the section's index)
+  std::vector<InputNote> notes;  // on its profile and sources (LoadedScenario::notes holds them too)
 };
 
 // The seed of section `index` that gives none: the run's seed + index, wrapped into 0 to 2^63 − 1
@@ -54,7 +56,7 @@ design::QuarryRuleSet load_quarry_rules(const std::string& name_or_path,
 // relative paths); `materials` the scenario's [materials] (indices shared by every section);
 // `settings` its [simulation] (each section gets a copy with its own seed and floor_segment).
 std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
-                                         const std::filesystem::path& rules_dir,
+                                         const RulesFolder& rules,
                                          const std::vector<model::Material>& materials,
                                          const sim::SimulationSettings& settings);
 

@@ -14,6 +14,7 @@
 #include "pierre/io/block_group.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/io/quarry_reader.hpp"
+#include "pierre/io/rules_folder.hpp"
 #include "pierre/sim/scenario.hpp"
 
 namespace pierre::io {
@@ -29,6 +30,9 @@ struct LoadedScenario {
   // What the command line set instead of the file (--seed, --throws), each with the file's
   // value: the echoed text no longer says what ran, so summary.json and the report say it.
   std::vector<std::string> overrides;
+  // Notes on the input, in reading order (a profile that runs back in x, a source far above
+  // the ground; those of quarry sections too): printed by `run` and `validate`, never fatal.
+  std::vector<InputNote> notes;
 
   // [[barriers]] (docs/scenario-format.md), in file order; index i of every vector below is
   // barrier i. The rule set, its class table and the observed data are loaded and checked
@@ -46,13 +50,13 @@ struct LoadedScenario {
   std::vector<QuarrySection> quarries;
 };
 
-// `rules_dir` holds materials.toml and the design rule sets; materials.toml is only read when a
+// `rules` holds materials.toml and the design rule sets; materials.toml is only read when a
 // material names a preset and the scenario gives no `materials_file`; a barrier's rule set is
-// rules_dir/<name>.toml unless the scenario gives a path (relative to the scenario file).
+// <rules>/<name>.toml unless the scenario gives a path (relative to the scenario file). A file the
+// folder lacks is said with how the folder was chosen (RulesFolder::how).
 // Numbers: an integer is accepted where a float is expected (`mass = 1500`); nothing else
 // converts (`throws = "5"` or `throws = 5.0` is an error). NaN and infinities are errors.
-LoadedScenario load_scenario(const std::filesystem::path& scenario_file,
-                             const std::filesystem::path& rules_dir);
+LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const RulesFolder& rules);
 
 // A scenario runs at most 2^53 trajectories, sources × blocks × throws (a count a double holds
 // exactly; the 64-bit count wrapped past 2^64). Throws InputError at `field` of `file` (line 0:

@@ -332,6 +332,41 @@ TEST_F(Check, SameSeedSameChecks) {
   EXPECT_EQ(ja["checks"], jb["checks"]);
 }
 
+// A rules folder of one's own (--rules, or $PIERRE_RULES) that lacks a file the scenario needs:
+// the error names the rule file's line of `classes = ` (it named no line), and says where the
+// folder came from, as the report layout's message names $PIERRE_TEMPLATES.
+TEST_F(Check, AFileTheRulesFolderLacksIsSaidWithItsLineAndTheFoldersOrigin) {
+  const fs::path rules = dir_ / "rules";
+  fs::create_directories(rules);
+  for (const char* f : {"materials.toml", "thesis-2015.toml"})
+    fs::copy_file(fs::path(PIERRE_SOURCE_DIR) / "rules" / f, rules / f);
+  const std::string expected =
+      (rules / "thesis-2015.toml").string() +
+      ":46: rule_set.classes: found \"etag027-classes\", expected an energy class table "
+      "etag027-classes.toml beside the rule set or in " + rules.string();
+  const Result v = pierre("validate " + kData + "pass.toml --rules " + q(rules));
+  EXPECT_EQ(v.code, 2) << v.err;
+  EXPECT_EQ(v.err, expected + " (the rules folder given by --rules)\n");
+  expect_refused_before_writing(kData + "pass.toml", "--rules " + q(rules),
+                                expected + " (the rules folder given by --rules)\n");
+  const Result env = pierre_with_env("PIERRE_RULES=" + q(rules), "validate " + kData + "pass.toml");
+  EXPECT_EQ(env.code, 2) << env.err;
+  EXPECT_EQ(env.err, expected + " (the rules folder given by $PIERRE_RULES)\n");
+
+  const fs::path none = dir_ / "nonexistent";
+  const std::string missing = (none / "materials.toml").string() +
+                              ": file: found no such file, expected a readable materials file "
+                              "(TOML) in " + none.string();
+  const Result n = pierre("validate " + kData + "pass.toml --rules " + q(none));
+  EXPECT_EQ(n.code, 2) << n.err;
+  EXPECT_EQ(n.err, missing + " (the rules folder given by --rules; no such folder)\n");
+  expect_refused_before_writing(kData + "pass.toml", "--rules " + q(none),
+                                missing + " (the rules folder given by --rules; no such folder)\n");
+  const Result e = pierre_with_env("PIERRE_RULES=" + q(none), "validate " + kData + "pass.toml");
+  EXPECT_EQ(e.code, 2) << e.err;
+  EXPECT_EQ(e.err, missing + " (the rules folder given by $PIERRE_RULES; no such folder)\n");
+}
+
 TEST_F(Check, HelpShowsTheExitCodes) {
   const Result r = pierre("check --help");
   EXPECT_EQ(r.code, 0);

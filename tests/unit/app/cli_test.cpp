@@ -240,6 +240,51 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   EXPECT_TRUE(pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o")).out.empty());
 }
 
+// The reader's notes (a profile x out of order read as an overhang, a source far above the
+// ground): validate and run print them with file, line and field and still exit 0; under
+// --quiet run says them on stderr, where a pipeline's log keeps them. A quarry scenario too.
+TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
+  std::ofstream(dir_ / "p.csv") << "x,z,material\n0,130,t\n30,122,t\n20,106,t\n150,40,t\n200,38,\n";
+  std::ofstream(dir_ / "s.toml") << one_block_scenario(
+      {"typos", 2, "file = \"p.csv\"", "t", "preset = \"talus\"", 1000,
+       "name = \"crest\"\nx = 1.0\nz = 5000.0"});
+  const std::string overhang =
+      "Note: " + (dir_ / "p.csv").string() +
+      ":4: x: profile segment 1 (line 3 → line 4, x 30 → 20 m) runs back in x: it is read as an "
+      "overhang (the air below it); check the x values if the slope has none\n";
+  const std::string high = "Note: " + (dir_ / "s.toml").string() +
+                           ":16: sources[0].z: source \"crest\" is 4870 m above the ground under it";
+  const Result v = pierre("validate " + q(dir_ / "s.toml"));
+  EXPECT_EQ(v.code, 0) << v.err;
+  EXPECT_NE(v.out.find(overhang), std::string::npos) << v.out;
+  EXPECT_NE(v.out.find(high), std::string::npos) << v.out;
+  const Result r = pierre("run " + q(dir_ / "s.toml") + " --out " + q(dir_ / "o"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(overhang), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(high), std::string::npos) << r.out;
+  const Result quiet = pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o"));
+  EXPECT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+  EXPECT_NE(quiet.err.find(overhang), std::string::npos) << quiet.err;
+  EXPECT_NE(quiet.err.find(high), std::string::npos) << quiet.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "o" / "summary.json"));
+
+  std::ofstream(dir_ / "pit.toml")
+      << "[scenario]\nname = \"pit\"\n[simulation]\nseed = 1\nthrows = 1\n"
+         "[materials.face]\npreset = \"quarry-face\"\n[[quarries]]\nname = \"East\"\n"
+         "profile = { points = [[0.0, 20.0, \"face\"], [10.0, 20.0, \"face\"], [20.0, 0.0, "
+         "\"face\"], [90.0, 0.0, \"\"]] }\nblocks = { table = [{ id = \"A\", mass = 500.0 }] }\n"
+         "sources = [{ x = 10.3, z = 500.0 }]\n";
+  const std::string pit_note = "Note: " + (dir_ / "pit.toml").string() +
+                               ":12: quarries[0].sources[0].z: source \"S1\" is 481 m above";
+  const Result pv = pierre("validate " + q(dir_ / "pit.toml"));
+  EXPECT_EQ(pv.code, 0) << pv.err;
+  EXPECT_NE(pv.out.find(pit_note), std::string::npos) << pv.out;
+  const Result pq = pierre("run " + q(dir_ / "pit.toml") + " -q --out " + q(dir_ / "po"));
+  EXPECT_EQ(pq.code, 0) << pq.err;
+  EXPECT_NE(pq.err.find(pit_note), std::string::npos) << pq.err;
+}
+
 // A material that no segment uses is noted (it changes nothing; often one left over); the used
 // one is not.
 TEST_F(Cli, AMaterialNoSegmentUsesIsNoted) {

@@ -145,6 +145,27 @@ TEST_P(BarrierError, NamesFileLineFieldFoundExpected) {
 
 const std::string kHead = "[[barriers]]\nname = \"B\"\nline = \"L\"\n";           // lines 28-30
 const std::string kThesis = kHead + "rules = \"thesis-2015\"\n";                     // line 31
+// A barrier rule set of the file's own, its [rule_set] on lines 1-7 (line 8 may name classes).
+const char* const kRuleSet = R"([rule_set]
+kind = "barrier"
+title = "t"
+source = "s"
+percentile = 95
+governing = "weibull"
+design_on = "both"
+)";
+const char* const kRuleSetRest = R"(
+[factors]
+gamma_F = 1.0
+gamma_M = 1.0
+gamma_h = 1.0
+gamma_E_MEL = 1.0
+gamma_E_SEL = 1.0
+
+[free_board]
+absolute = 0.0
+relative = 0.5
+)";
 const std::string kPR = kHead + "data_quality = { trajectory = \"literature\", topography = \"low\", block_volume = \"surveyed\" }\n";  // 31
 
 INSTANTIATE_TEST_SUITE_P(
@@ -215,7 +236,60 @@ INSTANTIATE_TEST_SUITE_P(
              "speed_m_s", "-3", ">= 0"},
         Case{"observed_text", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "energy_kJ\n10\nabc\n"}}, "o.csv", 3,
              "energy_kJ", "abc", "number"},
-        Case{"pr_ok_but_bad_rules_type", kPR + "rules = 5\n", {}, "", 32, "barriers[0].rules", "5", "string"}),
+        Case{"pr_ok_but_bad_rules_type", kPR + "rules = 5\n", {}, "", 32, "barriers[0].rules", "5", "string"},
+        // a class table neither beside the rule set nor in the rules folder: said at the rule
+        // file's `classes` line (it had no line), or at its [rule_set] when the default is meant
+        Case{"classes_missing", kHead + "rules = \"r.toml\"\n",
+             {{"r.toml", std::string(kRuleSet) + "classes = \"etag-1999\"\n" + kRuleSetRest}}, "r.toml", 8,
+             "rule_set.classes", "\"etag-1999\"", "an energy class table etag-1999.toml beside the rule set or in "}),
     [](const auto& info) { return info.param.name; });
+
+// The rules folder's file missing names the folder as it was chosen: --rules or $PIERRE_RULES
+// (app::rules_folder gives `how`), like the report layout's message names $PIERRE_TEMPLATES.
+TEST(BarrierReader, AFileTheRulesFolderLacksSaysHowTheFolderWasChosen) {
+  TempDir dir, rules;
+  // A rules folder holding the thesis's rule set but not the class table it names.
+  rules.write("thesis-2015.toml", test::read_file(kRules / "thesis-2015.toml"));
+  rules.write("materials.toml", test::read_file(kRules / "materials.toml"));
+  const io::RulesFolder given(rules.path(), "the rules folder given by --rules");
+  try {
+    (void)io::load_scenario(dir.write("s.toml", with_barrier(kThesis)), given);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), rules.path() / "thesis-2015.toml");
+    EXPECT_EQ(e.line(), 46);  // classes = "etag027-classes"
+    EXPECT_EQ(e.field(), "rule_set.classes");
+    EXPECT_EQ(e.found(), "\"etag027-classes\"");
+    EXPECT_EQ(e.expected(), "an energy class table etag027-classes.toml beside the rule set or in " +
+                                rules.path().string() + " (the rules folder given by --rules)");
+    EXPECT_EQ(std::string(e.what()), (rules.path() / "thesis-2015.toml").string() +
+                                         ":46: rule_set.classes: found \"etag027-classes\", expected " +
+                                         e.expected());
+  }
+  // A rule set that names no class table means the default: said at its [rule_set] line.
+  dir.write("r.toml", std::string(kRuleSet) + kRuleSetRest);
+  try {
+    (void)io::load_scenario(dir.write("s.toml", with_barrier(kHead + "rules = \"r.toml\"\n")), given);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (dir.path() / "r.toml").string() +
+                  ":1: rule_set.classes: found \"etag027-classes\" (the default: [rule_set] names no "
+                  "classes), expected an energy class table etag027-classes.toml beside the rule set or in " +
+                  rules.path().string() + " (the rules folder given by --rules)");
+  }
+  // A folder that is not there: the materials file's message says it, and where it came from.
+  const std::string base = test::base_with(12, "preset = \"talus\"");
+  const std::filesystem::path none = dir.path() / "nonexistent";
+  try {
+    (void)io::load_scenario(dir.write("s.toml", base), io::RulesFolder(none, "the rules folder given by --rules"));
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (none / "materials.toml").string() +
+                  ": file: found no such file, expected a readable materials file (TOML) in " +
+                  none.string() + " (the rules folder given by --rules; no such folder)");
+  }
+}
 
 }  // namespace

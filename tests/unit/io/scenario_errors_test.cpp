@@ -112,6 +112,40 @@ TEST(ScenarioSyntax, RowsAfterAnInlineTableSayToWriteATable) {
   }
 }
 
+// A syntax error says what is malformed, not toml++'s "Error while parsing …" ("found Error
+// while parsing floating-point: …" read as if the file held an error message); a character it
+// saw is shown escaped, so that the message stays on one line.
+TEST(ScenarioSyntax, SaysWhatIsMalformedInWords) {
+  TempDir dir;
+  struct Bad {
+    std::string line;  // replaces base line 6 (throws = 2)
+    std::string found;
+  };
+  const Bad cases[] = {
+      {"throws = 1..2", "a malformed floating-point number (expected decimal digit or exponent, "
+                        "saw '.'; column 12)"},
+      {"throws = tru", "a malformed boolean (expected 'true', saw 'tru\\n'; column 13)"},
+      {"= 2", "a line that is not TOML (expected keys, tables, whitespace or comments, saw '='; "
+              "column 1)"},
+  };
+  for (const Bad& b : cases) {
+    const auto file = dir.write("s.toml", pierre::test::base_with(6, b.line));
+    try {
+      (void)load_scenario(file, kRules);
+      FAIL() << "no InputError for " << b.line;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), file);
+      EXPECT_EQ(e.line(), 6);
+      EXPECT_EQ(e.field(), "TOML syntax");
+      EXPECT_EQ(e.found(), b.found);
+      EXPECT_EQ(e.expected(), "valid TOML (https://toml.io)");
+      EXPECT_EQ(std::string(e.what()), file.string() + ":6: TOML syntax: found " + b.found +
+                                           ", expected valid TOML (https://toml.io)");
+      EXPECT_EQ(std::string(e.what()).find("Error while parsing"), std::string::npos);
+    }
+  }
+}
+
 // A missing file's expectation says where a relative path is looked for, and nothing of the
 // sort for an absolute one (it was "a path relative to the current folder" for /nonexist/p.csv).
 TEST(ScenarioFiles, AMissingFileSaysWhereARelativePathIsLookedFor) {

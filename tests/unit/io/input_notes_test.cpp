@@ -1,0 +1,169 @@
+// Notes on the input (io::InputNote, LoadedScenario::notes): likely mistakes that do not stop a
+// run, said where they are like an error — a profile that runs back in x (read as an overhang:
+// valid, but one x typed out of order makes one), a source far above the ground under it (a z
+// in absolute elevations over a profile in local ones). Each names the file, the line, the
+// field, and says why it matters; valid input of the usual kind gets none.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "pierre/io/scenario_reader.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pierre::io::InputNote;
+using pierre::io::load_scenario;
+using pierre::test::base_with;
+using pierre::test::TempDir;
+
+const fs::path kRules = PIERRE_SOURCE_DIR "/rules";
+
+std::vector<InputNote> notes_of(const TempDir& dir, const std::string& scenario) {
+  return load_scenario(dir.write("s.toml", scenario), kRules).notes;
+}
+
+TEST(InputNotes, TheUsualScenarioHasNone) {
+  TempDir dir;
+  EXPECT_TRUE(notes_of(dir, pierre::test::base()).empty());
+  // A vertical face is not a segment running back in x.
+  EXPECT_TRUE(notes_of(dir, base_with(9, "points = [[0.0, 10.0, \"rock\"], [5.0, 10.0, \"rock\"], "
+                                         "[5.0, 0.0, \"rock\"], [20.0, 0.0, \"\"]]"))
+                  .empty());
+}
+
+// The walkthrough's typo: 30,62 and 20,46 where 40,62 and 70,46 were meant. Accepted (an
+// overhang is valid), but said, at the vertex that lies behind its predecessor.
+TEST(InputNotes, AnXOutOfOrderIsNotedAsAnOverhang) {
+  TempDir dir;
+  const fs::path csv = dir.write("p.csv",
+                                 "x,z,material\n0,70,rock\n30,62,rock\n20,46,rock\n100,0,rock\n110,0,\n");
+  const auto notes = notes_of(dir, base_with(9, "file = \"p.csv\""));
+  ASSERT_EQ(notes.size(), 1u);
+  const InputNote& n = notes[0];
+  EXPECT_EQ(n.file, csv);
+  EXPECT_EQ(n.line, 4);
+  EXPECT_EQ(n.field, "x");
+  const std::string text =
+      "profile segment 1 (line 3 → line 4, x 30 → 20 m) runs back in x: it is read as an overhang "
+      "(the air below it); check the x values if the slope has none";
+  EXPECT_EQ(n.text, text);
+  EXPECT_EQ(n.message(), csv.string() + ":4: x: " + text);
+}
+
+// One note per run of segments going back in x, not one per segment.
+TEST(InputNotes, OneNotePerRunOfSegmentsGoingBack) {
+  TempDir dir;
+  const fs::path csv = dir.write("p.csv",
+                                 "x,z,material\n"
+                                 "0,70,rock\n"    // 2
+                                 "40,60,rock\n"   // 3
+                                 "35,55,rock\n"   // 4: back
+                                 "30,50,rock\n"   // 5: back
+                                 "50,40,rock\n"   // 6
+                                 "45,35,rock\n"   // 7: back
+                                 "100,0,rock\n"   // 8
+                                 "110,0,\n");     // 9
+  const auto notes = notes_of(dir, base_with(9, "file = \"p.csv\""));
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(notes[0].line, 4);
+  EXPECT_EQ(notes[0].text,
+            "profile segments 1-2 (line 3 → line 5, x 40 → 30 m) run back in x: they are read as "
+            "an overhang (the air below them); check the x values if the slope has none");
+  EXPECT_EQ(notes[1].line, 7);
+  EXPECT_EQ(notes[1].field, "x");
+  EXPECT_NE(notes[1].text.find("profile segment 4 (line 6 → line 7, x 50 → 45 m) runs back in x"),
+            std::string::npos)
+      << notes[1].text;
+}
+
+// Inline points: the note names the point by its field, at the TOML line.
+TEST(InputNotes, InlinePointsAreNamedByTheirField) {
+  TempDir dir;
+  const fs::path s = dir.path() / "s.toml";
+  const auto notes = notes_of(dir, base_with(9, "points = [[0.0, 10.0, \"rock\"], [10.0, 0.0, \"rock\"], "
+                                                "[8.0, -1.0, \"rock\"], [20.0, -2.0, \"\"]]"));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].message(),
+            s.string() + ":9: profile.points[2]: profile segment 1 (profile.points[1] → "
+                         "profile.points[2], x 10 → 8 m) runs back in x: it is read as an overhang "
+                         "(the air below it); check the x values if the slope has none");
+}
+
+// The walkthrough's source 4 880 m above the ground (z = 5000 over a profile at about 120 m).
+TEST(InputNotes, ASourceFarAboveTheGroundIsNoted) {
+  TempDir dir;
+  const fs::path s = dir.path() / "s.toml";
+  const auto notes = notes_of(dir, base_with(22, "z = 5000.0"));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].file, s);
+  EXPECT_EQ(notes[0].line, 22);
+  EXPECT_EQ(notes[0].field, "sources[0].z");
+  EXPECT_EQ(notes[0].message(),
+            s.string() +
+                ":22: sources[0].z: source \"S1\" is 4991 m above the ground under it (z = 5000 m; "
+                "the ground at x = 1 m is at 9.0 m), more than 100 m and more than the profile's "
+                "whole height (10.0 m, z from 0.0 to 10.0 m): its blocks fall freely that far "
+                "before their first impact, which then governs the results. Check that z is an "
+                "elevation of the same kind as the profile's (local, or absolute such as m "
+                "a.s.l.); a source on or below the ground starts on it");
+}
+
+// The threshold: more than 100 m and more than the profile's whole height. A drop from the
+// lip of a high face onto the ground far below (less than the section's height) is a release
+// from the slope drawn; a source below the ground (placed on it) says nothing either.
+TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
+  TempDir dir;
+  EXPECT_TRUE(notes_of(dir, base_with(22, "z = 108.0")).empty());     // 99 m above the ground
+  EXPECT_EQ(notes_of(dir, base_with(22, "z = 110.0")).size(), 1u);    // 101 m
+  EXPECT_TRUE(notes_of(dir, base_with(22, "z = -5000.0")).empty());   // below: placed on it
+  const std::string tall = "points = [[0.0, 400.0, \"rock\"], [10.0, 0.0, \"rock\"], [200.0, 0.0, \"\"]]";
+  auto scenario = [&](const std::string& source) {
+    auto lines = pierre::test::base_lines();
+    lines.at(8) = tall;
+    lines.at(20) = source;
+    lines.at(21) = "z = " + std::string(source == "x = 100.0" ? "350.0" : "420.0");
+    std::string text;
+    for (const auto& l : lines) text += l + "\n";
+    return text;
+  };
+  EXPECT_TRUE(notes_of(dir, scenario("x = 100.0")).empty());  // 350 m: less than 400 m
+  const auto n = notes_of(dir, scenario("x = 150.0"));         // 420 m: more
+  ASSERT_EQ(n.size(), 1u);
+  EXPECT_NE(n[0].text.find("is 420 m above the ground under it"), std::string::npos) << n[0].text;
+  EXPECT_NE(n[0].text.find("whole height (400.0 m, z from 0.0 to 400.0 m)"), std::string::npos)
+      << n[0].text;
+}
+
+// A quarry section's profile and sources are read by the same readers: its notes are the
+// scenario's, named by the section's field.
+TEST(InputNotes, AQuarrySectionsNotesAreTheScenarios) {
+  TempDir dir;
+  const std::string text = R"([scenario]
+name = "pit"
+
+[simulation]
+seed = 40
+throws = 3
+
+[materials.face]
+preset = "quarry-face"
+
+[[quarries]]
+name = "East"
+profile = { points = [[0.0, 20.0, "face"], [10.0, 20.0, "face"], [20.0, 0.0, "face"], [90.0, 0.0, ""]] }
+blocks = { table = [{ id = "A", mass = 500.0 }] }
+sources = [{ x = 10.3, z = 500.0 }]
+)";
+  const auto l = load_scenario(dir.write("s.toml", text), kRules);
+  ASSERT_EQ(l.notes.size(), 1u);
+  EXPECT_EQ(l.notes[0].line, 15);
+  EXPECT_EQ(l.notes[0].field, "quarries[0].sources[0].z");
+  ASSERT_EQ(l.quarries.size(), 1u);
+  ASSERT_EQ(l.quarries[0].notes.size(), 1u);
+  EXPECT_EQ(l.quarries[0].notes[0].message(), l.notes[0].message());
+}
+
+}  // namespace
