@@ -66,6 +66,7 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
   info.threads = threads;
   info.all_crossings = all_crossings;
   info.overrides = loaded.overrides;
+  info.input_notes = loaded.notes;
   return info;
 }
 

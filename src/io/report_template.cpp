@@ -60,7 +60,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "lines_every_crossing", "overrides", "energy_classes", "read_from", "line_not_crossed", "stop_energy", "stop_friction",
                  "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
                  "quarry_average_note", "resolved", "defaulted", "from_class",
-                 "open_class_capacity", "quarry_all", "quarry_all_note", "travel_time",
+                 "open_class_capacity", "input_notes", "quarry_all", "quarry_all_note", "travel_time",
                  "travel_time_value"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",

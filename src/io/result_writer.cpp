@@ -528,6 +528,14 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["seed"] = info.seed;
   j["throws"] = info.throws;
   j["command_line_overrides"] = info.overrides;  // [] when the file's values ran
+  // The readers' notes (a profile running back in x, a source far above the ground): what the
+  // console said, kept for a pipeline that reads only this file. [] when there were none.
+  j["input_notes"] = json::array();
+  for (const auto& n : info.input_notes)
+    j["input_notes"].push_back({{"file", n.file.string()},
+                                {"line", n.line},
+                                {"field", n.field},
+                                {"note", n.text}});
   j["blocks"] = info.blocks;
   j["sources"] = info.sources;
   j["trajectories"] = info.trajectories;

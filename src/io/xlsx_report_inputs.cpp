@@ -312,6 +312,7 @@ void Report::inputs_scenario_text(lxw_worksheet* ws, Row r, const LoadedScenario
   r = table_title(ws, r, "scenario_text");
   text(ws, r++, 0, sc.file.string(), note());
   for (const auto& o : sc.overrides) text(ws, r++, 0, t_.get("labels", "overrides") + ": " + o, note());
+  for (const auto& n : sc.notes) text(ws, r++, 0, t_.get("labels", "input_notes") + ": " + n.message(), note());
   std::size_t line_no = 1, p = 0;
   const std::string& s = sc.text;
   while (p < s.size()) {

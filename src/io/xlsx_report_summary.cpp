@@ -67,6 +67,10 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
     label("overrides");
     for (const auto& o : sc->overrides) text(ws, r++, 2, o);
   }
+  if (sc && !sc->notes.empty()) {  // likely mistakes the readers noted: the client sees them too
+    label("input_notes");
+    for (const auto& n : sc->notes) text(ws, r++, 2, n.message());
+  }
   label("trajectories");
   num(ws, r++, 2,
       static_cast<double>(d_.total_trajectories ? d_.total_trajectories

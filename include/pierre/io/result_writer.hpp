@@ -35,6 +35,7 @@
 #include "pierre/design/check_line.hpp"
 #include "pierre/design/quarry_zones.hpp"
 #include "pierre/design/run_statistics.hpp"
+#include "pierre/io/input_error.hpp"
 #include "pierre/sim/runner.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -95,6 +96,7 @@ struct RunInfo {
   unsigned threads = 0;  // worker threads used
   bool all_crossings = false;
   std::vector<std::string> overrides;  // LoadedScenario::overrides
+  std::vector<InputNote> input_notes;  // LoadedScenario::notes: likely mistakes, not errors
 };
 
 // The design results of a run: every barrier computed, the quarry danger zones (a quarry

@@ -94,6 +94,7 @@ TEST_F(Cli, RunWritesTheResults) {
   EXPECT_EQ(j["seed"], 12345);
   EXPECT_EQ(j["throws"], 300);
   EXPECT_EQ(j["scenario"]["name"], "Small talus test");
+  EXPECT_EQ(j["input_notes"], nlohmann::json::array());  // present, and empty: nothing noted
   ASSERT_EQ(j["lines"].size(), 2u);
   EXPECT_EQ(j["lines"][0]["name"], "Screen 1");
   EXPECT_EQ(j["lines"][0]["count"].get<int>() + j["lines"][0]["not_reached"].get<int>(), 600);
@@ -267,7 +268,17 @@ TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
   EXPECT_TRUE(quiet.out.empty()) << quiet.out;
   EXPECT_NE(quiet.err.find(overhang), std::string::npos) << quiet.err;
   EXPECT_NE(quiet.err.find(high), std::string::npos) << quiet.err;
-  EXPECT_TRUE(fs::is_regular_file(dir_ / "o" / "summary.json"));
+  // The notes are kept in summary.json too, for a pipeline that reads only that file.
+  const auto j = nlohmann::json::parse(slurp(dir_ / "o" / "summary.json"));
+  ASSERT_EQ(j["input_notes"].size(), 2u) << j["input_notes"].dump();
+  EXPECT_EQ(j["input_notes"][0]["file"], (dir_ / "p.csv").string());
+  EXPECT_EQ(j["input_notes"][0]["line"], 4);
+  EXPECT_EQ(j["input_notes"][0]["field"], "x");
+  EXPECT_EQ("Note: " + (dir_ / "p.csv").string() + ":4: x: " +
+                j["input_notes"][0]["note"].get<std::string>() + "\n",
+            overhang);
+  EXPECT_EQ(j["input_notes"][1]["field"], "sources[0].z");
+  EXPECT_EQ(j["input_notes"][1]["line"], 16);
 
   std::ofstream(dir_ / "pit.toml")
       << "[scenario]\nname = \"pit\"\n[simulation]\nseed = 1\nthrows = 1\n"
@@ -283,6 +294,9 @@ TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
   const Result pq = pierre("run " + q(dir_ / "pit.toml") + " -q --out " + q(dir_ / "po"));
   EXPECT_EQ(pq.code, 0) << pq.err;
   EXPECT_NE(pq.err.find(pit_note), std::string::npos) << pq.err;
+  const auto pj = nlohmann::json::parse(slurp(dir_ / "po" / "summary.json"));
+  ASSERT_EQ(pj["input_notes"].size(), 1u) << pj["input_notes"].dump();
+  EXPECT_EQ(pj["input_notes"][0]["field"], "quarries[0].sources[0].z");
 }
 
 // A material that no segment uses is noted (it changes nothing; often one left over); the used

@@ -691,6 +691,37 @@ TEST(XlsxReport, ResolvedBarrierInputsShowTheirValuesAndOrigins) {
   EXPECT_TRUE(number(in, *height, 1));
 }
 
+// The readers' notes (likely mistakes the run went on with) reach the client's report: on the
+// Summary beside the run's settings, and on Inputs above the echoed scenario.
+TEST(XlsxReport, InputNotesAreOnTheSummaryAndInputs) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  io::InputNote n;
+  n.file = "profile.csv";
+  n.line = 5;
+  n.field = "x";
+  n.text = "profile segment 1 runs back in x: it is read as an overhang";
+  f->scenario.notes.push_back(n);
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  const auto tpl = io::load_report_template(kTemplate);
+  io::write_report(xlsx, f->data, tpl);
+  const auto [r, sheets] = export_sheets(xlsx, dir.path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Sheet& sum = sheets.at("Summary");
+  const auto k = find_row(sum, 0, tpl.get("labels", "input_notes"));
+  ASSERT_TRUE(k);
+  EXPECT_EQ(cell(sum, *k, 2)->text, "profile.csv:5: x: " + n.text);
+  const Sheet& in = sheets.at("Inputs");
+  EXPECT_TRUE(find_row(in, 0, tpl.get("labels", "input_notes") + ": profile.csv:5: x: " + n.text));
+  // Without notes, no such line.
+  f->scenario.notes.clear();
+  io::write_report(xlsx, f->data, tpl);
+  const auto [r2, plain] = export_sheets(xlsx, dir.path());
+  ASSERT_EQ(r2.status, 0) << r2.output;
+  EXPECT_FALSE(find_row(plain.at("Summary"), 0, tpl.get("labels", "input_notes")));
+}
+
 TEST(XlsxReport, LibreOfficePrintsToPdf) {
   PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
