@@ -50,7 +50,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "crossings",    "capped",       "complete",     "no_rows",     "quarry",
                  "quarry_summary", "quarry_average", "quarry_geometry", "quarry_counts",
                  "quarry_zones", "quarry_statistics", "quarry_fits", "quarry_exceedance",
-                 "quarry_governing", "stop_reasons", "quarry_profile", "quarry_inputs"};
+                 "quarry_governing", "stop_reasons", "quarry_profile", "quarry_inputs",
+                 "profile_lines", "profile_plain"};
   s["labels"] = {"project",       "description", "scenario_file", "date",        "version",
                  "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",

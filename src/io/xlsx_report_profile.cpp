@@ -20,7 +20,14 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   width(ws, 0, 7, 12);
   // A quarry's sections are drawn on their rows' sheets: the title says so, not what a slope
   // scenario's chart would show.
-  text(ws, 0, 0, t_.get("titles", d_.quarry ? "quarry_profile" : "profile"), title());
+  // The title names what the chart holds: barriers stand at lines, so lines without barriers
+  // or neither.
+  const bool lines = d_.scenario && !d_.scenario->scenario.lines.empty();
+  const char* key = d_.quarry              ? "quarry_profile"
+                    : !d_.barriers.empty() ? "profile"
+                    : lines                ? "profile_lines"
+                                           : "profile_plain";
+  text(ws, 0, 0, t_.get("titles", key), title());
   if (d_.quarry) {
     text(ws, 2, 0, t_.get("labels", "quarry_profile"), note());
     return;

@@ -722,6 +722,30 @@ TEST(XlsxReport, InputNotesAreOnTheSummaryAndInputs) {
   EXPECT_FALSE(find_row(plain.at("Summary"), 0, tpl.get("labels", "input_notes")));
 }
 
+// The Profile sheet's title names what its chart holds: barriers stand at observation lines,
+// so a run has both, lines alone, or neither.
+TEST(XlsxReport, TheProfileTitleNamesWhatTheChartHolds) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  const auto tpl = io::load_report_template(kTemplate);
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  auto title = [&] {
+    io::write_report(xlsx, f->data, tpl);
+    const auto [r, sheets] = export_sheets(xlsx, dir.path());
+    EXPECT_EQ(r.status, 0) << r.output;
+    const Field* c = sheets.count("Profile") ? cell(sheets.at("Profile"), 0, 0) : nullptr;
+    return c ? c->text : std::string("(no title)");
+  };
+  ASSERT_FALSE(f->data.barriers.empty());
+  ASSERT_FALSE(f->scenario.scenario.lines.empty());
+  EXPECT_EQ(title(), tpl.get("titles", "profile"));
+  f->data.barriers.clear();
+  EXPECT_EQ(title(), tpl.get("titles", "profile_lines"));
+  f->scenario.scenario.lines.clear();
+  EXPECT_EQ(title(), tpl.get("titles", "profile_plain"));
+}
+
 TEST(XlsxReport, LibreOfficePrintsToPdf) {
   PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
