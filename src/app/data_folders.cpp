@@ -99,7 +99,7 @@ io::ReportTemplate load_report_layout(std::FILE* notes) {
   io::ReportTemplate layout = io::load_report_template(file);
   // What a firm's copy lacks (the built-in layout gives it) or holds in vain (an earlier
   // layout's key), said on stderr so that the firm brings its copy up to date.
-  auto listed = [](const std::vector<std::string>& keys) {
+  auto some_keys = [](const std::vector<std::string>& keys) {
     constexpr std::size_t kShown = 6;
     std::string names;
     for (std::size_t i = 0; i < std::min(keys.size(), kShown); ++i)
@@ -109,13 +109,13 @@ io::ReportTemplate load_report_layout(std::FILE* notes) {
   };
   if (notes && !layout.built_in_keys.empty())
     fmt::print(notes, "Note: the report layout {} leaves out {}: the layout built into pierre gives {}.\n",
-               file.string(), listed(layout.built_in_keys),
+               file.string(), some_keys(layout.built_in_keys),
                layout.built_in_keys.size() == 1 ? "it" : "them");
   if (notes && !layout.retired_keys.empty())
     fmt::print(notes,
                "Note: the report layout {} holds {} that this version of pierre no longer uses: "
                "{} ignored.\n",
-               file.string(), listed(layout.retired_keys),
+               file.string(), some_keys(layout.retired_keys),
                layout.retired_keys.size() == 1 ? "it is" : "they are");
   return layout;
 }

@@ -2,6 +2,7 @@
 // input error naming the file, the line, the field and the value found.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -249,7 +250,12 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(BarrierReader, AFileTheRulesFolderLacksSaysHowTheFolderWasChosen) {
   TempDir dir, rules;
   // A rules folder holding the thesis's rule set but not the class table it names.
-  rules.write("thesis-2015.toml", test::read_file(kRules / "thesis-2015.toml"));
+  const std::string thesis = test::read_file(kRules / "thesis-2015.toml");
+  rules.write("thesis-2015.toml", thesis);
+  // The line of `classes = "etag027-classes"` in it, counted from the file.
+  const auto at = thesis.find("\nclasses = \"etag027-classes\"");
+  ASSERT_NE(at, std::string::npos);
+  const long classes_line = 2 + std::count(thesis.begin(), thesis.begin() + static_cast<std::ptrdiff_t>(at), '\n');
   rules.write("materials.toml", test::read_file(kRules / "materials.toml"));
   const io::RulesFolder given(rules.path(), "the rules folder given by --rules");
   try {
@@ -257,13 +263,14 @@ TEST(BarrierReader, AFileTheRulesFolderLacksSaysHowTheFolderWasChosen) {
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), rules.path() / "thesis-2015.toml");
-    EXPECT_EQ(e.line(), 46);  // classes = "etag027-classes"
+    EXPECT_EQ(e.line(), classes_line);
     EXPECT_EQ(e.field(), "rule_set.classes");
     EXPECT_EQ(e.found(), "\"etag027-classes\"");
     EXPECT_EQ(e.expected(), "an energy class table etag027-classes.toml beside the rule set or in " +
                                 rules.path().string() + " (the rules folder given by --rules)");
-    EXPECT_EQ(std::string(e.what()), (rules.path() / "thesis-2015.toml").string() +
-                                         ":46: rule_set.classes: found \"etag027-classes\", expected " +
+    EXPECT_EQ(std::string(e.what()), (rules.path() / "thesis-2015.toml").string() + ":" +
+                                         std::to_string(classes_line) +
+                                         ": rule_set.classes: found \"etag027-classes\", expected " +
                                          e.expected());
   }
   // A rule set that names no class table means the default: said at its [rule_set] line.
