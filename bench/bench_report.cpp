@@ -71,11 +71,7 @@ design::BarrierSample barrier_sample(const sim::Scenario& sc, const design::RunS
     s.rotational_energy = ls.rotational_energy;
   }
   s.not_reached = rs.trajectories() >= s.speed.size() ? rs.trajectories() - s.speed.size() : 0;
-  for (const auto& b : sc.blocks) {
-    s.block_volumes.push_back(b.volume());
-    s.block_diameters.push_back(b.diameter());
-    s.block_densities.push_back(b.density);
-  }
+  s.blocks = design::blocks_thrown(sc.blocks);
   s.throws = sc.settings.throws;
   return s;
 }

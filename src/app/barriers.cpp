@@ -25,11 +25,7 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
     }
     const std::uint64_t n = samples.trajectories();
     s.not_reached = n >= s.speed.size() ? n - s.speed.size() : 0;
-    for (const model::Block& b : sc.blocks) {
-      s.block_volumes.push_back(b.volume());
-      s.block_diameters.push_back(b.diameter());
-      s.block_densities.push_back(b.density);
-    }
+    s.blocks = design::blocks_thrown(sc.blocks);
     s.throws = sc.settings.throws;
     const design::BarrierOutcome o = design::design_barrier(
         spec, loaded.barrier_rules[i], loaded.barrier_classes[i], s, loaded.barrier_observed[i],

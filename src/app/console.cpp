@@ -146,28 +146,6 @@ void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes) 
   for (const auto& n : notes) fmt::print(out, "Note: {}\n", n.message());
 }
 
-void print_source_notes(std::FILE* out, const sim::Scenario& scenario) {
-  for (std::size_t i : sim::sources_against_main_direction(scenario)) {
-    const sim::Source& src = scenario.sources[i];
-    fmt::print(out,
-               "Note: the ground under source \"{}\" (x = {} m) falls towards the profile's "
-               "first vertex,\n      so its blocks travel against the vertex order, and "
-               "observation lines count only\n      first crossings in that order. List the "
-               "profile's vertices from the source end.\n",
-               src.name.empty() ? fmt::format("{}", i) : src.name, src.position.x);
-  }
-  // A material no segment uses changes nothing: often one left from an earlier profile, or
-  // meant for a segment that names another.
-  std::vector<bool> used(scenario.materials.size(), false);
-  for (const auto& seg : scenario.profile.segments())
-    if (seg.material >= 0 && static_cast<std::size_t>(seg.material) < used.size())
-      used[static_cast<std::size_t>(seg.material)] = true;
-  for (std::size_t m = 0; m < used.size(); ++m)
-    if (!used[m])
-      fmt::print(out, "Note: material \"{}\" is defined but no segment of the profile uses it.\n",
-                 scenario.materials[m].name);
-}
-
 namespace {
 
 std::string g(double v, int width) {

@@ -41,11 +41,6 @@ class ProgressBar {
 // <field>: <text>".
 void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes);
 
-// A note for each source whose ground falls towards the profile's first vertex (its blocks
-// travel against the main direction, in which observation lines count first crossings), and
-// for each material that no segment uses.
-void print_source_notes(std::FILE* out, const sim::Scenario& scenario);
-
 // A run's wall time to three significant digits: "42.3 ms" below a second, else "1.25 s".
 std::string duration_text(double seconds);
 

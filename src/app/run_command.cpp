@@ -113,7 +113,8 @@ class RunCommand final : public Command {
         throws_opt_->count() ? std::optional<std::uint32_t>(throws_) : std::nullopt;
     loaded.overrides = command_line_overrides(loaded, seed, throws);
     // Likely mistakes that do not stop the run (an x out of order read as an overhang, a source
-    // far above the ground): said even when quiet, on stderr, where a pipeline's log keeps them.
+    // far above the ground or falling against the vertex order, a material no segment uses):
+    // said even when quiet, on stderr, where a pipeline's log keeps them.
     print_input_notes(quiet_ ? stderr : stdout, loaded.notes);
     if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
       QuarryRunOptions q;
@@ -134,10 +135,6 @@ class RunCommand final : public Command {
       // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
       io::check_trajectory_count(sc, loaded.file, 0, "--throws", std::to_string(*throws));
     }
-    // A source falling against the profile's direction is likely a mistake that empties every
-    // line: said even when quiet, on stderr, where a pipeline's log keeps it.
-    print_source_notes(quiet_ ? stderr : stdout, sc);
-
     sim::RunOptions opt;
     opt.threads = threads_;
     opt.record_impacts = impacts_;

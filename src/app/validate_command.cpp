@@ -5,6 +5,8 @@
 #include "console.hpp"
 #include "data_folders.hpp"
 #include "report.hpp"
+#include "pierre/design/design_block.hpp"
+#include "pierre/design/number_text.hpp"
 #include "pierre/io/scenario_reader.hpp"
 
 namespace pierre::app {
@@ -44,22 +46,32 @@ class ValidateCommand final : public Command {
     fmt::print(
         "{}: valid. \"{}\": a profile of {} vertices from x = {} to {} m; {} material{}: {}; "
         "{} block{} in {} group{}; {} source{}; {} observation line{}{}{}. {} throw{} per block "
-        "and source with seed {}: {} trajectories to run.\n",
+        "and source with seed {}: {} trajector{} to run.\n",
         l.file.string(), s.name, s.profile.vertices().size(), s.profile.x_min(),
         s.profile.x_max(), s.materials.size(), s.materials.size() == 1 ? "" : "s", mats,
         s.blocks.size(), s.blocks.size() == 1 ? "" : "s", l.block_groups.size(),
         l.block_groups.size() == 1 ? "" : "s", s.sources.size(), s.sources.size() == 1 ? "" : "s",
         s.lines.size(), s.lines.size() == 1 ? "" : "s", lines.empty() ? "" : ": ", lines,
         s.settings.throws, s.settings.throws == 1 ? "" : "s", s.settings.seed,
-        s.trajectory_count());
+        s.trajectory_count(), s.trajectory_count() == 1 ? "y" : "ies");
+    const design::BlocksThrown thrown = design::blocks_thrown(s.blocks);
     for (std::size_t i = 0; i < l.barriers.size(); ++i) {
       const auto& b = l.barriers[i];
-      fmt::print("  barrier \"{}\" at {}: rule set {} ({}), {}\n", b.name, b.line,
+      // What the design will stand on besides the crossings: said now, before a long run.
+      const auto block = design::resolve_design_block(b.design_block, b.free_board_diameter, thrown);
+      const std::string block_text =
+          block ? fmt::format("; design block {} m³ × {} kg/m³ = {} kg ({}; density {}), D_f = "
+                              "{} m ({})",
+                              design::number_text(block->volume), design::number_text(block->density),
+                              design::number_text(block->mass()), block->volume_how,
+                              block->density_how, design::number_text(block->free_board_diameter),
+                              block->free_board_diameter_how)
+                : "; no design block: " + block.error;
+      fmt::print("  barrier \"{}\" at {}: rule set {} ({}), {}{}\n", b.name, b.line,
                  l.barrier_rules[i].name, l.barrier_rules_files[i].string(),
-                 b.candidate ? "checks a candidate" : "a design (no candidate)");
+                 b.candidate ? "checks a candidate" : "a design (no candidate)", block_text);
     }
     print_input_notes(stdout, l.notes);
-    print_source_notes(stdout, s);
     return kExitOk;
   }
 
@@ -73,9 +85,10 @@ class ValidateCommand final : public Command {
     std::uint64_t total = 0;
     for (const auto& q : l.quarries) total += q.scenario.trajectory_count();
     fmt::print("{}: valid. \"{}\": a quarry scenario of {} section{}; {} material{}: {}. {} "
-               "trajectories to run.\n",
+               "trajector{} to run.\n",
                l.file.string(), s.name, l.quarries.size(), l.quarries.size() == 1 ? "" : "s",
-               s.materials.size(), s.materials.size() == 1 ? "" : "s", mats, total);
+               s.materials.size(), s.materials.size() == 1 ? "" : "s", mats, total,
+               total == 1 ? "y" : "ies");
     for (const auto& q : l.quarries) {
       const sim::Scenario& c = q.scenario;
       const design::QuarryGeometry& g = q.geometry;
@@ -83,13 +96,14 @@ class ValidateCommand final : public Command {
       fmt::print(
           "  quarry section \"{}\"{}: {} vertices from x = {} to {} m; {} block{} in {} "
           "group{}; {} source{}; {} throw{} per block and source with seed {}{}: {} "
-          "trajectories. Crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); "
+          "trajector{}. Crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); "
           "floor from segment {}, {:.2f} m long. Rule set {} ({}); {} work area{}{}{}{}.\n",
           q.spec.name, q.spec.group.empty() ? "" : fmt::format(" (group \"{}\")", q.spec.group),
           c.profile.vertices().size(), c.profile.x_min(), c.profile.x_max(), c.blocks.size(),
           c.blocks.size() == 1 ? "" : "s", groups, groups == 1 ? "" : "s", c.sources.size(),
           c.sources.size() == 1 ? "" : "s", c.settings.throws, c.settings.throws == 1 ? "" : "s",
-          c.settings.seed, q.seed_given ? " (given)" : "", c.trajectory_count(), g.crest.x,
+          c.settings.seed, q.seed_given ? " (given)" : "", c.trajectory_count(),
+          c.trajectory_count() == 1 ? "y" : "ies", g.crest.x,
           design::to_string(g.crest_origin), g.toe.x, design::to_string(g.toe_origin), g.height,
           design::to_string(g.height_origin), g.floor_segment, g.floor_length, q.rules.name,
           q.rules_file.string(), q.spec.work_areas.size(), q.spec.work_areas.size() == 1 ? "" : "s",

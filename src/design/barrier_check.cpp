@@ -126,23 +126,6 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
   };
   d.how["gamma_E_MEL"] = cited("gamma_E_MEL", "γE,MEL", d.gamma_E_MEL);
   d.how["gamma_E_SEL"] = cited("gamma_E_SEL", "γE,SEL", d.gamma_E_SEL);
-  const DesignBlock& b = d.spec.design_block;
-  switch (b.kind) {
-    case DesignBlock::Kind::given:
-      d.how["volume"] = "the design block, given";
-      break;
-    case DesignBlock::Kind::largest:
-      d.how["volume"] = "the largest block thrown";
-      break;
-    case DesignBlock::Kind::percentile:
-      d.how["volume"] = "P" + number_text(b.percentile) + " of the volumes of the blocks thrown";
-      break;
-  }
-  d.how["density"] = b.density > 0 ? "given with the design block"
-                     : b.kind == DesignBlock::Kind::largest ? "the largest block's"
-                                                            : "the mean of the blocks'";
-  d.how["free_board_diameter"] = d.spec.free_board_diameter ? "given"
-                                                            : "the mean equivalent diameter of the blocks thrown";
   d.how["free_board"] = "f = max(" + number_text(rules.free_board_abs) + " m, " +
                         number_text(rules.free_board_rel) + " · D_f) (" + rules.name + ")";
   d.how["h_d"] = "h_k · γh";
@@ -211,36 +194,17 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   d.h_max_sim = *std::max_element(sample.height.begin(), sample.height.end());
 
   // The design block and the free-board diameter.
-  const DesignBlock& b = spec.design_block;
-  if (b.kind == DesignBlock::Kind::given) {
-    d.design_volume = b.volume;
-    d.design_density = b.density;
-  } else {
-    if (sample.block_volumes.empty() || sample.block_densities.size() != sample.block_volumes.size()) {
-      out.error = "no block list for the design block rule";
-      return out;
-    }
-    if (b.kind == DesignBlock::Kind::largest) {
-      const auto it = std::max_element(sample.block_volumes.begin(), sample.block_volumes.end());
-      d.design_volume = *it;
-      d.design_density = sample.block_densities[static_cast<std::size_t>(it - sample.block_volumes.begin())];
-    } else {
-      d.design_volume = stats::percentile(sample.block_volumes, b.percentile);
-      d.design_density = std::accumulate(sample.block_densities.begin(), sample.block_densities.end(), 0.0) /
-                         static_cast<double>(sample.block_densities.size());
-    }
-    if (b.density > 0) d.design_density = b.density;
-  }
-  if (spec.free_board_diameter) {
-    d.free_board_diameter = *spec.free_board_diameter;
-  } else if (!sample.block_diameters.empty()) {
-    d.free_board_diameter =
-        std::accumulate(sample.block_diameters.begin(), sample.block_diameters.end(), 0.0) /
-        static_cast<double>(sample.block_diameters.size());
-  } else {
-    out.error = "no free_board_diameter and no block list to take the mean diameter from";
+  const auto block = resolve_design_block(spec.design_block, spec.free_board_diameter, sample.blocks);
+  if (!block) {
+    out.error = block.error;
     return out;
   }
+  d.design_volume = block->volume;
+  d.design_density = block->density;
+  d.free_board_diameter = block->free_board_diameter;
+  d.how["volume"] = block->volume_how;
+  d.how["density"] = block->density_how;
+  d.how["free_board_diameter"] = block->free_board_diameter_how;
 
   // Steps 3–6.
   DesignInputs in;

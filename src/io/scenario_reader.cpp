@@ -179,6 +179,27 @@ std::vector<model::Material> read_materials(const TomlTable& top, Presets& prese
   return out;
 }
 
+// A material no segment uses changes nothing: often one left from an earlier profile, or meant
+// for a segment that names another. Said at its [materials.NAME] table.
+void note_unused_materials(const TomlTable& top, const std::vector<model::Material>& materials,
+                           const std::vector<const geometry::Profile*>& profiles,
+                           std::vector<InputNote>& notes) {
+  std::vector<bool> used(materials.size(), false);
+  for (const geometry::Profile* p : profiles)
+    for (const auto& seg : p->segments())
+      if (seg.material >= 0 && static_cast<std::size_t>(seg.material) < used.size())
+        used[static_cast<std::size_t>(seg.material)] = true;
+  const auto mats = top.subtable("materials", {});
+  for (std::size_t m = 0; m < used.size(); ++m) {
+    if (used[m]) continue;
+    const toml::node* node = mats->find(materials[m].name);
+    notes.push_back({top.file(), node ? line_of(*node) : 0, mats->field(materials[m].name),
+                     fmt::format("material \"{}\" is defined but no segment of {} uses it",
+                                 materials[m].name,
+                                 profiles.size() > 1 ? "any section's profile" : "the profile")});
+  }
+}
+
 // ---- simulation ----
 
 sim::SimulationSettings read_simulation(const TomlTable& top) {
@@ -580,12 +601,18 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
     if (out.quarries.empty())
       throw InputError(scenario_file, line_of(*top.find("quarries")), "quarries", "no section",
                        "at least one [[quarries]] section");
-    for (const auto& q : out.quarries) out.notes.insert(out.notes.end(), q.notes.begin(), q.notes.end());
+    std::vector<const geometry::Profile*> profiles;
+    for (const auto& q : out.quarries) {
+      out.notes.insert(out.notes.end(), q.notes.begin(), q.notes.end());
+      profiles.push_back(&q.scenario.profile);
+    }
+    note_unused_materials(top, out.scenario.materials, profiles, out.notes);
     return out;
   }
   out.scenario.profile = detail::read_profile(top, out.scenario.materials, "", out.notes);
   detail::read_blocks(top, out.block_groups, out.scenario.blocks, "");
   detail::read_sources(top, out.scenario, "", out.notes);
+  note_unused_materials(top, out.scenario.materials, {&out.scenario.profile}, out.notes);
   {
     const auto s = top.subtable("simulation", {});
     const toml::node& throws = *s->find("throws");

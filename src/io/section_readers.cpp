@@ -14,6 +14,7 @@
 #include "csv_table.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/model/model_defaults.hpp"
+#include "pierre/sim/trajectory.hpp"
 
 namespace pierre::io::detail {
 
@@ -443,6 +444,7 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
   if (!a)
     top.missing("sources", fmt::format("at least one [[{}]] table with x and z",
                                        dotted(table_path, "sources")));
+  std::vector<std::pair<long, std::string>> source_at;  // each source's table: line, field
   for (std::size_t i = 0; i < a->size(); ++i) {
     const toml::node& node = *a->get(i);
     const TomlTable t(top.file(), *node.as_table(), fmt::format("{}[{}]", top.field("sources"), i), line_of(node),
@@ -495,6 +497,20 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
                          z_hi)});
     }
     sc.sources.push_back(std::move(s));
+    source_at.push_back({line_of(node), fmt::format("{}[{}]", top.field("sources"), i)});
+  }
+  // A profile listed from the toe end (x rising uphill) is valid, but its blocks travel against
+  // the vertex order, which the results are counted in: often a profile typed the wrong way.
+  for (const std::size_t i : sim::sources_against_main_direction(sc)) {
+    const sim::Source& s = sc.sources[i];
+    notes.push_back(
+        {top.file(), source_at[i].first, source_at[i].second,
+         fmt::format("the ground under source \"{}\" (x = {} m) falls towards the profile's "
+                     "first vertex, so its blocks travel against the vertex order, in which {}. "
+                     "List the profile's vertices from the source end",
+                     s.name, s.position.x,
+                     table_path.empty() ? "observation lines count first crossings"
+                                        : "the section's distances from the toe are measured")});
   }
 }
 

@@ -13,6 +13,7 @@
 
 #include "pierre/design/barrier_rules.hpp"
 #include "pierre/design/check_line.hpp"
+#include "pierre/design/design_block.hpp"
 #include "pierre/stats/bootstrap.hpp"
 #include "pierre/stats/kolmogorov_smirnov.hpp"
 #include "pierre/stats/lognormal_fit.hpp"
@@ -20,14 +21,6 @@
 #include "pierre/stats/weibull_fit.hpp"
 
 namespace pierre::design {
-
-// The design block: given, or a rule over the blocks thrown.
-struct DesignBlock {
-  enum class Kind { given, largest, percentile } kind = Kind::largest;
-  double volume = 0;    // m³ (given)
-  double density = 0;   // kg/m³ (given; else the block's own)
-  double percentile = 95;  // of the block volumes (Kind::percentile)
-};
 
 struct CandidateBarrier {
   std::optional<int> energy_class;
@@ -59,9 +52,7 @@ struct BarrierSample {
   std::vector<double> energy;              // J, translational, each block's own mass
   std::vector<double> rotational_energy;   // J
   std::uint64_t not_reached = 0;           // trajectories that never crossed
-  std::vector<double> block_volumes;       // m³, every block thrown (for the design block rule)
-  std::vector<double> block_diameters;     // m, every block thrown (default D_f)
-  std::vector<double> block_densities;     // kg/m³
+  BlocksThrown blocks;                     // every block thrown (design block rule, default D_f)
   std::uint32_t throws = 0;                // per block and source (0: unknown), for sample.size
 };
 

@@ -382,6 +382,24 @@ TEST_F(Check, HelpShowsTheExitCodes) {
     EXPECT_NE(pierre(cmd).out.find("130 when interrupted"), std::string::npos) << cmd;
 }
 
+// validate says what each barrier's design will stand on besides the crossings: the design
+// block and D_f. design.toml: blocks of 500 kg and 1.2 m³ at 2650 kg/m³, the default rule (the
+// largest), no D_f (the mean equivalent diameter: 0.7116 and 1.3184 m by hand).
+TEST_F(Check, ValidateSaysTheDesignBlockAndFreeBoardDiameter) {
+  const Result v = pierre("validate " + kData + "design.toml");
+  EXPECT_EQ(v.code, 0) << v.err;
+  EXPECT_NE(v.out.find("a design (no candidate); design block 1.2 m³ × 2650 kg/m³ = 3180 kg (the "
+                       "largest block thrown; density the largest block's), D_f = 1.015 m (the "
+                       "mean equivalent diameter of the blocks thrown)\n"),
+            std::string::npos)
+      << v.out;
+  const Result given = pierre("validate " + kData + "pass.toml");
+  EXPECT_NE(given.out.find("design block 1 m³ × 2650 kg/m³ = 2650 kg (the design block, given; "
+                           "density given with the design block), D_f = 1 m (given)"),
+            std::string::npos)
+      << given.out;
+}
+
 }  // namespace
 
 TEST_F(Check, WritesTheDesignReportWithABarrierSheetAndItsCharts) {

@@ -225,20 +225,31 @@ TEST_F(Cli, ValidatePrintsASummary) {
 }
 
 // A profile listed from the toe end: valid, but its blocks travel against the vertex order and
-// no line would count them. validate and run say so; --quiet keeps run silent.
+// no line would count them. validate and run say so at the source's table (stderr under --quiet),
+// and summary.json keeps it.
 TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   std::ofstream(dir_ / "p.csv") << "x,z,material\n0,38,t\n100,40,t\n150,70,t\n200,100,\n";
   std::ofstream(dir_ / "s.toml") << one_block_scenario(
       {"from the toe", 2, "file = \"p.csv\"", "t", "preset = \"talus\"", 1000,
        "name = \"crest\"\nx = 199.0\nz = 101.0"});
-  const std::string note = "the ground under source \"crest\" (x = 199 m) falls towards";
+  const std::string note =
+      "Note: " + (dir_ / "s.toml").string() +
+      ":13: sources[0]: the ground under source \"crest\" (x = 199 m) falls towards the "
+      "profile's first vertex, so its blocks travel against the vertex order, in which "
+      "observation lines count first crossings. List the profile's vertices from the source end\n";
   const Result v = pierre("validate " + q(dir_ / "s.toml"));
   EXPECT_EQ(v.code, 0) << v.err;
   EXPECT_NE(v.out.find(note), std::string::npos) << v.out;
   const Result r = pierre("run " + q(dir_ / "s.toml") + " --out " + q(dir_ / "o"));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find(note), std::string::npos) << r.out;
-  EXPECT_TRUE(pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o")).out.empty());
+  const Result quiet = pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o"));
+  EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+  EXPECT_NE(quiet.err.find(note), std::string::npos) << quiet.err;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "o" / "summary.json"));
+  ASSERT_EQ(j["input_notes"].size(), 1u) << j["input_notes"].dump();
+  EXPECT_EQ(j["input_notes"][0]["field"], "sources[0]");
+  EXPECT_EQ(j["input_notes"][0]["line"], 13);
 }
 
 // The reader's notes (a profile x out of order read as an overhang, a source far above the
@@ -299,8 +310,9 @@ TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
   EXPECT_EQ(pj["input_notes"][0]["field"], "quarries[0].sources[0].z");
 }
 
-// A material that no segment uses is noted (it changes nothing; often one left over); the used
-// one is not.
+// A material that no segment uses is noted at its table (it changes nothing; often one left
+// over); the used one is not. In a quarry scenario a material is unused when no section's profile
+// uses it (a section listed from the floor end is an error there: no toe past the crest).
 TEST_F(Cli, AMaterialNoSegmentUsesIsNoted) {
   std::ofstream(dir_ / "s.toml") << one_block_scenario(
       {"spare material", 2, "points = [[0.0, 100.0, \"t\"], [200.0, 0.0, \"\"]]", "t",
@@ -308,10 +320,34 @@ TEST_F(Cli, AMaterialNoSegmentUsesIsNoted) {
        "x = 1.0\nz = 101.0"});
   const Result v = pierre("validate " + q(dir_ / "s.toml"));
   EXPECT_EQ(v.code, 0) << v.err;
-  EXPECT_NE(v.out.find("Note: material \"spare\" is defined but no segment of the profile uses it."),
+  EXPECT_NE(v.out.find("Note: " + (dir_ / "s.toml").string() +
+                       ":10: materials.spare: material \"spare\" is defined but no segment of "
+                       "the profile uses it\n"),
             std::string::npos)
       << v.out;
   EXPECT_EQ(v.out.find("material \"t\" is defined"), std::string::npos) << v.out;
+
+  std::ofstream(dir_ / "pit.toml")
+      << "[scenario]\nname = \"pit\"\n[simulation]\nseed = 1\nthrows = 1\n"
+         "[materials.face]\npreset = \"quarry-face\"\n[materials.floor]\npreset = \"quarry-floor\"\n"
+         "[materials.spare]\npreset = \"talus\"\n"
+         "[[quarries]]\nname = \"East\"\n"
+         "profile = { points = [[0.0, 20.0, \"face\"], [10.0, 20.0, \"face\"], [20.0, 0.0, "
+         "\"face\"], [90.0, 0.0, \"\"]] }\nblocks = { table = [{ id = \"A\", mass = 500.0 }] }\n"
+         "sources = [{ x = 10.3, z = 20.0 }]\n"
+         "[[quarries]]\nname = \"West\"\n"
+         "profile = { points = [[0.0, 20.0, \"face\"], [10.0, 20.0, \"face\"], [20.0, 0.0, "
+         "\"floor\"], [90.0, 0.0, \"\"]] }\nblocks = { table = [{ id = \"A\", mass = 500.0 }] }\n"
+         "sources = [{ x = 10.3, z = 20.0 }]\n";
+  const Result pv = pierre("validate " + q(dir_ / "pit.toml"));
+  EXPECT_EQ(pv.code, 0) << pv.err;
+  EXPECT_NE(pv.out.find("Note: " + (dir_ / "pit.toml").string() +
+                        ":10: materials.spare: material \"spare\" is defined but no segment of "
+                        "any section's profile uses it\n"),
+            std::string::npos)
+      << pv.out;
+  EXPECT_EQ(pv.out.find("material \"floor\" is defined"), std::string::npos) << pv.out;
+  EXPECT_EQ(pv.out.find("falls towards"), std::string::npos) << pv.out;
 }
 
 TEST_F(Cli, HelpShowsExamplesAndExitsZero) {

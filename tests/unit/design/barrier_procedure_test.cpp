@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include "barrier_fixtures.hpp"
@@ -28,9 +29,9 @@ design::BarrierSample sample(std::size_t n = kN, std::uint64_t seed = 7) {
   for (double v : s.speed) s.energy.push_back(0.5 * 2500 * v * v);  // 2.5 t blocks, J
   s.rotational_energy.assign(n, 1000.0);
   s.not_reached = 100;
-  s.block_volumes = {0.5, 1.0, 1.5, 2.0};
-  s.block_densities = {2600, 2650, 2700, 2800};
-  s.block_diameters = {1.0, 1.2, 1.4, 1.6};
+  s.blocks.volumes = {0.5, 1.0, 1.5, 2.0};
+  s.blocks.densities = {2600, 2650, 2700, 2800};
+  s.blocks.diameters = {1.0, 1.2, 1.4, 1.6};
   s.throws = 10;
   return s;
 }
@@ -215,6 +216,45 @@ TEST(BarrierProcedure, DesignBlockRulesAndDefaultFreeBoard) {
   b.design_block.density = 2500;
   out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
   EXPECT_DOUBLE_EQ(out.design->design_density, 2500);
+}
+
+// The design block needs no simulation (validate says it): from a scenario's blocks, each an
+// equal-volume sphere, and without blocks only when everything is given.
+TEST(BarrierProcedure, TheDesignBlockIsResolvedFromTheBlocksAlone) {
+  model::Block small, big;
+  small.mass = 500;
+  small.density = 2500;  // 0.2 m³
+  big.mass = 2700;
+  big.density = 2700;  // 1 m³
+  const design::BlocksThrown thrown = design::blocks_thrown({small, big});
+  ASSERT_EQ(thrown.volumes.size(), 2u);
+  EXPECT_DOUBLE_EQ(thrown.volumes[0], 0.2);
+  const double d_big = 2 * std::cbrt(3 / (4 * std::numbers::pi));  // D of 1 m³
+  EXPECT_NEAR(thrown.diameters[1], d_big, 1e-12);
+  design::DesignBlock largest;  // the default rule
+  const auto v = design::resolve_design_block(largest, std::nullopt, thrown);
+  ASSERT_TRUE(v) << v.error;
+  EXPECT_DOUBLE_EQ(v->volume, 1.0);
+  EXPECT_DOUBLE_EQ(v->mass(), 2700);
+  EXPECT_NEAR(v->free_board_diameter, 0.5 * (2 * std::cbrt(0.6 / (4 * std::numbers::pi)) + d_big),
+              1e-12);
+  EXPECT_EQ(v->volume_how, "the largest block thrown");
+  EXPECT_EQ(v->free_board_diameter_how, "the mean equivalent diameter of the blocks thrown");
+  design::DesignBlock p90{design::DesignBlock::Kind::percentile, 0, 0, 90};
+  const auto p = design::resolve_design_block(p90, 0.8, thrown);
+  ASSERT_TRUE(p) << p.error;
+  EXPECT_DOUBLE_EQ(p->volume, 0.2 + 0.9 * 0.8);  // type 7 between the two volumes
+  EXPECT_DOUBLE_EQ(p->density, 2600);             // their mean
+  EXPECT_DOUBLE_EQ(p->free_board_diameter, 0.8);
+  EXPECT_EQ(p->volume_how, "P90 of the volumes of the blocks thrown");
+  // No blocks: a rule over them fails, and so does the default D_f; all given does not.
+  EXPECT_FALSE(design::resolve_design_block(largest, 1.0, {}));
+  const design::DesignBlock given{design::DesignBlock::Kind::given, 1.5, 2600, 95};
+  EXPECT_EQ(design::resolve_design_block(given, std::nullopt, {}).error,
+            "no free_board_diameter and no block list to take the mean diameter from");
+  const auto g = design::resolve_design_block(given, 1.0, {});
+  ASSERT_TRUE(g) << g.error;
+  EXPECT_DOUBLE_EQ(g->mass(), 3900);
 }
 
 TEST(BarrierProcedure, ObservedDataGiveTheObservedColumn) {
