@@ -480,9 +480,15 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
     if (cached == cache.end()) {  // read once per file, however many barriers name it
       if (const auto kind = detail::rule_file_kind(rules_file);
           kind != detail::RuleFileKind::barrier && kind != detail::RuleFileKind::other)
-        t.fail("rules", fmt::format("a barrier rule set ({} is {}; the barrier rule sets of {} are {})",
-                                    rules_file.string(), detail::describe(kind), rules_dir.string(),
-                                    quoted_list(barrier_rule_set_names(rules_dir))));
+      {
+        const auto names = barrier_rule_set_names(rules_dir);
+        t.fail("rules", fmt::format("a barrier rule set ({} is {}; the rules folder is {})",
+                                    rules_file.string(), detail::describe(kind),
+                                    rules_folder.named(names.empty()
+                                                           ? "it holds no barrier rule set"
+                                                           : "its barrier rule sets: " +
+                                                                 quoted_list(names))));
+      }
       design::BarrierRuleSet rules = load_rule_set_file(rules_file);
       design::EnergyClassTable classes =
           load_energy_classes_file(energy_classes_file(rules, rules_file, rules_folder));

@@ -257,6 +257,26 @@ TEST(TemporaryRuleSet, AFolderWithoutTheDefaultSaysWhichWasLookedFor) {
   }
 }
 
+// A rule set of another kind named as a barrier's: the error says what the file is and which
+// barrier rule sets the folder holds, with how the folder was chosen.
+TEST(TemporaryRuleSet, AQuarryRuleSetNamedForABarrierSaysWhatItIs) {
+  TempDir dir;
+  const auto s = dir.write("s.toml", with_barrier(
+      "[[barriers]]\nname = \"B1\"\nline = \"L\"\nrules = \"quarry-thesis-2015\"\n"));
+  try {
+    (void)io::load_scenario(s, io::RulesFolder(kRules, "the rules folder given by --rules"));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "barriers[0].rules");
+    EXPECT_EQ(e.found(), "\"quarry-thesis-2015\"");
+    EXPECT_EQ(e.expected(),
+              "a barrier rule set (" + (kRules / "quarry-thesis-2015.toml").string() +
+                  " is a quarry rule set; the rules folder is " + kRules.string() +
+                  " (the rules folder given by --rules; its barrier rule sets: "
+                  "\"peila-ronco-2009\", \"thesis-2015\"))");
+  }
+}
+
 TEST(TemporaryRuleSet, AnswerOutsideItsOptionsNamesThem) {
   TempDir dir;
   dir.write("onr-like.toml", kOnrLike);
