@@ -481,6 +481,22 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     const geometry::Vec2 p = s.position;
     const auto above = sc.profile.line_above(p.x, p.z);
     const auto below = sc.profile.ground_below(p.x, p.z);
+    // Inside the rock: placed on the ground over it (thesis §3.2.2). A few metres is a release
+    // point given roughly; the whole section's height and more is the other kind of elevation.
+    if (above && above->ground) {
+      const double depth = above->z - p.z;
+      if (depth > kFarAboveGround && depth > z_hi - z_lo)
+        notes.push_back(
+            {top.file(), line_of(*t.find("z")), t.field("z"),
+             fmt::format("source \"{}\" is {:.0f} m below the ground over it (z = {} m; the "
+                         "ground at x = {} m is at {:.1f} m), more than {:g} m and more than the "
+                         "profile's whole height ({:.1f} m, z from {:.1f} to {:.1f} m): it is "
+                         "placed on the ground there and starts from it. Check that z is an "
+                         "elevation of the same kind as the profile's (local, or absolute such "
+                         "as m a.s.l.)",
+                         s.name, depth, p.z, p.x, above->z, kFarAboveGround, z_hi - z_lo, z_lo,
+                         z_hi)});
+    }
     if (!(above && above->ground) && below) {
       const double drop = p.z - below->z;
       if (drop > kFarAboveGround && drop > z_hi - z_lo)

@@ -37,8 +37,9 @@ void read_blocks(const TomlTable& parent, std::vector<BlockGroup>& groups,
                  std::vector<model::Block>& blocks, std::string_view table_path);
 
 // parent.sources (one or more): appended to scenario.sources, each inside scenario.profile's
-// horizontal extent. A source far above the ground under it (kFarAboveGround) adds a note to
-// `notes`, at its z.
+// horizontal extent. A source far above the ground under it, or far below the ground over it
+// (kFarAboveGround), adds a note to `notes`, at its z; so does one whose ground falls towards
+// the profile's first vertex, at its table.
 void read_sources(const TomlTable& parent, sim::Scenario& scenario, std::string_view table_path,
                   std::vector<InputNote>& notes);
 

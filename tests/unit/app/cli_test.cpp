@@ -310,6 +310,30 @@ TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
   EXPECT_EQ(pj["input_notes"][0]["field"], "quarries[0].sources[0].z");
 }
 
+// A source given in absolute elevations over a profile in local ones lands far inside the rock:
+// placed on the ground, as the thesis has it, but noted at its z. A source a little inside the
+// rock (a release point given roughly) is not.
+TEST_F(Cli, ASourceFarBelowTheGroundIsNoted) {
+  std::ofstream(dir_ / "s.toml") << one_block_scenario(
+      {"deep", 2, "points = [[0.0, 100.0, \"t\"], [200.0, 0.0, \"\"]]", "t",
+       "preset = \"talus\"", 1000, "name = \"deep\"\nx = 50.0\nz = -300.0"});
+  const Result v = pierre("validate " + q(dir_ / "s.toml"));
+  EXPECT_EQ(v.code, 0) << v.err;
+  // The ground at x = 50 m is at 75 m: 375 m above the source; the profile is 100 m high.
+  EXPECT_NE(v.out.find("Note: " + (dir_ / "s.toml").string() +
+                       ":16: sources[0].z: source \"deep\" is 375 m below the ground over it "
+                       "(z = -300 m; the ground at x = 50 m is at 75.0 m), more than 100 m and "
+                       "more than the profile's whole height (100.0 m, z from 0.0 to 100.0 m)"),
+            std::string::npos)
+      << v.out;
+  std::ofstream(dir_ / "near.toml") << one_block_scenario(
+      {"near", 2, "points = [[0.0, 100.0, \"t\"], [200.0, 0.0, \"\"]]", "t",
+       "preset = \"talus\"", 1000, "name = \"near\"\nx = 50.0\nz = 70.0"});
+  const Result n = pierre("validate " + q(dir_ / "near.toml"));
+  EXPECT_EQ(n.code, 0) << n.err;
+  EXPECT_EQ(n.out.find("Note:"), std::string::npos) << n.out;
+}
+
 // A material that no segment uses is noted at its table (it changes nothing; often one left
 // over); the used one is not. In a quarry scenario a material is unused when no section's profile
 // uses it (a section listed from the floor end is an error there: no toe past the crest).
