@@ -476,42 +476,29 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     t.check("vz", std::abs(s.velocity.z) <= ModelDefaults::max_source_speed, speed);
     t.check("omega", std::abs(s.omega) <= ModelDefaults::max_source_spin,
             fmt::format("a spin from −{0:g} to {0:g} rad/s", ModelDefaults::max_source_spin));
-    // In the air (not inside the rock, where it is placed on the ground over it): how far it
-    // falls to the ground below.
+    // Far from the ground, in the air above it or inside the rock under it (placed on the ground
+    // over it, thesis §3.2.2): more than the whole section's height is the other kind of
+    // elevation; a few metres inside is a release point given roughly.
     const geometry::Vec2 p = s.position;
     const auto above = sc.profile.line_above(p.x, p.z);
-    const auto below = sc.profile.ground_below(p.x, p.z);
-    // Inside the rock: placed on the ground over it (thesis §3.2.2). A few metres is a release
-    // point given roughly; the whole section's height and more is the other kind of elevation.
-    if (above && above->ground) {
-      const double depth = above->z - p.z;
-      if (depth > kFarAboveGround && depth > z_hi - z_lo)
-        notes.push_back(
-            {top.file(), line_of(*t.find("z")), t.field("z"),
-             fmt::format("source \"{}\" is {:.0f} m below the ground over it (z = {} m; the "
-                         "ground at x = {} m is at {:.1f} m), more than {:g} m and more than the "
-                         "profile's whole height ({:.1f} m, z from {:.1f} to {:.1f} m): it is "
-                         "placed on the ground there and starts from it. Check that z is an "
-                         "elevation of the same kind as the profile's (local, or absolute such "
-                         "as m a.s.l.)",
-                         s.name, depth, p.z, p.x, above->z, kFarAboveGround, z_hi - z_lo, z_lo,
-                         z_hi)});
-    }
-    if (!(above && above->ground) && below) {
-      const double drop = p.z - below->z;
-      if (drop > kFarAboveGround && drop > z_hi - z_lo)
-        notes.push_back(
-            {top.file(), line_of(*t.find("z")), t.field("z"),
-             fmt::format("source \"{}\" is {:.0f} m above the ground under it (z = {} m; the "
-                         "ground at x = {} m is at {:.1f} m), more than {:g} m and more than the "
-                         "profile's whole height ({:.1f} m, z from {:.1f} to {:.1f} m): its blocks "
-                         "fall freely that far before their first impact, which then governs the "
-                         "results. Check that z is an elevation of the same kind as the "
-                         "profile's (local, or absolute such as m a.s.l.); a source on or below "
-                         "the ground starts on it",
-                         s.name, drop, p.z, p.x, below->z, kFarAboveGround, z_hi - z_lo, z_lo,
-                         z_hi)});
-    }
+    const bool inside = above && above->ground;
+    const auto ground = inside ? std::optional<geometry::GroundPoint>({above->z, above->segment})
+                               : sc.profile.ground_below(p.x, p.z);
+    const double far = ground ? std::abs(p.z - ground->z) : 0.0;
+    if (far > kFarAboveGround && far > z_hi - z_lo)
+      notes.push_back(
+          {top.file(), line_of(*t.find("z")), t.field("z"),
+           fmt::format("source \"{}\" is {:.0f} m {} the ground {} it (z = {} m; the ground at "
+                       "x = {} m is at {:.1f} m), more than {:g} m and more than the profile's "
+                       "whole height ({:.1f} m, z from {:.1f} to {:.1f} m): {}. Check that z is "
+                       "an elevation of the same kind as the profile's (local, or absolute such "
+                       "as m a.s.l.){}",
+                       s.name, far, inside ? "below" : "above", inside ? "over" : "under", p.z,
+                       p.x, ground->z, kFarAboveGround, z_hi - z_lo, z_lo, z_hi,
+                       inside ? "it is placed on the ground there and starts from it"
+                              : "its blocks fall freely that far before their first impact, "
+                                "which then governs the results",
+                       inside ? "" : "; a source on or below the ground starts on it")});
     sc.sources.push_back(std::move(s));
     source_at.push_back({line_of(node), fmt::format("{}[{}]", top.field("sources"), i)});
   }

@@ -118,7 +118,12 @@ TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
   TempDir dir;
   EXPECT_TRUE(notes_of(dir, base_with(22, "z = 108.0")).empty());     // 99 m above the ground
   EXPECT_EQ(notes_of(dir, base_with(22, "z = 110.0")).size(), 1u);    // 101 m
-  EXPECT_TRUE(notes_of(dir, base_with(22, "z = -5000.0")).empty());   // below: placed on it
+  EXPECT_TRUE(notes_of(dir, base_with(22, "z = 5.0")).empty());       // 4 m inside: placed on it
+  EXPECT_TRUE(notes_of(dir, base_with(22, "z = -90.0")).empty());     // 99 m inside
+  const auto deep = notes_of(dir, base_with(22, "z = -5000.0"));      // far inside: noted too
+  ASSERT_EQ(deep.size(), 1u);
+  EXPECT_NE(deep[0].text.find("is 5009 m below the ground over it"), std::string::npos)
+      << deep[0].text;
   const std::string tall = "points = [[0.0, 400.0, \"rock\"], [10.0, 0.0, \"rock\"], [200.0, 0.0, \"\"]]";
   auto scenario = [&](const std::string& source) {
     auto lines = pierre::test::base_lines();
