@@ -170,17 +170,23 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
   if (!r.barriers.empty()) {
     blank();
     fmt::print(out, "Barriers (ETAG 027, docs/barriers.md; characteristic values at the rule set's percentile)\n");
-    fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>10} {:>10} {:>6} {:>7}\n", "barrier",
+    // The class the requirement needs, not a candidate's (the report's "smallest energy class
+    // required"): "class" alone read as the candidate's own.
+    fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>10} {:>10} {:>9} {:>7}\n", "barrier",
                "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req kJ", "SEL_req kJ",
-               "class", "h_i m");
+               "req class", "h_i m");
     for (const auto& d : r.barriers)
-      fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>6} {}\n", d.spec.name, d.spec.line,
+      fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>9} {}\n", d.spec.name, d.spec.line,
                  d.rules_name, g(d.v_k.value, 8), g(d.h_k.value, 8), g(d.v_d, 8), g(d.E_d_kJ, 9),
                  g(d.MEL_req_kJ, 10), g(d.SEL_req_kJ, 10),
                  d.energy_class ? std::to_string(d.energy_class->number) +
                                       (d.energy_class->open_ended ? "+" : "")
                                 : std::string("-"),
                  g(d.h_i, 7));
+    // What an engineer should know of a design (fits from few values, zero heights left out of
+    // the Weibull, ...): the report and summary.json keep them too.
+    for (const auto& d : r.barriers)
+      for (const auto& note : d.notes) print_wrapped(out, "Note: " + d.spec.name + ": ", note);
   }
   blank();
   fmt::print(out, "Checks\n{:<18} {:<20} {:>10} {:>10} {:<4} {:<6} {}\n", "subject", "id", "value",

@@ -400,6 +400,37 @@ TEST_F(Check, ValidateSaysTheDesignBlockAndFreeBoardDiameter) {
       << given.out;
 }
 
+// A design's notes reach the console as well as the report and summary.json: here observed
+// values at the line, three speeds and three heights, fewer than the 30 crossings thesis-2015
+// asks of a simulated line.
+TEST_F(Check, ADesignsNotesAreOnTheConsole) {
+  std::string text = slurp(kData + "pass.toml");
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"\"../small/profile.csv\"", "\"" PIERRE_TEST_DATA "/small/profile.csv\""},
+           {"free_board_diameter = 1.0\n", "free_board_diameter = 1.0\nobserved = \"obs.csv\"\n"}}) {
+    const auto k = text.find(from);
+    ASSERT_NE(k, std::string::npos) << from;
+    text.replace(k, from.size(), to);
+  }
+  std::ofstream(dir_ / "obs.csv") << "speed_m_s,height_m\n10,1\n12,\n,2\n15,3\n";
+  std::ofstream(dir_ / "s.toml") << text;
+  const Result r = pierre("run '" + (dir_ / "s.toml").string() + "' --out '" + (dir_ / "o").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = summary(dir_ / "o");
+  ASSERT_EQ(j["barriers"][0]["notes"].size(), 1u) << j["barriers"][0]["notes"].dump();
+  const std::string note = j["barriers"][0]["notes"][0];
+  EXPECT_EQ(note.rfind("the observed Weibull fits rest on few values (3 speeds, 3 passing heights;", 0), 0u)
+      << note;
+  // Wrapped before 100 columns: compare word by word.
+  const auto at = r.out.find("Note: Generous: ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  std::istringstream words(r.out.substr(at + 16, note.size() * 2)), expected(note);
+  for (std::string w, e; expected >> e;) {
+    ASSERT_TRUE(words >> w) << r.out;
+    EXPECT_EQ(w, e);
+  }
+}
+
 }  // namespace
 
 TEST_F(Check, WritesTheDesignReportWithABarrierSheetAndItsCharts) {
