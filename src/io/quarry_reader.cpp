@@ -133,6 +133,53 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
   return r;
 }
 
+// ---- geometry given ----
+
+// A toe or height given is taken as it is (design-checks.md §2), but one typed onto the face
+// changes every distance and every /H: the floor past a given toe should be what the finder
+// would call floor (flatter than the floor angle), and a given H near crest z − toe z.
+void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
+                         const design::QuarryGeometryInput& in, const design::QuarryGeometry& g,
+                         std::vector<InputNote>& notes) {
+  auto at = [&](const char* key) { return line_of(*q.find(key)); };
+  if (in.toe_x) {
+    std::string steep;
+    int count = 0;
+    for (std::size_t j = static_cast<std::size_t>(g.floor_segment); j < profile.segment_count(); ++j) {
+      const geometry::Segment& sg = profile.segment(j);
+      const double angle =
+          std::atan2(std::abs(sg.b.z - sg.a.z), (sg.b.x - sg.a.x) * g.direction) * 180.0 / M_PI;
+      if (angle <= g.floor_angle_deg) continue;
+      if (++count <= 3)
+        steep += fmt::format("{}segment {} (x {:g} → {:g} m, {:.0f}°)", steep.empty() ? "" : ", ",
+                             j, sg.a.x, sg.b.x, angle);
+    }
+    if (count > 0) {
+      design::QuarryGeometryInput found = in;
+      found.toe_x.reset();
+      const auto f = design::quarry_geometry(profile, found);
+      notes.push_back(
+          {q.file(), at("toe"), q.field("toe"),
+           fmt::format("the floor past the given toe (x = {:g} m) has {} segment{} steeper than "
+                       "the rule set's floor angle of {:g}°: {}{}. Every distance from the toe, "
+                       "and H, are measured from it; {}",
+                       *in.toe_x, count, count == 1 ? "" : "s", g.floor_angle_deg, steep,
+                       count > 3 ? ", ..." : "",
+                       f ? fmt::format("the toe found from the section is at x = {:.2f} m",
+                                       f->toe.x)
+                         : "check the toe's x")});
+    }
+  }
+  if (in.height && g.height_derived > 0 &&
+      std::abs(*in.height - g.height_derived) > 0.1 * g.height_derived)
+    notes.push_back(
+        {q.file(), at("height"), q.field("height"),
+         fmt::format("the height given (H = {:g} m) differs from crest z − toe z ({:.2f} m) by "
+                     "{:.0f} %: every distance divided by H uses the given one",
+                     *in.height, g.height_derived,
+                     100 * std::abs(*in.height - g.height_derived) / g.height_derived)});
+}
+
 // ---- numbers ----
 
 double coordinate(const TomlTable& t, const toml::node& c, const std::string& field,
@@ -373,6 +420,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     }
     s.geometry = *g;
     sc.settings.floor_segment = s.geometry.floor_segment;
+    note_given_geometry(q, sc.profile, spec.geometry, s.geometry, s.notes);
     out.push_back(std::move(s));
   }
   // The checks across sections report at the later section's table.

@@ -171,4 +171,45 @@ sources = [{ x = 10.3, z = 500.0 }]
   EXPECT_EQ(l.quarries[0].notes[0].message(), l.notes[0].message());
 }
 
+// A toe given on the face makes the steep face part of the floor, and a height given far from
+// crest z − toe z divides every distance by another H: both are taken, and noted at their keys.
+// The section: crest at (10, 20), a 63.4° face to (20, 0), a level floor; the found toe is x = 20.
+TEST(InputNotes, AToeGivenOnTheFaceAndAFarHeightAreNoted) {
+  TempDir dir;
+  auto section = [&](const std::string& given) {
+    return R"([scenario]
+name = "pit"
+[simulation]
+seed = 40
+throws = 3
+[materials.face]
+preset = "quarry-face"
+[[quarries]]
+name = "East"
+)" + given + R"(
+profile = { points = [[0.0, 20.0, "face"], [10.0, 20.0, "face"], [20.0, 0.0, "face"], [90.0, 0.0, ""]] }
+blocks = { table = [{ id = "A", mass = 500.0 }] }
+sources = [{ x = 10.3, z = 20.0 }]
+)";
+  };
+  const auto on_face = load_scenario(dir.write("s.toml", section("toe = 15.0\nheight = 10.0")), kRules);
+  ASSERT_EQ(on_face.notes.size(), 1u) << on_face.notes[0].message();  // H = 20 − 10 = 10: as given
+  EXPECT_EQ(on_face.notes[0].line, 10);
+  EXPECT_EQ(on_face.notes[0].field, "quarries[0].toe");
+  // The face from x = 15 (where the toe cuts it) to 20 m: atan(20 / 10) = 63.43°.
+  EXPECT_EQ(on_face.notes[0].text,
+            "the floor past the given toe (x = 15 m) has 1 segment steeper than the rule set's "
+            "floor angle of 15°: segment 2 (x 15 → 20 m, 63°). Every distance from the toe, and H, "
+            "are measured from it; the toe found from the section is at x = 20.00 m");
+  EXPECT_TRUE(load_scenario(dir.write("s.toml", section("toe = 20.0")), kRules).notes.empty());
+  EXPECT_TRUE(load_scenario(dir.write("s.toml", section("toe = 40.0\nheight = 21.9")), kRules)
+                  .notes.empty());  // 9.5 % above the 20 m the section gives
+  const auto high = load_scenario(dir.write("s.toml", section("height = 25.0")), kRules);
+  ASSERT_EQ(high.notes.size(), 1u);
+  EXPECT_EQ(high.notes[0].field, "quarries[0].height");
+  EXPECT_EQ(high.notes[0].text,
+            "the height given (H = 25 m) differs from crest z − toe z (20.00 m) by 25 %: every "
+            "distance divided by H uses the given one");
+}
+
 }  // namespace
