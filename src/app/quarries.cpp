@@ -177,7 +177,7 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
     fmt::print(out,
                "{}: crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); from the "
                "toe, danger zone {}, first-impact zone {}; {} thrown, {} reached the floor, {} "
-               "stopped above the toe, {} left the section{}\n",
+               "stopped at or above the toe (RD = 0), {} left the section{}\n",
                s.spec.name, g.crest.x, design::to_string(g.crest_origin), g.toe.x,
                design::to_string(g.toe_origin), g.height, design::to_string(g.height_origin),
                zone(s.danger_zone), zone(s.first_impact_zone),
