@@ -114,13 +114,27 @@ void elongation_line(Builder& b, const CandidateBarrier& c) {
 
 // Value and limit in % (unit "%"), as the reason words them and as sample.size is; judged on the
 // fractions.
+// The values a Weibull fit stands on, when fewer than the rule set asks of a line (reach): its
+// tail and its KS test then say little, and a line that would PASS on them WARNs instead (a
+// FAIL stays a FAIL). Empty when the fit has enough.
+std::string too_few_values(const Builder& b, const QuantityFit& q) {
+  if (!q.weibull || static_cast<double>(q.weibull->used) >= b.r.min_crossings) return {};
+  return "from " + std::to_string(q.weibull->used) + " value" + (q.weibull->used == 1 ? "" : "s") +
+         ", fewer than the " + num(b.r.min_crossings) + " crossings the rule set asks (reach)";
+}
+
 void exceedance_line(Builder& b, const char* id, const std::string& what, double p,
-                     std::optional<double> acceptable) {
+                     std::optional<double> acceptable, const QuantityFit& fit) {
   CheckLine& l = b.add(id, what, 100 * p, 100 * acceptable.value_or(kNaN), "%");
+  const std::string few = too_few_values(b, fit);
   if (!acceptable)
     set(l, CheckStatus::not_applicable, "no acceptable probability given (" + pct(p) + ")");
   else if (std::isnan(p))
     set(l, CheckStatus::fail, "cannot be evaluated: no Weibull fit of the simulated sample");
+  else if (at_most(p, *acceptable) && !few.empty())
+    set(l, CheckStatus::warn, pct(p) + " <= acceptable " + pct(*acceptable) +
+                                  ", but the Weibull fit is " + few +
+                                  ": its tail is no basis to pass (more throws)");
   else if (at_most(p, *acceptable))
     set(l, CheckStatus::pass, pct(p) + " <= acceptable " + pct(*acceptable));
   else
@@ -140,6 +154,9 @@ void fit_line(Builder& b, const char* id, const char* quantity, const QuantityFi
         "p = " + num(p, 3) + " < " + num(b.r.fit_p_value) +
             ": the Weibull fit is doubtful (D = " + num(q.weibull_ks->statistic, 3) +
             "); compare the empirical value");
+  else if (const std::string few = too_few_values(b, q); !few.empty())
+    set(l, CheckStatus::warn, "p = " + num(p, 3) + " >= " + num(b.r.fit_p_value) + ", but " + few +
+                                  ": a test on so few values rejects almost no fit");
   else
     set(l, CheckStatus::pass, "p = " + num(p, 3) + " >= " + num(b.r.fit_p_value) +
                                   " (fitted to the same sample: weak support, Lilliefors)");
@@ -236,10 +253,10 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
     const double ph = d.exceedance.size() > 2 ? d.exceedance[2].simulated_weibull : kNaN;
     exceedance_line(b, "exceedance.energy",
                     "P(E > MEL_req) from the Weibull fit of the simulated energies", pE,
-                    d.spec.acceptable_energy_exceedance);
+                    d.spec.acceptable_energy_exceedance, d.energy);
     exceedance_line(b, "exceedance.height",
                     "P(h > h_i) from the Weibull fit of the simulated passing heights", ph,
-                    d.spec.acceptable_height_exceedance);
+                    d.spec.acceptable_height_exceedance, d.height);
   }
   fit_line(b, "fit.v", "the speeds", d.speed);
   fit_line(b, "fit.h", "the passing heights", d.height);

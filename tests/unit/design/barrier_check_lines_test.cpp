@@ -202,6 +202,35 @@ TEST(BarrierCheckLines, FitLinesWarnBelowTheirPValue) {
   EXPECT_FALSE(design::any_failure(lines));  // WARN never fails
 }
 
+// A Weibull fit through fewer values than the rule set asks of a line (thesis-2015: 30) says
+// little: its KS test and its tail cannot make a line PASS, they WARN; a FAIL stays a FAIL.
+// At exactly 30 values they pass as before.
+TEST(BarrierCheckLines, FitsFromTooFewValuesWarnInsteadOfPassing) {
+  auto d = base();
+  d.spec.acceptable_energy_exceedance = 0.002;  // P(E > MEL_req) = 0.001: would pass
+  d.spec.acceptable_height_exceedance = 0.01;   // P(h > h_i) = 0.02: fails
+  d.speed.weibull->used = 2;
+  d.energy.weibull->used = 29;
+  d.height.weibull->used = 29;
+  auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "fit.v").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "fit.v").reason,
+            "p = 0.5 >= 0.05, but from 2 values, fewer than the 30 crossings the rule set asks "
+            "(reach): a test on so few values rejects almost no fit");
+  EXPECT_EQ(line(lines, "fit.E").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "exceedance.energy").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "exceedance.energy").reason,
+            "0.1 % <= acceptable 0.2 %, but the Weibull fit is from 29 values, fewer than the 30 "
+            "crossings the rule set asks (reach): its tail is no basis to pass (more throws)");
+  EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::fail);
+  d.energy.weibull->used = 30;
+  d.speed.weibull->used = 30;
+  lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "fit.v").status, CheckStatus::pass);
+  EXPECT_EQ(line(lines, "fit.E").status, CheckStatus::pass);
+  EXPECT_EQ(line(lines, "exceedance.energy").status, CheckStatus::pass);
+}
+
 TEST(BarrierCheckLines, SampleSizeWarnsWithTheThrowsNeeded) {
   auto d = base();
   EXPECT_EQ(status(d, rules(), "sample.size"), CheckStatus::pass);  // worst 2.5 % (E_d 30/1250 = 2.4 %)
