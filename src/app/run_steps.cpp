@@ -46,7 +46,8 @@ std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out) {
   try {
     return std::make_unique<io::OutputFolder>(out);
   } catch (const std::filesystem::filesystem_error& e) {
-    fmt::print(stderr, "error: {}\n", output_folder_problem(out, e.code()));
+    // Said as the other input errors are (field, found, expected), with no prefix of its own.
+    fmt::print(stderr, "{}\n", output_folder_problem(out, e.code()));
     return nullptr;
   }
 }
