@@ -77,6 +77,29 @@ std::string alias_note(const ColumnAliases& aliases) {
   return s + ")";
 }
 
+// A spreadsheet set to a European locale separates cells by ';', a text export by tabs: a line
+// of too few cells holding either (outside quotes, where a text may hold them) was most likely
+// written so. How the message names it: the more frequent of the two, or nothing.
+std::optional<std::string_view> other_separator(std::string_view line) {
+  std::size_t semicolons = 0, tabs = 0;
+  bool quoted = false;  // a doubled quote inside a quoted cell toggles twice
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (!quoted && c == ';') ++semicolons;
+    else if (!quoted && c == '\t') ++tabs;
+  }
+  if (semicolons == 0 && tabs == 0) return std::nullopt;
+  return semicolons >= tabs ? std::string_view("\";\"") : std::string_view("tabs");
+}
+
+// The found-value of that error: the line in quotes, a tab as \t (a terminal shows it as spaces,
+// which would look like a third separator), then how many cells it made.
+std::string separated_line(std::string_view line, std::string_view cells, std::string_view sep) {
+  std::string shown;
+  for (char c : line) shown += c == '\t' ? std::string_view("\\t") : std::string_view(&c, 1);
+  return fmt::format("\"{}\" ({}: the cells are separated by {})", shown, cells, sep);
+}
+
 }  // namespace
 
 std::optional<std::size_t> CsvTable::column(std::string_view name) const {
@@ -150,14 +173,19 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
         // The unit in the name, as pierre's own CSVs write it ("x_m", "mass_kg").
         for (const auto& [alias, name] : aliases)
           if (h == alias) h = name;
-        if (std::find(allowed.begin(), allowed.end(), h) == allowed.end())
+        if (std::find(allowed.begin(), allowed.end(), h) == allowed.end()) {
+          const auto sep = other_separator(line);
+          if (sep && h.find_first_of(";\t") != std::string::npos)
+            throw InputError(file, line_no, "header",
+                             separated_line(line,
+                                            fmt::format("{} column{}", cells.size(),
+                                                        cells.size() == 1 ? "" : "s"),
+                                            *sep),
+                             fmt::format("cells separated by commas ({})", expected_header));
           throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
-                           fmt::format("only the columns {}{}{}", join(allowed),
-                                       aliases.empty() ? "" : alias_note(aliases),
-                                       // A spreadsheet set to a European locale writes ';'.
-                                       h.find_first_of(";\t") != std::string::npos
-                                           ? ", separated by commas (this header uses ';' or tabs)"
-                                           : ""));
+                           fmt::format("only the columns {}{}", join(allowed),
+                                       aliases.empty() ? "" : alias_note(aliases)));
+        }
         if (std::count(cells.begin(), cells.end(), h) > 1)
           throw InputError(file, line_no, "header", fmt::format("column \"{}\" twice", h),
                            "each column once");
@@ -165,11 +193,18 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
       t.header = std::move(cells);
       continue;
     }
-    if (cells.size() < t.header.size())
+    if (cells.size() < t.header.size()) {
+      if (const auto sep = other_separator(line))
+        throw InputError(file, line_no, "row",
+                         separated_line(line, fmt::format("{} of {} columns", cells.size(),
+                                                          t.header.size()),
+                                        *sep),
+                         fmt::format("cells separated by commas ({})", join(t.header)));
       throw InputError(file, line_no, t.header[cells.size()],
                        fmt::format("nothing (the row has {} of {} columns)", cells.size(),
                                    t.header.size()),
                        fmt::format("a value in every column of {}", join(t.header)));
+    }
     if (cells.size() > t.header.size() && all_empty(cells, t.header.size()))
       cells.resize(t.header.size());
     if (cells.size() > t.header.size())

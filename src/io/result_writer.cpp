@@ -98,12 +98,15 @@ ResultFiles::ResultFiles(const std::filesystem::path& folder, bool impacts) : se
 
 void ResultFiles::open(const std::filesystem::path& folder, bool impacts) {
   const std::string lead = sectioned_ ? "section," : "";
+  // A quarry's ID is measured from the first floor contact, not the first impact (always on the
+  // face there): with these columns it can be recomputed from the file.
+  const std::string floor = sectioned_ ? "floor_contact_x_m,floor_contact_z_m," : "";
   trajectories_ = std::make_unique<Csv>(
       folder / kTrajectoriesCsv,
       lead +
           "trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,runout_m,"
-          "stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,max_jump_height_m,"
-          "max_speed_m_s,max_energy_kJ");
+          "stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m," +
+          floor + "max_jump_height_m,max_speed_m_s,max_energy_kJ");
   crossings_ = std::make_unique<Csv>(
       folder / kCrossingsCsv,
       lead +
@@ -160,6 +163,12 @@ std::unique_ptr<ResultFiles::Text> ResultFiles::format(const sim::ChunkResult& c
         fmt::format_to(out(b), FMT_COMPILE("{:.9g},{:.9g}"), t.first_impact.x, t.first_impact.z);
       else
         b.push_back(',');
+      if (sectioned_) {
+        if (t.has_floor_contact)
+          fmt::format_to(out(b), FMT_COMPILE(",{:.9g},{:.9g}"), t.floor_contact.x, t.floor_contact.z);
+        else
+          fmt::format_to(out(b), FMT_COMPILE(",,"));
+      }
       fmt::format_to(out(b), FMT_COMPILE(",{:.9g},{:.9g},{:.9g}\n"), t.max_jump_height, t.max_speed,
                      t.max_energy / 1000.0);
     }

@@ -19,6 +19,8 @@
 // A quarry scenario (docs/quarry.md) writes the same files once for all its sections, one section
 // after the other in file order, each row led by a `section` column (the section's name);
 // `trajectory` then counts within the section (it keys the section's own random streams).
+// Its trajectories.csv also has floor_contact_x_m,floor_contact_z_m after first_impact_z_m: the
+// first contact with the floor, from which ID is measured (empty when the block never reached it).
 //
 // Numbers are written with 9 significant digits ({:.9g}): the same seed gives the same bytes.
 // Only what the statistics need stays in memory (design::RunSamples).

@@ -2,7 +2,8 @@
 // the real binary: exit codes (0 every work area outside its danger zone, 1 one inside, 2 bad
 // quarry input with nothing written), the quarry table and check lines on stdout, "quarries"
 // and "checks" in summary.json, the section column of trajectories.csv, per-section seeds,
-// thread-count reproducibility, and the shipped example (examples/quarry-austria).
+// thread-count reproducibility, the floor contacts that give ID block by block, and the shipped
+// example (examples/quarry-austria).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -235,6 +236,86 @@ TEST_F(QuarryCli, NoFirstImpactIsSaidAsNone) {
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ID_gov - (P95: no values)"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("- the profile"), std::string::npos) << r.out;
+}
+
+// ID is measured from a block's first contact with the floor (design-checks.md §2), which the
+// first impact (on the face) is not: trajectories.csv gives it, so ID can be recomputed block by
+// block, ID = max(0, floor_contact_x_m - toe x). Recomputed, it has the section's ID statistics
+// of summary.json; the blocks without a floor contact are those it counts as not reaching the
+// floor, and each of them stopped above the toe (on the bench or the face) or left the section.
+TEST_F(QuarryCli, TheFloorContactColumnsGiveTheFirstImpactDistances) {
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("run " + kData + "floor-contact.toml --out '" + out.string() + "' -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = summary(out);
+
+  std::istringstream csv(slurp(out / "trajectories.csv"));
+  auto cells = [](const std::string& line) {  // no quoted cells in this file
+    std::vector<std::string> v;
+    std::string cell;
+    for (std::istringstream in(line); std::getline(in, cell, ',');) v.push_back(cell);
+    if (!line.empty() && line.back() == ',') v.emplace_back();
+    return v;
+  };
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line,
+            "section,trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,"
+            "stop_z_m,runout_m,stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,"
+            "floor_contact_x_m,floor_contact_z_m,max_jump_height_m,max_speed_m_s,max_energy_kJ");
+  const std::vector<std::string> head = cells(line);
+  auto col = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+  };
+  const std::size_t c_section = col("section"), c_fx = col("floor_contact_x_m"),
+                    c_fz = col("floor_contact_z_m"), c_stop = col("stop_x_m"),
+                    c_reason = col("stop_reason");
+
+  const double toe_x = 20.0;  // the foot of the face's lower part, as the geometry finds it
+  std::vector<double> id;
+  int not_reached = 0, rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    const std::vector<std::string> row = cells(line);
+    ASSERT_EQ(row.size(), head.size()) << line;
+    EXPECT_EQ(row[c_section], "Benched");
+    const std::string &fx = row[c_fx], &fz = row[c_fz];
+    EXPECT_EQ(fx.empty(), fz.empty()) << line;
+    if (fx.empty()) {
+      ++not_reached;
+      // Not on the floor: stopped above the toe, or left the section.
+      if (row[c_reason] != "boundary") {
+        EXPECT_LE(std::stod(row[c_stop]), toe_x) << line;
+      }
+      continue;
+    }
+    EXPECT_GE(std::stod(fx), toe_x) << line;  // on the floor, past the toe
+    id.push_back(std::max(0.0, std::stod(fx) - toe_x));
+  }
+  EXPECT_EQ(rows, 200);  // 2 blocks × 100 throws
+
+  const auto& sec = j["quarries"][0]["sections"][0];
+  ASSERT_EQ(sec["name"], "Benched");
+  EXPECT_DOUBLE_EQ(sec["geometry"]["toe"]["x_m"].get<double>(), toe_x);
+  // The test needs both kinds of block: some held on the bench, some reaching the floor.
+  ASSERT_GT(not_reached, 0);
+  ASSERT_GT(id.size(), 1u);
+  EXPECT_EQ(sec["not_reached_floor"], not_reached);
+  EXPECT_EQ(sec["reached_floor"], id.size());
+  const auto& stats = sec["first_impact"];
+  EXPECT_EQ(stats["count"], id.size());
+  // Type 7 percentiles (R's default), as summary.json's; within 1e-6 m of the run's doubles, as
+  // the CSV has 9 significant digits.
+  std::sort(id.begin(), id.end());
+  auto percentile = [&](double p) {
+    const double h = static_cast<double>(id.size() - 1) * p;
+    const auto lo = static_cast<std::size_t>(h);
+    const std::size_t hi = std::min(lo + 1, id.size() - 1);
+    return id[lo] + (h - static_cast<double>(lo)) * (id[hi] - id[lo]);
+  };
+  EXPECT_NEAR(stats["max_m"].get<double>(), id.back(), 1e-6);
+  EXPECT_NEAR(stats["p50_m"].get<double>(), percentile(0.50), 1e-6);
+  EXPECT_NEAR(stats["p95_m"].get<double>(), percentile(0.95), 1e-6);
 }
 
 TEST_F(QuarryCli, BadQuarryInputExitsTwoAndWritesNothing) {

@@ -1,6 +1,6 @@
 // The result files: exact headers, one row per trajectory / crossing / impact with units
-// converted (J → kJ), empty first-impact cells, CSV quoting; the samples kept for the
-// statistics; summary.json; the atomic output folder.
+// converted (J → kJ), empty first-impact cells, CSV quoting, a quarry run's section and floor
+// contact columns; the samples kept for the statistics; summary.json; the atomic output folder.
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <sys/file.h>
@@ -174,6 +174,30 @@ TEST(ResultFiles, APreparedChunkWritesTheSameBytesAsAnUnpreparedOne) {
   EXPECT_EQ(lines_of(read_file(dir.path() / "prepared" / "trajectories.csv")).size(), 5u);
   EXPECT_EQ(prepared.samples().runout(), plain.samples().runout());
   EXPECT_EQ(prepared.samples().lines()[0].speed, (std::vector<double>{10, 20, 10, 20}));
+}
+
+// A quarry run's rows are led by their section and carry the first floor contact (ID's origin,
+// design-checks.md §2) after the first impact: both cells empty for a block that never reached
+// the floor, as the first impact's are without one.
+TEST(ResultFiles, AQuarryRunGivesTheFirstFloorContact) {
+  TempDir dir;
+  const sim::Scenario s = scenario();
+  io::ResultFiles files(dir.path(), false);
+  files.begin_section(s, "North");
+  sim::ChunkResult c = chunk();
+  c.trajectories[0].has_floor_contact = true;
+  c.trajectories[0].floor_contact = {12.25, 0.5};
+  files.consume(std::move(c));
+  files.close();
+
+  const auto traj = lines_of(read_file(dir.path() / "trajectories.csv"));
+  ASSERT_EQ(traj.size(), 3u);
+  EXPECT_EQ(traj[0],
+            "section,trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,"
+            "runout_m,stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,"
+            "floor_contact_x_m,floor_contact_z_m,max_jump_height_m,max_speed_m_s,max_energy_kJ");
+  EXPECT_EQ(traj[1], "North,0,top,\"big, round\",0,100,1,11,16.5,0,15.5,energy,3.25,4,2,8,12.25,0.5,1.5,12,7.2");
+  EXPECT_EQ(traj[2], "North,1,top,\"big, round\",1,100,1,11,21,-1,20,boundary,3.25,4,,,,,1.5,12,7.2");
 }
 
 TEST(ResultFiles, NoImpactsFileUnlessAsked) {
