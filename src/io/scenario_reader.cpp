@@ -479,8 +479,7 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
     auto cached = cache.find(rules_file);
     if (cached == cache.end()) {  // read once per file, however many barriers name it
       if (const auto kind = detail::rule_file_kind(rules_file);
-          kind != detail::RuleFileKind::barrier && kind != detail::RuleFileKind::other)
-      {
+          kind != detail::RuleFileKind::barrier && kind != detail::RuleFileKind::other) {
         const auto names = barrier_rule_set_names(rules_dir);
         t.fail("rules", fmt::format("a barrier rule set ({} is {}; the rules folder is {})",
                                     rules_file.string(), detail::describe(kind),
