@@ -39,11 +39,11 @@ std::vector<PointAt> points_at(const geometry::Profile& profile, double x) {
   return out;
 }
 
+}  // namespace
+
 double inclination_deg(Vec2 a, Vec2 b, int dir) {
   return std::atan2(std::abs(b.z - a.z), (b.x - a.x) * dir) * 180.0 / std::numbers::pi;
 }
-
-}  // namespace
 
 std::string_view to_string(GeometryOrigin o) {
   return o == GeometryOrigin::given ? "given" : "found";

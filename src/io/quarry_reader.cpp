@@ -147,8 +147,7 @@ void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
     int count = 0;
     for (std::size_t j = static_cast<std::size_t>(g.floor_segment); j < profile.segment_count(); ++j) {
       const geometry::Segment& sg = profile.segment(j);
-      const double angle =
-          std::atan2(std::abs(sg.b.z - sg.a.z), (sg.b.x - sg.a.x) * g.direction) * 180.0 / M_PI;
+      const double angle = design::inclination_deg(sg.a, sg.b, g.direction);
       if (angle <= g.floor_angle_deg) continue;
       if (++count <= 3)
         steep += fmt::format("{}segment {} (x {:g} → {:g} m, {:.0f}°)", steep.empty() ? "" : ", ",

@@ -50,6 +50,10 @@ struct QuarryGeometry {
   double floor_angle_deg = 15;
 };
 
+// Inclination of the segment a → b against the main direction `dir` (+1 or −1), degrees: 0 level,
+// 90 vertical, above 90 overhanging. The toe finder's floor is flatter than the floor angle.
+double inclination_deg(geometry::Vec2 a, geometry::Vec2 b, int dir);
+
 stats::Outcome<QuarryGeometry> quarry_geometry(const geometry::Profile& profile,
                                                const QuarryGeometryInput& input);
 

@@ -40,6 +40,23 @@ std::set<std::string> statuses(const nlohmann::json& checks) {
   return s;
 }
 
+// A copy of tests/data/barrier/`name` at `file`, its profile path made absolute (the copy lives
+// elsewhere) and each `from` replaced by its `to`; a `from` the file lacks is the test's error.
+void write_variant(const std::string& name,
+                   const std::vector<std::pair<std::string, std::string>>& edits,
+                   const fs::path& file) {
+  std::string text = slurp(kData + name);
+  std::vector<std::pair<std::string, std::string>> all{
+      {"\"../small/profile.csv\"", "\"" PIERRE_TEST_DATA "/small/profile.csv\""}};
+  all.insert(all.end(), edits.begin(), edits.end());
+  for (const auto& [from, to] : all) {
+    const auto k = text.find(from);
+    if (k == std::string::npos) throw std::runtime_error(name + " has no " + from);
+    text.replace(k, from.size(), to);
+  }
+  std::ofstream(file) << text;
+}
+
 const nlohmann::json& check(const nlohmann::json& j, const std::string& id) {
   for (const auto& c : j["checks"])
     if (c["id"] == id) return c;
@@ -146,18 +163,12 @@ TEST_F(Check, QuietOutputStartsWithContent) {
 // ("0.00524 % <= acceptable 1 %"): before, 5.243e-05 and 0.01 stood beside an empty unit. The
 // value is the barrier's P(E > MEL_req) and P(h > h_i) (fractions in its Table 4.2) times 100.
 TEST_F(Check, ExceedanceLinesAreInPercentLikeTheirReasons) {
-  std::string text = slurp(kData + "pass.toml");
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"\"../small/profile.csv\"", "\"" PIERRE_TEST_DATA "/small/profile.csv\""},
-           {"free_board_diameter = 1.0\n",
-            "free_board_diameter = 1.0\nacceptable_energy_exceedance = 0.5\n"
-            "acceptable_height_exceedance = 0.25\n"}}) {
-    const auto k = text.find(from);
-    ASSERT_NE(k, std::string::npos) << from;
-    text.replace(k, from.size(), to);
-  }
   const fs::path scenario = dir_ / "exceedance.toml", out = dir_ / "out";
-  std::ofstream(scenario) << text;
+  write_variant("pass.toml",
+                {{"free_board_diameter = 1.0\n",
+                  "free_board_diameter = 1.0\nacceptable_energy_exceedance = 0.5\n"
+                  "acceptable_height_exceedance = 0.25\n"}},
+                scenario);
   const Result r = pierre("check '" + scenario.string() + "' --out '" + out.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err << r.out;
   const auto j = summary(out);
@@ -225,17 +236,8 @@ TEST_F(Check, DesignWithoutCandidateHasOnlyAdvisoryLines) {
 // "barriers_without_design" with the line's own crossing count, so that a pipeline reading
 // "barriers" alone is not left to think it was never asked for.
 TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
-  std::string text = slurp(kData + "design.toml");
-  const auto at = [&](const std::string& s) {
-    const auto k = text.find(s);
-    if (k == std::string::npos) throw std::runtime_error("design.toml has no " + s);
-    return k;
-  };
-  text.replace(at("\"../small/profile.csv\""), std::string("\"../small/profile.csv\"").size(),
-               "\"" PIERRE_TEST_DATA "/small/profile.csv\"");
-  text.replace(at("x = 105.0"), std::string("x = 105.0").size(), "x = 199.5");  // 0.5 m from the end
   const fs::path scenario = dir_ / "far.toml", out = dir_ / "out";
-  std::ofstream(scenario) << text;
+  write_variant("design.toml", {{"x = 105.0", "x = 199.5"}}, scenario);  // 0.5 m from the end
   const Result r = pierre("check '" + scenario.string() + "' --out '" + out.string() + "' --quiet");
   const auto j = summary(out);
   ASSERT_EQ(j["lines"][1]["name"], "Road");
@@ -261,17 +263,9 @@ TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
 // said "0 FAIL" and exited 0, and a pipeline gating on the exit code passed a barrier nobody
 // had compared with anything.
 TEST_F(Check, ACandidateThatCouldNotBeCheckedFails) {
-  std::string text = slurp(kData + "pass.toml");
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"\"../small/profile.csv\"", "\"" PIERRE_TEST_DATA "/small/profile.csv\""},
-           {"line = \"Screen 1\"", "line = \"Road\""},
-           {"x = 105.0", "x = 199.5"}}) {
-    const auto k = text.find(from);
-    ASSERT_NE(k, std::string::npos) << from;
-    text.replace(k, from.size(), to);
-  }
   const fs::path scenario = dir_ / "far.toml", out = dir_ / "out";
-  std::ofstream(scenario) << text;
+  write_variant("pass.toml", {{"line = \"Screen 1\"", "line = \"Road\""}, {"x = 105.0", "x = 199.5"}},
+                scenario);
   const Result r = pierre("check '" + scenario.string() + "' --out '" + out.string() + "' --quiet");
   const auto j = summary(out);
   ASSERT_LT(j["lines"][1]["count"].get<std::uint64_t>(), 2u) << "the test needs a line no design comes from";
@@ -404,16 +398,10 @@ TEST_F(Check, ValidateSaysTheDesignBlockAndFreeBoardDiameter) {
 // values at the line, three speeds and three heights, fewer than the 30 crossings thesis-2015
 // asks of a simulated line.
 TEST_F(Check, ADesignsNotesAreOnTheConsole) {
-  std::string text = slurp(kData + "pass.toml");
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"\"../small/profile.csv\"", "\"" PIERRE_TEST_DATA "/small/profile.csv\""},
-           {"free_board_diameter = 1.0\n", "free_board_diameter = 1.0\nobserved = \"obs.csv\"\n"}}) {
-    const auto k = text.find(from);
-    ASSERT_NE(k, std::string::npos) << from;
-    text.replace(k, from.size(), to);
-  }
+  write_variant("pass.toml",
+                {{"free_board_diameter = 1.0\n", "free_board_diameter = 1.0\nobserved = \"obs.csv\"\n"}},
+                dir_ / "s.toml");
   std::ofstream(dir_ / "obs.csv") << "speed_m_s,height_m\n10,1\n12,\n,2\n15,3\n";
-  std::ofstream(dir_ / "s.toml") << text;
   const Result r = pierre("run '" + (dir_ / "s.toml").string() + "' --out '" + (dir_ / "o").string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = summary(dir_ / "o");

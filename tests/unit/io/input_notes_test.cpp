@@ -25,6 +25,28 @@ std::vector<InputNote> notes_of(const TempDir& dir, const std::string& scenario)
   return load_scenario(dir.write("s.toml", scenario), kRules).notes;
 }
 
+// A quarry scenario of one section, "East": a crest at (10, 20), a 63.4° face to the toe at
+// (20, 0), a level floor to x = 90; `keys` (lines) added to the section after its name, its
+// source at (10.3, `source_z`).
+std::string pit(const std::string& keys, double source_z) {
+  return R"([scenario]
+name = "pit"
+
+[simulation]
+seed = 40
+throws = 3
+
+[materials.face]
+preset = "quarry-face"
+
+[[quarries]]
+name = "East"
+)" + (keys.empty() ? "" : keys + "\n") +
+         R"(profile = { points = [[0.0, 20.0, "face"], [10.0, 20.0, "face"], [20.0, 0.0, "face"], [90.0, 0.0, ""]] }
+blocks = { table = [{ id = "A", mass = 500.0 }] }
+sources = [{ x = 10.3, z = )" + std::to_string(source_z) + " }]\n";
+}
+
 TEST(InputNotes, TheUsualScenarioHasNone) {
   TempDir dir;
   EXPECT_TRUE(notes_of(dir, pierre::test::base()).empty());
@@ -146,22 +168,7 @@ TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
 // scenario's, named by the section's field.
 TEST(InputNotes, AQuarrySectionsNotesAreTheScenarios) {
   TempDir dir;
-  const std::string text = R"([scenario]
-name = "pit"
-
-[simulation]
-seed = 40
-throws = 3
-
-[materials.face]
-preset = "quarry-face"
-
-[[quarries]]
-name = "East"
-profile = { points = [[0.0, 20.0, "face"], [10.0, 20.0, "face"], [20.0, 0.0, "face"], [90.0, 0.0, ""]] }
-blocks = { table = [{ id = "A", mass = 500.0 }] }
-sources = [{ x = 10.3, z = 500.0 }]
-)";
+  const std::string text = pit("", 500.0);
   const auto l = load_scenario(dir.write("s.toml", text), kRules);
   ASSERT_EQ(l.notes.size(), 1u);
   EXPECT_EQ(l.notes[0].line, 15);
@@ -173,38 +180,22 @@ sources = [{ x = 10.3, z = 500.0 }]
 
 // A toe given on the face makes the steep face part of the floor, and a height given far from
 // crest z − toe z divides every distance by another H: both are taken, and noted at their keys.
-// The section: crest at (10, 20), a 63.4° face to (20, 0), a level floor; the found toe is x = 20.
+// The section's found toe is x = 20 (pit).
 TEST(InputNotes, AToeGivenOnTheFaceAndAFarHeightAreNoted) {
   TempDir dir;
-  auto section = [&](const std::string& given) {
-    return R"([scenario]
-name = "pit"
-[simulation]
-seed = 40
-throws = 3
-[materials.face]
-preset = "quarry-face"
-[[quarries]]
-name = "East"
-)" + given + R"(
-profile = { points = [[0.0, 20.0, "face"], [10.0, 20.0, "face"], [20.0, 0.0, "face"], [90.0, 0.0, ""]] }
-blocks = { table = [{ id = "A", mass = 500.0 }] }
-sources = [{ x = 10.3, z = 20.0 }]
-)";
-  };
-  const auto on_face = load_scenario(dir.write("s.toml", section("toe = 15.0\nheight = 10.0")), kRules);
+  const auto on_face = load_scenario(dir.write("s.toml", pit("toe = 15.0\nheight = 10.0", 20.0)), kRules);
   ASSERT_EQ(on_face.notes.size(), 1u) << on_face.notes[0].message();  // H = 20 − 10 = 10: as given
-  EXPECT_EQ(on_face.notes[0].line, 10);
+  EXPECT_EQ(on_face.notes[0].line, 13);
   EXPECT_EQ(on_face.notes[0].field, "quarries[0].toe");
   // The face from x = 15 (where the toe cuts it) to 20 m: atan(20 / 10) = 63.43°.
   EXPECT_EQ(on_face.notes[0].text,
             "the floor past the given toe (x = 15 m) has 1 segment steeper than the rule set's "
             "floor angle of 15°: segment 2 (x 15 → 20 m, 63°). Every distance from the toe, and H, "
             "are measured from it; the toe found from the section is at x = 20.00 m");
-  EXPECT_TRUE(load_scenario(dir.write("s.toml", section("toe = 20.0")), kRules).notes.empty());
-  EXPECT_TRUE(load_scenario(dir.write("s.toml", section("toe = 40.0\nheight = 21.9")), kRules)
+  EXPECT_TRUE(load_scenario(dir.write("s.toml", pit("toe = 20.0", 20.0)), kRules).notes.empty());
+  EXPECT_TRUE(load_scenario(dir.write("s.toml", pit("toe = 40.0\nheight = 21.9", 20.0)), kRules)
                   .notes.empty());  // 9.5 % above the 20 m the section gives
-  const auto high = load_scenario(dir.write("s.toml", section("height = 25.0")), kRules);
+  const auto high = load_scenario(dir.write("s.toml", pit("height = 25.0", 20.0)), kRules);
   ASSERT_EQ(high.notes.size(), 1u);
   EXPECT_EQ(high.notes[0].field, "quarries[0].height");
   EXPECT_EQ(high.notes[0].text,
