@@ -39,18 +39,21 @@ void Report::data_sheet_print_area(lxw_worksheet* ws, Row head, Row r, Col last_
 
 void Report::trajectories(lxw_worksheet* ws) {
   page_setup(ws);
-  // A quarry run leads with the section of each row; its names come from that section.
+  // A quarry run leads with the section of each row; its names come from that section. It also
+  // has the floor contact after the first impact, as trajectories.csv does: ID is measured to it.
   const bool by_section = !d_.trajectory_sections.empty();
   const Col c0 = by_section ? 1 : 0;
-  widths(ws, 0, 17 + c0, 11,
-         {{0, by_section ? 16 : 11}, {1 + c0, 20}, {2 + c0, 12}, {10 + c0, 14}});
+  const Col f = by_section ? 2 : 0;  // the floor contact's two columns
+  const Col last = 17 + c0 + f;
+  widths(ws, 0, last, 11, {{0, by_section ? 16 : 11}, {1 + c0, 20}, {2 + c0, 12}, {10 + c0, 14}});
   const std::size_t shown = std::min(d_.trajectories.size(), t_.trajectory_rows);
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_trajectories, d_.trajectories.size());
   const Row head = data_sheet_head(
       ws, "trajectories", c0, shown, total, "trajectories.csv",
       {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x", "stop_z",
-       "runout", "stop_reason", "duration", "impacts", "first_impact_x", "first_impact_z",
-       "max_jump_height", "max_speed", "max_energy"});
+       "runout", "stop_reason", "duration", "impacts", "first_impact_x", "first_impact_z"});
+  if (by_section) headings(ws, head, c0 + 15, "trajectories", {"floor_contact_x", "floor_contact_z"}, 45);
+  headings(ws, head, c0 + 15 + f, "trajectories", {"max_jump_height", "max_speed", "max_energy"}, 45);
   Row r = head + 1;
   lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
              *lf = number("length"), *tf = number("time"), *sf = number("speed"),
@@ -78,11 +81,15 @@ void Report::trajectories(lxw_worksheet* ws) {
       row.num(13, t.first_impact.x, xf);
       row.num(14, t.first_impact.z, xf);
     }
-    row.num(15, t.max_jump_height, lf);
-    row.num(16, t.max_speed, sf);
-    row.num(17, t.max_energy / 1000, ef);
+    if (by_section && t.has_floor_contact) {
+      row.num(15, t.floor_contact.x, xf);
+      row.num(16, t.floor_contact.z, xf);
+    }
+    row.num(15 + f, t.max_jump_height, lf);
+    row.num(16 + f, t.max_speed, sf);
+    row.num(17 + f, t.max_energy / 1000, ef);
   }
-  data_sheet_print_area(ws, head, r, 17 + c0);
+  data_sheet_print_area(ws, head, r, last);
 }
 
 void Report::crossings(lxw_worksheet* ws) {

@@ -176,6 +176,21 @@ std::unique_ptr<Fixture> make_fixture() {
     }
     d.quarry_sections.push_back(v);
   }
+  // Two trajectories of a section: one that reached the floor, one that stayed on the bench.
+  for (int k = 0; k < 2; ++k) {
+    sim::TrajectorySummary t;
+    t.trajectory = static_cast<std::uint64_t>(k);
+    t.start = {10.5, 20.5};
+    t.has_first_impact = true;
+    t.first_impact = {11.0, 19.0};
+    t.has_floor_contact = k == 0;
+    t.floor_contact = {26.25, 0};
+    t.stop = k == 0 ? geometry::Vec2{40, 0} : geometry::Vec2{14, 10};
+    t.max_jump_height = 3.5 + k;
+    d.trajectories.push_back(t);
+    d.trajectory_sections.push_back(0);
+  }
+  d.total_trajectories = 2;
   return f;
 }
 
@@ -427,6 +442,24 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     EXPECT_FALSE(title.empty());
     EXPECT_EQ(title.find("observation lines"), std::string::npos) << title;
     EXPECT_EQ(title.find("barriers"), std::string::npos) << title;
+  }
+  // Trajectories: the floor contact follows the first impact, as in trajectories.csv, and is
+  // empty for a block that never reached the floor.
+  {
+    const Sheet& s = sheets["Trajectories"];
+    const auto head = find_row(s, 0, "Quarry section");
+    ASSERT_TRUE(head) << dump(s, 2);
+    EXPECT_EQ(cell(s, *head, 15)->text, "First impact z (m)");
+    EXPECT_EQ(cell(s, *head, 16)->text, "Floor contact x (m)");
+    EXPECT_EQ(cell(s, *head, 17)->text, "Floor contact z (m)");
+    EXPECT_EQ(cell(s, *head, 18)->text, "Max jump height (m)");
+    ASSERT_EQ(s.size(), *head + 3);
+    expect_number(s, *head + 1, 16, 26.25);
+    expect_number(s, *head + 1, 17, 0.0);
+    expect_number(s, *head + 1, 18, 3.5);
+    const auto* empty = cell(s, *head + 2, 16);
+    EXPECT_TRUE(!empty || empty->text.empty()) << dump(s, *head + 2);
+    expect_number(s, *head + 2, 18, 4.5);
   }
   // Crossings: a quarry scenario has no observation lines, and the sheet says why it is empty
   // (it said "All 0 rows").

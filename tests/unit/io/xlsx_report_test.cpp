@@ -519,6 +519,9 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto th = find_row(tr, 0, "Trajectory");
   ASSERT_TRUE(th);
   EXPECT_EQ(tr.size(), *th + 1 + 10);
+  // No floor contact columns outside a quarry run: the jump height follows the first impact.
+  EXPECT_EQ(cell(tr, *th, 14)->text, "First impact z (m)");
+  EXPECT_EQ(cell(tr, *th, 15)->text, "Max jump height (m)");
   for (std::size_t r2 = *th + 1; r2 < tr.size(); ++r2) {
     EXPECT_TRUE(number(tr, r2, 0)) << "row " << r2;
     EXPECT_TRUE(number(tr, r2, 9)) << "row " << r2;  // runout
