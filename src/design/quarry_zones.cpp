@@ -89,30 +89,23 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
 }
 
 double governing_value_h(const DistanceSample& sample, const QuarryRuleSet& rules) {
-  double v = kNaN;
-  auto take = [&](double c) {
-    if (!std::isnan(c)) v = std::isnan(v) ? c : std::max(v, c);
+  // governing_distance itself, on the statistics it reads made from the sample alone as
+  // distance_statistics makes them, and only those the rule set's governing list names: the
+  // bootstrap calls this once a resample.
+  auto governs = [&](QuarryGoverning c) {
+    return std::find(rules.governing.begin(), rules.governing.end(), c) != rules.governing.end();
   };
-  for (QuarryGoverning c : rules.governing) {
-    switch (c) {
-      case QuarryGoverning::percentile:
-        take(censored_percentile(sample.normalized, sample.beyond, rules.percentile));
-        break;
-      case QuarryGoverning::maximum:  // as distance_statistics' max_h
-        take(censored_percentile(sample.normalized, sample.beyond, 100));
-        break;
-      case QuarryGoverning::lognormal: {  // as distance_statistics' fit
-        std::vector<double> finite;
-        finite.reserve(sample.normalized.size());
-        for (double x : sample.normalized)
-          if (std::isfinite(x)) finite.push_back(x);
-        if (const auto fit = stats::fit_censored_lognormal(finite, sample.censored_at))
-          take(stats::value_at_exceedance(*fit, 1.0 - rules.lognormal_percentile / 100.0));
-        break;
-      }
-    }
+  DistanceStatistics st;
+  if (governs(QuarryGoverning::maximum))
+    st.max_h = censored_percentile(sample.normalized, sample.beyond, 100);
+  if (governs(QuarryGoverning::lognormal)) {
+    std::vector<double> finite;
+    finite.reserve(sample.normalized.size());
+    for (double x : sample.normalized)
+      if (std::isfinite(x)) finite.push_back(x);
+    if (const auto fit = stats::fit_censored_lognormal(finite, sample.censored_at)) st.fit = *fit;
   }
-  return v;
+  return governing_distance(sample, st, rules).value_h;
 }
 
 std::optional<stats::BootstrapInterval> governing_interval(const DistanceSample& sample,
