@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "bootstrap_fields.hpp"
+#include "rule_kind.hpp"
 #include "section_readers.hpp"
 #include "toml_fields.hpp"
 
@@ -286,13 +287,8 @@ std::vector<std::string> barrier_rule_set_names(const fs::path& rules_dir) {
   std::vector<std::string> names;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(rules_dir, ec)) {
-    if (e.path().extension() != ".toml") continue;
-    try {
-      const toml::table t = toml::parse_file(e.path().string());
-      if (t["rule_set"]["kind"].value<std::string>() == std::optional<std::string>("barrier"))
-        names.push_back(e.path().stem().string());
-    } catch (const toml::parse_error&) {
-    }
+    if (e.path().extension() == ".toml" && detail::rule_file_kind(e.path()) == detail::RuleFileKind::barrier)
+      names.push_back(e.path().stem().string());
   }
   std::sort(names.begin(), names.end());
   return names;
