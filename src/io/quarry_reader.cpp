@@ -200,9 +200,7 @@ void read_work_areas(const TomlTable& q, design::QuarrySpec& spec) {
   const toml::array* a = q.array_of_tables("work_areas");
   if (!a) return;
   for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& node = *a->get(i);
-    const TomlTable t(q.file(), *node.as_table(), fmt::format("{}[{}]", q.field("work_areas"), i),
-                      line_of(node), {"name", "distance"});
+    const TomlTable t = q.element("work_areas", *a, i, {"name", "distance"});
     design::WorkArea w;
     w.name = t.required_string("name", "a name for the work area (check id zone.<name>)");
     t.check("name",
@@ -302,10 +300,10 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
   if (!a) return out;
   std::set<std::string> names;
   for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& node = *a->get(i);
-    const TomlTable q(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node),
-                      {"name", "group", "rules", "toe", "crest", "height", "bench_width", "seed",
-                       "exceedance", "profile", "blocks", "sources", "work_areas", "observed"});
+    const TomlTable q = top.element(
+        "quarries", *a, i,
+        {"name", "group", "rules", "toe", "crest", "height", "bench_width", "seed", "exceedance",
+         "profile", "blocks", "sources", "work_areas", "observed"});
     QuarrySection s;
     design::QuarrySpec& spec = s.spec;
     spec.name = q.required_string("name", "a name for the quarry section");
@@ -423,10 +421,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     out.push_back(std::move(s));
   }
   // The checks across sections report at the later section's table.
-  auto section_table = [&](std::size_t i) {
-    const toml::node& node = *a->get(i);
-    return TomlTable(file, *node.as_table(), fmt::format("quarries[{}]", i), line_of(node), {});
-  };
+  auto section_table = [&](std::size_t i) { return top.element("quarries", *a, i, {}); };
   // Sections pooled in one group must follow one rule set.
   for (std::size_t i = 0; i < out.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)

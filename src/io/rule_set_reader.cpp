@@ -250,9 +250,7 @@ design::EnergyClassTable load_energy_classes_file(const fs::path& file) {
   const toml::array* a = top.array_of_tables("classes");
   if (!a || a->empty()) top.missing("classes", "[[classes]] tables with class and mel");
   for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& node = *a->get(i);
-    const TomlTable c(file, *node.as_table(), fmt::format("classes[{}]", i), line_of(node),
-                      {"class", "mel", "sel", "open_ended"});
+    const TomlTable c = top.element("classes", *a, i, {"class", "mel", "sel", "open_ended"});
     design::EnergyClass e;
     const auto num = c.integer("class");
     if (!num) c.missing("class", "the class number, an integer");

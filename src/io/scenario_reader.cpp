@@ -267,9 +267,7 @@ void read_lines(const TomlTable& top, sim::Scenario& sc) {
   const toml::array* a = top.array_of_tables("observation_lines");
   if (!a) return;
   for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& node = *a->get(i);
-    const TomlTable t(top.file(), *node.as_table(), fmt::format("observation_lines[{}]", i),
-                      line_of(node), {"name", "x"});
+    const TomlTable t = top.element("observation_lines", *a, i, {"name", "x"});
     sim::ObservationLine l;
     l.name = t.required_string("name", "a name for the line");
     t.check("name", !l.name.empty(), "a non-empty name");
@@ -440,11 +438,10 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
   for (const auto& l : sc.lines) line_names.push_back(l.name);
   std::map<fs::path, std::pair<design::BarrierRuleSet, design::EnergyClassTable>> cache;
   for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& node = *a->get(i);
-    const TomlTable t(top.file(), *node.as_table(), fmt::format("barriers[{}]", i), line_of(node),
-                      {"name", "line", "rules", "design_block", "free_board_diameter",
-                       "data_quality", "candidate", "acceptable_energy_exceedance",
-                       "acceptable_height_exceedance", "observed"});
+    const TomlTable t = top.element(
+        "barriers", *a, i,
+        {"name", "line", "rules", "design_block", "free_board_diameter", "data_quality",
+         "candidate", "acceptable_energy_exceedance", "acceptable_height_exceedance", "observed"});
     design::BarrierSpec b;
     b.name = t.required_string("name", "a name for the barrier");
     t.check("name", !b.name.empty(), "a non-empty name");

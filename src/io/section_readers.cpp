@@ -341,9 +341,8 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
     read_blocks_csv(*f, density, shape, groups, where);
   if (const toml::array* rows = b->array_of_tables("table")) {
     for (std::size_t i = 0; i < rows->size(); ++i) {
-      const toml::node& node = *rows->get(i);
-      const TomlTable t(top.file(), *node.as_table(), fmt::format("{}[{}]", b->field("table"), i),
-                        line_of(node), {"id", "mass", "volume", "density", "count", "shape_factor"});
+      const TomlTable t =
+          b->element("table", *rows, i, {"id", "mass", "volume", "density", "count", "shape_factor"});
       BlockGroup g;
       g.id = t.string("id").value_or(fmt::format("B{}", groups.size() + 1));
       g.density = t.number("density", density);
@@ -446,9 +445,7 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
                                        dotted(table_path, "sources")));
   std::vector<std::pair<long, std::string>> source_at;  // each source's table: line, field
   for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& node = *a->get(i);
-    const TomlTable t(top.file(), *node.as_table(), fmt::format("{}[{}]", top.field("sources"), i), line_of(node),
-                      {"name", "x", "z", "vx", "vz", "omega"});
+    const TomlTable t = top.element("sources", *a, i, {"name", "x", "z", "vx", "vz", "omega"});
     sim::Source s;
     const auto given = t.string("name");
     s.name = given.value_or(fmt::format("S{}", i + 1));
@@ -500,7 +497,7 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
                                 "which then governs the results",
                        inside ? "" : "; a source on or below the ground starts on it")});
     sc.sources.push_back(std::move(s));
-    source_at.push_back({line_of(node), fmt::format("{}[{}]", top.field("sources"), i)});
+    source_at.push_back({t.line(), t.path()});
   }
   // A profile listed from the toe end (x rising uphill) is valid, but its blocks travel against
   // the vertex order, which the results are counted in: often a profile typed the wrong way.

@@ -167,6 +167,13 @@ const toml::array* TomlTable::array_of_tables(std::string_view key) const {
   return a;
 }
 
+TomlTable TomlTable::element(std::string_view key, const toml::array& a, std::size_t i,
+                             std::initializer_list<std::string_view> allowed) const {
+  const toml::node& node = *a.get(i);
+  return TomlTable(file_, *node.as_table(), fmt::format("{}[{}]", field(key), i), line_of(node),
+                   allowed);
+}
+
 const toml::array* TomlTable::array(std::string_view key) const {
   const toml::node* n = find(key);
   if (!n) return nullptr;

@@ -30,6 +30,7 @@ class TomlTable {
   const toml::table& table() const { return *t_; }
   const std::filesystem::path& file() const { return file_; }
   long line() const { return line_; }
+  const std::string& path() const { return prefix_; }  // "blocks.table[2]"; empty for the root
   std::string field(std::string_view key) const;
 
   const toml::node* find(std::string_view key) const;
@@ -57,6 +58,9 @@ class TomlTable {
                                     std::initializer_list<std::string_view> allowed) const;
   // An array of tables ([[key]]) or nullptr when absent.
   const toml::array* array_of_tables(std::string_view key) const;
+  // Table i of the array of tables array_of_tables(key) returned: field "key[i]", at its line.
+  TomlTable element(std::string_view key, const toml::array& a, std::size_t i,
+                    std::initializer_list<std::string_view> allowed) const;
   const toml::array* array(std::string_view key) const;
 
   // Checks a value read from `key`: throws "found <node>, expected <expected>" unless ok.
