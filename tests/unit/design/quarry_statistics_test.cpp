@@ -11,14 +11,13 @@
 #include <vector>
 
 #include "pierre/stats/lognormal_fit.hpp"
+#include "support/seeded_samples.hpp"
 
 namespace pierre::design {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double uniform(std::mt19937_64& g) { return (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53; }
-double normal(std::mt19937_64& g) { return -std::sqrt(2.0) * boost::math::erfc_inv(2 * uniform(g)); }
 
 // Runouts in metres: a share p0 stop above the toe, the rest H·logN(μ, σ); beyond `end` m they
 // left the profile (+inf).
@@ -27,11 +26,11 @@ std::vector<double> runouts(double p0, double mu, double sigma, double H, double
   std::mt19937_64 g(seed);
   std::vector<double> v;
   for (std::size_t i = 0; i < n; ++i) {
-    if (uniform(g) < p0) {
+    if (test::seeded_uniform(g) < p0) {
       v.push_back(0);
       continue;
     }
-    const double x = H * std::exp(mu + sigma * normal(g));
+    const double x = H * std::exp(mu + sigma * test::seeded_normal(g));
     v.push_back(x > end ? kInf : x);
   }
   return v;
@@ -157,7 +156,7 @@ TEST(QuarryStatistics, CensoredLognormalRecoversKnownParameters) {
 TEST(QuarryStatistics, MixtureKsEqualsOneSampleKsWithoutZerosOrCensoring) {
   std::mt19937_64 g(3);
   std::vector<double> v;
-  for (int i = 0; i < 200; ++i) v.push_back(std::exp(0.2 + 0.5 * normal(g)));
+  for (int i = 0; i < 200; ++i) v.push_back(std::exp(0.2 + 0.5 * test::seeded_normal(g)));
   stats::CensoredLognormalFit fit;
   fit.positive.mu = 0.25;
   fit.positive.sigma = 0.45;

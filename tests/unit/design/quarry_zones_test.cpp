@@ -11,6 +11,7 @@
 
 #include "pierre/design/number_text.hpp"
 #include "support/builders.hpp"
+#include "support/seeded_samples.hpp"
 
 namespace pierre::design {
 namespace {
@@ -58,7 +59,7 @@ std::vector<double> lognormal_runouts(std::size_t n, double H, std::uint64_t see
   std::mt19937_64 g(seed);
   std::vector<double> v;
   for (std::size_t i = 0; i < n; ++i) {
-    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
+    const double u = test::seeded_uniform(g);
     v.push_back(H * std::exp(-0.9 - 0.5 * std::sqrt(2.0) * boost::math::erfc_inv(2 * u)));
   }
   return v;

@@ -28,6 +28,7 @@
 #include "support/builders.hpp"
 #include "support/workbook_reader.hpp"
 #include "test_files.hpp"
+#include "support/seeded_samples.hpp"
 
 namespace {
 
@@ -74,7 +75,7 @@ std::vector<double> runouts(std::size_t n, double H, std::uint64_t seed) {
   std::mt19937_64 g(seed);
   std::vector<double> v;
   for (std::size_t i = 0; i < n; ++i) {
-    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
+    const double u = test::seeded_uniform(g);
     v.push_back(H * std::exp(-0.9 - 0.5 * std::sqrt(2.0) * boost::math::erfc_inv(2 * u)));
   }
   for (std::size_t i = 0; i < n / 40; ++i) v[i * 37 % n] = 0;

@@ -11,23 +11,23 @@
 
 #include "pierre/stats/kolmogorov_smirnov.hpp"
 #include "pierre/stats/percentile.hpp"
+#include "support/seeded_samples.hpp"
 
 namespace pierre::stats {
 namespace {
 
-double uniform(std::mt19937_64& g) { return (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53; }
 
 std::vector<double> uniform_sample(std::size_t n, std::uint64_t seed) {
   std::mt19937_64 g(seed);
   std::vector<double> x(n);
-  for (double& v : x) v = uniform(g);
+  for (double& v : x) v = test::seeded_uniform(g);
   return x;
 }
 
 std::vector<double> exponential_sample(std::size_t n, std::uint64_t seed) {
   std::mt19937_64 g(seed);
   std::vector<double> x(n);
-  for (double& v : x) v = -std::log(uniform(g));
+  for (double& v : x) v = -std::log(test::seeded_uniform(g));
   return x;
 }
 

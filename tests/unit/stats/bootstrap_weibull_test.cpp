@@ -16,20 +16,10 @@
 #include "pierre/stats/kolmogorov_smirnov.hpp"
 #include "pierre/stats/percentile.hpp"
 #include "pierre/stats/weibull_fit.hpp"
+#include "support/seeded_samples.hpp"
 
 namespace pierre::stats {
 namespace {
-
-// Inverse-CDF draws from std::mt19937_64 (whose output the standard fixes).
-std::vector<double> weibull_sample(double k, double lambda, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 g(seed);
-  std::vector<double> x(n);
-  for (double& v : x) {
-    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
-    v = lambda * std::pow(-std::log(u), 1.0 / k);
-  }
-  return x;
-}
 
 struct Interval {
   double lower, upper;
@@ -58,7 +48,7 @@ TEST(BootstrapWeibull, ExactPathIsThePlainBootstrapOfTheFittedQuantile) {
   // Up to exact_up_to values the automatic choice is the plain bootstrap, bit for bit what
   // bootstrap_replicates gives with the statistic "Weibull quantile (and max with the
   // empirical percentile) of the resample" — what design_barrier always computed.
-  const auto x = weibull_sample(1.37, 1.55, 3000, 11);
+  const auto x = test::seeded_weibull(1.37, 1.55, 3000, 11);
   WeibullBootstrapOptions o;
   o.resamples = 200;
   const auto r = bootstrap_weibull_quantile_replicates(x, 95, 17, o);
@@ -83,7 +73,7 @@ TEST(BootstrapWeibull, BinnedIntervalAgreesWithTheExactOneOnFiftyThousandValues)
   // 0.067 σ ≈ 4 % of the half-width, the difference of two ≈ 6 %. The binning error is
   // below 1e-4 of the half-width (bootstrap_weibull.hpp). Tolerance: 15 % of the half-width
   // (2.5 sd of the Monte Carlo difference).
-  const auto x = weibull_sample(1.37, 1.55, 50000, 2015);
+  const auto x = test::seeded_weibull(1.37, 1.55, 50000, 2015);
   const auto exact = bootstrap_weibull_quantile_replicates(x, 95, 1, method(WeibullBootstrapMethod::exact));
   const auto binned = bootstrap_weibull_quantile_replicates(x, 95, 2, method(WeibullBootstrapMethod::binned));
   ASSERT_TRUE(exact && binned) << exact.error << binned.error;
@@ -114,7 +104,7 @@ TEST(BootstrapWeibull, BinnedHalfWidthMatchesTheDeltaMethodOnTwoHundredThousandV
   // has a Monte Carlo error of about 3 %; allow 10 %.
   const double k = 3.2, lambda = 22.0, p = 0.95;  // bench_report's speeds
   const std::size_t n = 200000;
-  const auto x = weibull_sample(k, lambda, n, 7);
+  const auto x = test::seeded_weibull(k, lambda, n, 7);
   const auto r = bootstrap_weibull_quantile_replicates(x, 95, 3);
   ASSERT_TRUE(r) << r.error;
   EXPECT_EQ(r->method, WeibullBootstrapMethod::binned);  // automatic: n > 20 000
@@ -134,7 +124,7 @@ TEST(BootstrapWeibull, BinnedEmpiricalPercentileHasThePercentileBootstrapsDistri
   // over the bin's values by uniform indices). With few, wide bins (64) and values the fit
   // leaves out (zeros, +infinity), its replicates must have the distribution of the
   // order-statistic bootstrap of the percentile: two-sample KS, p > 0.001.
-  auto x = weibull_sample(1.0, 2.0, 30000, 5);
+  auto x = test::seeded_weibull(1.0, 2.0, 30000, 5);
   for (std::size_t i = 0; i < x.size(); i += 20) x[i] = 0.0;  // 5 % zeros
   for (std::size_t i = 7; i < x.size(); i += 1000) x[i] = std::numeric_limits<double>::infinity();
   x[3] = std::numeric_limits<double>::quiet_NaN();              // left out
@@ -154,7 +144,7 @@ TEST(BootstrapWeibull, BinnedEmpiricalPercentileHasThePercentileBootstrapsDistri
 }
 
 TEST(BootstrapWeibull, BinnedIsDeterministicPerSeed) {
-  const auto x = weibull_sample(1.37, 1.55, 30000, 9);
+  const auto x = test::seeded_weibull(1.37, 1.55, 30000, 9);
   WeibullBootstrapOptions o;
   o.resamples = 300;
   const auto a = bootstrap_weibull_quantile_replicates(x, 95, 42, o);

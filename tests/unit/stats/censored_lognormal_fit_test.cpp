@@ -9,15 +9,12 @@
 #include <vector>
 
 #include "pierre/stats/lognormal_fit.hpp"
+#include "support/seeded_samples.hpp"
 
 namespace pierre::stats {
 namespace {
 
-double uniform(std::mt19937_64& g) { return (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53; }
 // Standard normal by inversion: Φ^{-1}(u) = -√2 erfc^{-1}(2u).
-double normal(std::mt19937_64& g) {
-  return -std::sqrt(2.0) * boost::math::erfc_inv(2 * uniform(g));
-}
 
 struct RunoutSample {
   std::vector<double> values;  // zeros and observed positives
@@ -31,11 +28,11 @@ RunoutSample runout_sample(double p0, double mu, double sigma, double profile_en
   std::mt19937_64 g(seed);
   RunoutSample s;
   for (std::size_t i = 0; i < n; ++i) {
-    if (uniform(g) < p0) {
+    if (test::seeded_uniform(g) < p0) {
       s.values.push_back(0.0);
       continue;
     }
-    const double x = std::exp(mu + sigma * normal(g));
+    const double x = std::exp(mu + sigma * test::seeded_normal(g));
     if (x > profile_end) {
       s.censored_at.push_back(profile_end);
     } else {

@@ -5,19 +5,10 @@
 #include <cmath>
 #include <random>
 #include <vector>
+#include "support/seeded_samples.hpp"
 
 namespace pierre::stats {
 namespace {
-
-std::vector<double> weibull_sample(double k, double lambda, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 g(seed);
-  std::vector<double> x(n);
-  for (double& v : x) {
-    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
-    v = lambda * std::pow(-std::log(u), 1.0 / k);
-  }
-  return x;
-}
 
 TEST(KolmogorovSmirnov, ThreePointStatisticByHand) {
   // Against U(0, 1) (F(x) = x), sorted sample 0.1, 0.5, 0.8:
@@ -55,7 +46,7 @@ TEST(KolmogorovSmirnov, FarTailPValueIsPlusZero) {
 TEST(KolmogorovSmirnov, TrueDistributionIsNotRejectedShiftedOneIs) {
   const double k = 1.37, lambda = 1.55;
   const auto cdf = [&](double x) { return x <= 0 ? 0.0 : 1 - std::exp(-std::pow(x / lambda, k)); };
-  auto x = weibull_sample(k, lambda, 2000, 4242);
+  auto x = test::seeded_weibull(k, lambda, 2000, 4242);
   const auto good = kolmogorov_smirnov(x, cdf);
   ASSERT_TRUE(good);
   // Under the true F the p-value is uniform: below 0.01 for 1 % of seeds only.
@@ -87,9 +78,9 @@ TEST(KolmogorovSmirnov, TwoSampleTiesStepTogether) {
 }
 
 TEST(KolmogorovSmirnov, TwoSamplePValues) {
-  const auto a = weibull_sample(1.37, 1.55, 1500, 1);
-  const auto b = weibull_sample(1.37, 1.55, 1000, 2);
-  auto c = weibull_sample(1.37, 1.55, 1000, 3);
+  const auto a = test::seeded_weibull(1.37, 1.55, 1500, 1);
+  const auto b = test::seeded_weibull(1.37, 1.55, 1000, 2);
+  auto c = test::seeded_weibull(1.37, 1.55, 1000, 3);
   for (double& v : c) v *= 1.2;
   EXPECT_GT(kolmogorov_smirnov_two_sample(a, b)->p_value, 0.01);  // same distribution
   EXPECT_LT(kolmogorov_smirnov_two_sample(a, c)->p_value, 1e-6);  // scale 20 % larger

@@ -14,6 +14,7 @@
 
 #include "pierre/stats/bootstrap.hpp"
 #include "pierre/stats/bootstrap_weibull.hpp"
+#include "support/seeded_samples.hpp"
 
 namespace pierre::stats {
 namespace {
@@ -40,20 +41,10 @@ TEST(ResampleBlocks, AnExceptionInABlockReachesTheCaller) {
                std::runtime_error);
 }
 
-std::vector<double> weibull_sample(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 g(seed);
-  std::vector<double> x(n);
-  for (double& v : x) {
-    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
-    v = 1.55 * std::pow(-std::log(u), 1.0 / 1.37);
-  }
-  return x;
-}
-
 TEST(ResampleBlocks, BootstrapReplicatesAreTheSameForAnyThreadCount) {
   // 101 resamples: blocks of unequal size. A resample skipped or computed by the wrong
   // block would leave a 0 or another resample's value in its place.
-  const auto x = weibull_sample(500, 3);
+  const auto x = test::seeded_weibull(1.37, 1.55, 500, 3);
   const Statistic mean = [](std::span<double> v) {
     double s = 0;
     for (double e : v) s += e;
@@ -65,7 +56,7 @@ TEST(ResampleBlocks, BootstrapReplicatesAreTheSameForAnyThreadCount) {
 
   for (auto [method, n] : {std::pair{WeibullBootstrapMethod::exact, std::size_t{2000}},
                            std::pair{WeibullBootstrapMethod::binned, std::size_t{30000}}}) {
-    const auto y = weibull_sample(n, 5);
+    const auto y = test::seeded_weibull(1.37, 1.55, n, 5);
     WeibullBootstrapOptions o;
     o.method = method;
     o.resamples = 101;

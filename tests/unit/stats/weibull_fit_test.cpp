@@ -7,28 +7,17 @@
 #include <limits>
 #include <random>
 #include <vector>
+#include "support/seeded_samples.hpp"
 
 namespace pierre::stats {
 namespace {
-
-// Inverse-CDF draws from std::mt19937_64, whose output the standard fixes exactly (no std::
-// distribution, whose output is implementation-defined).
-std::vector<double> weibull_sample(double k, double lambda, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 g(seed);
-  std::vector<double> x(n);
-  for (double& v : x) {
-    const double u = (static_cast<double>(g() >> 11) + 0.5) * 0x1.0p-53;
-    v = lambda * std::pow(-std::log(u), 1.0 / k);
-  }
-  return x;
-}
 
 TEST(WeibullFit, RecoversKnownParametersWithinFourStandardErrors) {
   // Asymptotic ML standard errors (inverse Fisher information of the Weibull):
   //   sd(k̂) = k √(6/π² / n) = 0.7797 k / √n,  sd(λ̂) = (λ/k) √(1.1087 / n).
   const double k = 1.37, lambda = 1.55;  // Table D.2, screen 1 heights
   const std::size_t n = 5000;
-  const auto fit = fit_weibull(weibull_sample(k, lambda, n, 20240501));
+  const auto fit = fit_weibull(test::seeded_weibull(k, lambda, n, 20240501));
   ASSERT_TRUE(fit) << fit.error;
   const double sd_k = 0.7797 * k / std::sqrt(double(n));
   const double sd_l = lambda / k * std::sqrt(1.1087 / double(n));
@@ -40,7 +29,7 @@ TEST(WeibullFit, RecoversKnownParametersWithinFourStandardErrors) {
 
 TEST(WeibullFit, LargeScaleValuesDoNotOverflow) {
   // Energies in J are ~1e6: x^k would overflow for large k without the shift by max x.
-  const auto fit = fit_weibull(weibull_sample(8.0, 2.0e6, 2000, 7));
+  const auto fit = fit_weibull(test::seeded_weibull(8.0, 2.0e6, 2000, 7));
   ASSERT_TRUE(fit) << fit.error;
   EXPECT_NEAR(fit->shape, 8.0, 4 * 0.7797 * 8.0 / std::sqrt(2000.0));
   EXPECT_NEAR(fit->scale, 2.0e6, 4 * 2.0e6 / 8.0 * std::sqrt(1.1087 / 2000.0));
@@ -51,7 +40,7 @@ TEST(WeibullFit, SatisfiesTheLikelihoodEquations) {
   // profile equation the fit solves):
   //   ∂ℓ/∂λ = 0  ⇔  mean((x/λ)^k) = 1
   //   ∂ℓ/∂k = 0  ⇔  1/k + mean(ln(x/λ)) - mean((x/λ)^k ln(x/λ)) = 0
-  const auto x = weibull_sample(0.8, 3.0, 40, 99);
+  const auto x = test::seeded_weibull(0.8, 3.0, 40, 99);
   const auto fit = fit_weibull(x);
   ASSERT_TRUE(fit) << fit.error;
   const double k = fit->shape, l = fit->scale;
@@ -68,7 +57,7 @@ TEST(WeibullFit, SatisfiesTheLikelihoodEquations) {
 }
 
 TEST(WeibullFit, NonPositiveAndNonFiniteValuesAreLeftOutAndCounted) {
-  auto x = weibull_sample(2.0, 1.0, 100, 3);
+  auto x = test::seeded_weibull(2.0, 1.0, 100, 3);
   const auto clean = fit_weibull(x);
   x.insert(x.end(), {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
                      std::numeric_limits<double>::infinity()});
