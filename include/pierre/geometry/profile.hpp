@@ -119,6 +119,13 @@ class Profile {
   // out of line so that the fast paths stay small).
   std::optional<Contact> first_contact_search(Vec2 p0, Vec2 v0, double g, double t_max,
                                               const Departure& dep) const;
+  // first_contact's march for a hop whose departure (or starting segment) is the single-segment
+  // run r and holds no contact: the runs ahead solved in order, as first_contact_search does.
+  // 1: found (out); 0: none before the section ends; -1: first_contact_search must decide (a
+  // longer run ahead, or none within its march).
+  int march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact& out) const;
+  // The last segment whose start is not beyond x along the main direction (x-monotone sections).
+  int segment_under(double x) const;
   double max_height_search(Vec2 p0, Vec2 v0, double g, double t_end, double at_least, int seg_a,
                            int seg_b) const;
   // A maximal straight run of collinear segments [begin, end): one line for every search.
