@@ -596,7 +596,32 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     const double z = p0.z + v0.z * t_star - 0.5 * g * t_star * t_star;
     return std::max(best, z - (run.a.z + (x - run.a.x) * run.slope));
   }
+  // A short hop over a few runs (down a face), without the general search's set-up.
+  if (x_monotone_ && v0.x != 0.0 && seg_b >= 0) {
+    const int from = seg_a >= 0 ? seg_a : segment_under(p0.x);  // from a source: as the contact search
+    const int r_lo = run_of_[std::min(from, seg_b)], r_hi = run_of_[std::max(from, seg_b)];
+    if (r_hi - r_lo < 2 * kMarch)
+      return max_height_runs(p0, v0, g, t_end, std::max(0.0, at_least), r_lo, r_hi);
+  }
   return max_height_search(p0, v0, g, t_end, at_least, seg_a, seg_b);
+}
+
+[[gnu::noinline]] double Profile::max_height_runs(Vec2 p0, Vec2 v0, double g, double t_end,
+                                                  double best, int r_lo, int r_hi) const {
+  // Without overhangs the ground under the arc is exactly the runs between those under its two
+  // ends, each one line: h(t) = z(t) − line(x(t)) is a concave quadratic on each, its maximum
+  // over the part of the arc above the run at the stationary point or an end.
+  auto z_at = [&](double t) { return p0.z + v0.z * t - 0.5 * g * t * t; };
+  const ArcX ax(p0.x, v0.x);
+  for (int r = r_lo; r <= r_hi; ++r) {
+    const Run& run = runs_[r];
+    double sa, sb;
+    if (run.d.x == 0.0 || !ax.window(run.x_lo, run.x_hi, t_end, sa, sb)) continue;
+    const double t_star = std::clamp((v0.z - v0.x * run.slope) / g, sa, sb);
+    const double x = p0.x + v0.x * t_star;
+    best = std::max(best, z_at(t_star) - (run.a.z + (x - run.a.x) * run.slope));
+  }
+  return best;
 }
 
 [[gnu::noinline]] double Profile::max_height_search(Vec2 p0, Vec2 v0, double g, double t_end,
@@ -664,20 +689,9 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     lo = std::min(seg_a, seg_b);
     hi = std::max(seg_a, seg_b);
   }
-  // h(t) = z(t) − ground(x(t)) is a concave quadratic on each segment: its maximum over the
-  // part of the arc above the segment is at the stationary point or an end.
-  if (x_monotone_ && seg_a >= 0 && seg_b >= 0 && run_of_[hi] - run_of_[lo] < 2 * kMarch) {
-    // A short hop: the few straight runs under it, each one line, directly.
-    for (int r = run_of_[lo]; r <= run_of_[hi]; ++r) {
-      const Run& run = runs_[r];
-      double sa, sb;
-      if (run.d.x == 0.0 || !ax.window(run.x_lo, run.x_hi, t_end, sa, sb)) continue;
-      const double t_star = std::clamp((v0.z - v0.x * run.slope) / g, sa, sb);
-      const double x = p0.x + v0.x * t_star;
-      best = std::max(best, z_at(t_star) - (run.a.z + (x - run.a.x) * run.slope));
-    }
-    return best;
-  }
+  // (A short hop without overhangs, over fewer than 2·kMarch runs, never comes here: see
+  // max_height_runs.) h(t) = z(t) − ground(x(t)) is a concave quadratic on each segment: its
+  // maximum over the part of the arc above the segment is at the stationary point or an end.
   auto bound = [&](const Node& nd) {
     if (nd.last <= lo || nd.first > hi) return -kInf;
     double ta, tb;

@@ -126,6 +126,9 @@ class Profile {
   int march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact& out) const;
   // The last segment whose start is not beyond x along the main direction (x-monotone sections).
   int segment_under(double x) const;
+  // max_height_above_ground over the runs [r_lo, r_hi] of an x-monotone section, each one line.
+  double max_height_runs(Vec2 p0, Vec2 v0, double g, double t_end, double best, int r_lo,
+                         int r_hi) const;
   double max_height_search(Vec2 p0, Vec2 v0, double g, double t_end, double at_least, int seg_a,
                            int seg_b) const;
   // A maximal straight run of collinear segments [begin, end): one line for every search.
