@@ -361,6 +361,7 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       if (const int found = march_runs(p0, v0, g, t_max, run_of_[under], c); found >= 0)
         return found ? std::optional<Contact>(c) : std::nullopt;
     }
+    return first_contact_search(p0, v0, g, t_max, dep, under);
   }
   return first_contact_search(p0, v0, g, t_max, dep);
 }
@@ -394,7 +395,7 @@ int Profile::march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact
 }
 
 [[gnu::noinline]] std::optional<Contact> Profile::first_contact_search(
-    Vec2 p0, Vec2 v0, double g, double t_max, const Departure& dep) const {
+    Vec2 p0, Vec2 v0, double g, double t_max, const Departure& dep, int under) const {
   ArcSearch as{p0, v0, g, ArcX(p0.x, v0.x), dep, t_max};
 
   // A straight run of collinear segments is one line for the search; the segment hit is then
@@ -483,7 +484,7 @@ int Profile::march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact
   }
   if (ahead_seed < 0) {
     // No departure (a flight from a source): start the march at the segment under the block.
-    const int lo = segment_under(p0.x);
+    const int lo = under >= 0 ? under : segment_under(p0.x);
     as.test_segment(segments_[lo], lo);
     ahead_seed = behind_seed = lo;
   }
@@ -602,6 +603,7 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     const int r_lo = run_of_[std::min(from, seg_b)], r_hi = run_of_[std::max(from, seg_b)];
     if (r_hi - r_lo < 2 * kMarch)
       return max_height_runs(p0, v0, g, t_end, std::max(0.0, at_least), r_lo, r_hi);
+    return max_height_search(p0, v0, g, t_end, at_least, from, seg_b);
   }
   return max_height_search(p0, v0, g, t_end, at_least, seg_a, seg_b);
 }

@@ -116,9 +116,10 @@ class Profile {
   template <class Prune, class Visit>
   void segments_at(double x, Prune prune, Visit visit) const;
   // The general searches behind the closed-form fast paths of the two queries above (kept
-  // out of line so that the fast paths stay small).
+  // out of line so that the fast paths stay small). `under`: segment_under(p0.x) for a flight
+  // from a source, when already found.
   std::optional<Contact> first_contact_search(Vec2 p0, Vec2 v0, double g, double t_max,
-                                              const Departure& dep) const;
+                                              const Departure& dep, int under = -1) const;
   // first_contact's march for a hop whose departure (or starting segment) is the single-segment
   // run r and holds no contact: the runs ahead solved in order, as first_contact_search does.
   // 1: found (out); 0: none before the section ends; -1: first_contact_search must decide (a
