@@ -225,6 +225,57 @@ int Profile::build_node(int first, int last) {
 
 namespace {
 
+// Earliest entering root of the arc p0 + v0 t − g t²/2 on a line (point A, unit direction d,
+// air-side normal n) whose piece of interest spans [0, length] along d, before t_best; kind: 0
+// plain, 1 departed (c = 0 exactly: drop the trivial root t = 0, model-2d.md §2; from a concave
+// vertex, entering the neighbour at once), 2 left tangentially (cannot be hit).
+inline bool line_root(Vec2 p0, Vec2 v0, double g, const ArcX& ax, double t_best, Vec2 A, Vec2 n,
+                      Vec2 d, double length, double xlo, double xhi, int kind,
+                      bool concave_vertex, double& t_out, double& along_out) {
+  if (kind == 2) return false;
+  double c = dot(p0 - A, n);
+  const double b = dot(v0, n);
+  const double a = -0.5 * g * n.z;
+  double roots[2];
+  int nroots = 0;
+  if (kind == 1) {
+    c = 0.0;
+    if (b < 0 && concave_vertex) {
+      roots[nroots++] = 0.0;  // entering the neighbour at a concave vertex at once
+    } else if (a != 0.0) {
+      roots[nroots++] = -b / a;
+    }
+  } else if (double ta, tb; !ax.window(xlo - kEps, xhi + kEps, t_best, ta, tb)) {
+    return false;  // the arc does not pass over this piece before the best contact so far
+  } else if (a == 0.0) {
+    if (b != 0.0) roots[nroots++] = -c / b;
+  } else {
+    const double disc = b * b - 4 * a * c;
+    if (disc < 0) return false;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    if (q == 0.0) {
+      roots[nroots++] = 0.0;
+    } else {
+      const double r1 = q / a, r2 = c / q;
+      roots[nroots++] = std::min(r1, r2);
+      roots[nroots++] = std::max(r1, r2);
+    }
+  }
+  for (int r = 0; r < nroots; ++r) {
+    const double t = roots[r];
+    if (!(t >= 0.0) || t >= t_best) continue;
+    if (!(b + 2 * a * t < 0.0)) continue;  // must enter from the air side
+    const Vec2 pt{p0.x + v0.x * t, p0.z + v0.z * t - 0.5 * g * t * t};
+    const double along = dot(pt - A, d);
+    const double slack = kEps * std::max(1.0, length);
+    if (along < -slack || along > length + slack) continue;
+    t_out = t;
+    along_out = std::clamp(along, 0.0, length);
+    return true;
+  }
+  return false;
+}
+
 // One contact search: the arc, its departure and the earliest contact found so far.
 struct ArcSearch {
   Vec2 p0, v0;
@@ -235,53 +286,10 @@ struct ArcSearch {
   Contact best{};
   bool found = false;
 
-  // Earliest entering root on a line (point A, unit direction d, air-side normal n) whose
-  // piece of interest spans [0, length] along d; kind: 0 plain, 1 departed (c = 0 exactly:
-  // drop the trivial root t = 0, model-2d.md §2), 2 left tangentially (cannot be hit).
   bool solve(Vec2 A, Vec2 n, Vec2 d, double length, double xlo, double xhi, int kind,
              double& t_out, double& along_out) const {
-    if (kind == 2) return false;
-    double c = dot(p0 - A, n);
-    const double b = dot(v0, n);
-    const double a = -0.5 * g * n.z;
-    double roots[2];
-    int nroots = 0;
-    if (kind == 1) {
-      c = 0.0;
-      if (b < 0 && dep.concave_vertex) {
-        roots[nroots++] = 0.0;  // entering the neighbour at a concave vertex at once
-      } else if (a != 0.0) {
-        roots[nroots++] = -b / a;
-      }
-    } else if (double ta, tb; !ax.window(xlo - kEps, xhi + kEps, t_best, ta, tb)) {
-      return false;  // the arc does not pass over this piece before the best contact so far
-    } else if (a == 0.0) {
-      if (b != 0.0) roots[nroots++] = -c / b;
-    } else {
-      const double disc = b * b - 4 * a * c;
-      if (disc < 0) return false;
-      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-      if (q == 0.0) {
-        roots[nroots++] = 0.0;
-      } else {
-        const double r1 = q / a, r2 = c / q;
-        roots[nroots++] = std::min(r1, r2);
-        roots[nroots++] = std::max(r1, r2);
-      }
-    }
-    for (int r = 0; r < nroots; ++r) {
-      const double t = roots[r];
-      if (!(t >= 0.0) || t >= t_best) continue;
-      if (!(b + 2 * a * t < 0.0)) continue;  // must enter from the air side
-      const Vec2 pt{p0.x + v0.x * t, p0.z + v0.z * t - 0.5 * g * t * t};
-      const double along = dot(pt - A, d);
-      const double slack = kEps * std::max(1.0, length);
-      if (along < -slack || along > length + slack) continue;
-      t_out = t;
-      along_out = std::clamp(along, 0.0, length);
-      return true;
-    }
-    return false;
+    return line_root(p0, v0, g, ax, t_best, A, n, d, length, xlo, xhi, kind, dep.concave_vertex,
+                     t_out, along_out);
   }
 
   int kind_of(int j) const {
@@ -332,13 +340,62 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
         if (along >= -slack && along <= s.length + slack)
           return Contact{t, j, std::clamp(along, 0.0, s.length)};
       }
+      // The next commonest: a hop that leaves its segment (down a face). The departed line
+      // holds no contact (the root just rejected is the only one it can have), so the runs
+      // ahead come next, as in the general search.
+      Contact c;
+      if (const int found = march_runs(p0, v0, g, t_max, run_of_[j], c); found >= 0)
+        return found ? std::optional<Contact>(c) : std::nullopt;
     }
+  } else if (x_monotone_ && v0.x != 0.0 && dep.segment[0] < 0 && dep.segment[1] < 0) {
+    // A flight from a source: the segment under the block first, then the runs ahead (the
+    // general search's order and arithmetic, without its set-up).
+    const int under = segment_under(p0.x);
+    if (runs_[run_of_[under]].end - runs_[run_of_[under]].begin == 1) {
+      const Segment& s = segments_[under];
+      double t, along;
+      if (line_root(p0, v0, g, ArcX(p0.x, v0.x), t_max, s.a, s.n, s.d, s.length, s.x_lo, s.x_hi,
+                    0, false, t, along))
+        return Contact{t, under, along};
+      Contact c;
+      if (const int found = march_runs(p0, v0, g, t_max, run_of_[under], c); found >= 0)
+        return found ? std::optional<Contact>(c) : std::nullopt;
+    }
+    return first_contact_search(p0, v0, g, t_max, dep, under);
   }
   return first_contact_search(p0, v0, g, t_max, dep);
 }
 
+int Profile::segment_under(double x) const {
+  int lo = 0, hi = static_cast<int>(segments_.size()) - 1;
+  while (lo < hi) {  // last segment whose start is not beyond x along the main direction
+    const int mid = (lo + hi + 1) / 2;
+    if ((segments_[mid].a.x - x) * main_direction_ <= 0) lo = mid; else hi = mid - 1;
+  }
+  return lo;
+}
+
+int Profile::march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact& out) const {
+  const ArcX ax(p0.x, v0.x);
+  const int step = (v0.x > 0) == (main_direction_ > 0) ? 1 : -1;
+  const int n_runs = static_cast<int>(runs_.size());
+  for (int k = 0; k < kMarch; ++k) {
+    r += step;
+    if (r < 0 || r >= n_runs) return 0;
+    const Run& run = runs_[r];
+    if (run.end - run.begin > 1) return -1;
+    double t, along;
+    if (line_root(p0, v0, g, ax, t_max, run.a, run.n, run.d, run.length, run.x_lo, run.x_hi, 0,
+                  false, t, along)) {
+      out = {t, run.begin, along};
+      return 1;
+    }
+  }
+  return -1;
+}
+
 [[gnu::noinline]] std::optional<Contact> Profile::first_contact_search(
-    Vec2 p0, Vec2 v0, double g, double t_max, const Departure& dep) const {
+    Vec2 p0, Vec2 v0, double g, double t_max, const Departure& dep, int under) const {
   ArcSearch as{p0, v0, g, ArcX(p0.x, v0.x), dep, t_max};
 
   // A straight run of collinear segments is one line for the search; the segment hit is then
@@ -427,11 +484,7 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
   }
   if (ahead_seed < 0) {
     // No departure (a flight from a source): start the march at the segment under the block.
-    int lo = 0, hi = static_cast<int>(segments_.size()) - 1;
-    while (lo < hi) {  // last segment whose start is not beyond p0.x along the main direction
-      const int mid = (lo + hi + 1) / 2;
-      if ((segments_[mid].a.x - p0.x) * main_direction_ <= 0) lo = mid; else hi = mid - 1;
-    }
+    const int lo = under >= 0 ? under : segment_under(p0.x);
     as.test_segment(segments_[lo], lo);
     ahead_seed = behind_seed = lo;
   }
@@ -544,7 +597,33 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     const double z = p0.z + v0.z * t_star - 0.5 * g * t_star * t_star;
     return std::max(best, z - (run.a.z + (x - run.a.x) * run.slope));
   }
+  // A short hop over a few runs (down a face), without the general search's set-up.
+  if (x_monotone_ && v0.x != 0.0 && seg_b >= 0) {
+    const int from = seg_a >= 0 ? seg_a : segment_under(p0.x);  // from a source: as the contact search
+    const int r_lo = run_of_[std::min(from, seg_b)], r_hi = run_of_[std::max(from, seg_b)];
+    if (r_hi - r_lo < 2 * kMarch)
+      return max_height_runs(p0, v0, g, t_end, std::max(0.0, at_least), r_lo, r_hi);
+    return max_height_search(p0, v0, g, t_end, at_least, from, seg_b);
+  }
   return max_height_search(p0, v0, g, t_end, at_least, seg_a, seg_b);
+}
+
+[[gnu::noinline]] double Profile::max_height_runs(Vec2 p0, Vec2 v0, double g, double t_end,
+                                                  double best, int r_lo, int r_hi) const {
+  // Without overhangs the ground under the arc is exactly the runs between those under its two
+  // ends, each one line: h(t) = z(t) − line(x(t)) is a concave quadratic on each, its maximum
+  // over the part of the arc above the run at the stationary point or an end.
+  auto z_at = [&](double t) { return p0.z + v0.z * t - 0.5 * g * t * t; };
+  const ArcX ax(p0.x, v0.x);
+  for (int r = r_lo; r <= r_hi; ++r) {
+    const Run& run = runs_[r];
+    double sa, sb;
+    if (run.d.x == 0.0 || !ax.window(run.x_lo, run.x_hi, t_end, sa, sb)) continue;
+    const double t_star = std::clamp((v0.z - v0.x * run.slope) / g, sa, sb);
+    const double x = p0.x + v0.x * t_star;
+    best = std::max(best, z_at(t_star) - (run.a.z + (x - run.a.x) * run.slope));
+  }
+  return best;
 }
 
 [[gnu::noinline]] double Profile::max_height_search(Vec2 p0, Vec2 v0, double g, double t_end,
@@ -557,13 +636,7 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     return std::max(at_least, ground ? z_at(t_apex) - ground->z : 0.0);
   }
   if (x_monotone_ && seg_a < 0 && seg_b >= 0) {
-    // A flight from a source: the segment under its start (as the contact search finds it).
-    int lo = 0, hi = static_cast<int>(segments_.size()) - 1;
-    while (lo < hi) {
-      const int mid = (lo + hi + 1) / 2;
-      if ((segments_[mid].a.x - p0.x) * main_direction_ <= 0) lo = mid; else hi = mid - 1;
-    }
-    seg_a = lo;
+    seg_a = segment_under(p0.x);  // a flight from a source (as the contact search finds it)
   }
   double best = std::max(0.0, at_least);
   const ArcX ax(p0.x, v0.x);
@@ -618,20 +691,9 @@ double Profile::max_height_above_ground(Vec2 p0, Vec2 v0, double g, double t_end
     lo = std::min(seg_a, seg_b);
     hi = std::max(seg_a, seg_b);
   }
-  // h(t) = z(t) − ground(x(t)) is a concave quadratic on each segment: its maximum over the
-  // part of the arc above the segment is at the stationary point or an end.
-  if (x_monotone_ && seg_a >= 0 && seg_b >= 0 && run_of_[hi] - run_of_[lo] < 2 * kMarch) {
-    // A short hop: the few straight runs under it, each one line, directly.
-    for (int r = run_of_[lo]; r <= run_of_[hi]; ++r) {
-      const Run& run = runs_[r];
-      double sa, sb;
-      if (run.d.x == 0.0 || !ax.window(run.x_lo, run.x_hi, t_end, sa, sb)) continue;
-      const double t_star = std::clamp((v0.z - v0.x * run.slope) / g, sa, sb);
-      const double x = p0.x + v0.x * t_star;
-      best = std::max(best, z_at(t_star) - (run.a.z + (x - run.a.x) * run.slope));
-    }
-    return best;
-  }
+  // (A short hop without overhangs, over fewer than 2·kMarch runs, never comes here: see
+  // max_height_runs.) h(t) = z(t) − ground(x(t)) is a concave quadratic on each segment: its
+  // maximum over the part of the arc above the segment is at the stationary point or an end.
   auto bound = [&](const Node& nd) {
     if (nd.last <= lo || nd.first > hi) return -kInf;
     double ta, tb;

@@ -116,9 +116,20 @@ class Profile {
   template <class Prune, class Visit>
   void segments_at(double x, Prune prune, Visit visit) const;
   // The general searches behind the closed-form fast paths of the two queries above (kept
-  // out of line so that the fast paths stay small).
+  // out of line so that the fast paths stay small). `under`: segment_under(p0.x) for a flight
+  // from a source, when already found.
   std::optional<Contact> first_contact_search(Vec2 p0, Vec2 v0, double g, double t_max,
-                                              const Departure& dep) const;
+                                              const Departure& dep, int under = -1) const;
+  // first_contact's march for a hop whose departure (or starting segment) is the single-segment
+  // run r and holds no contact: the runs ahead solved in order, as first_contact_search does.
+  // 1: found (out); 0: none before the section ends; -1: first_contact_search must decide (a
+  // longer run ahead, or none within its march).
+  int march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact& out) const;
+  // The last segment whose start is not beyond x along the main direction (x-monotone sections).
+  int segment_under(double x) const;
+  // max_height_above_ground over the runs [r_lo, r_hi] of an x-monotone section, each one line.
+  double max_height_runs(Vec2 p0, Vec2 v0, double g, double t_end, double best, int r_lo,
+                         int r_hi) const;
   double max_height_search(Vec2 p0, Vec2 v0, double g, double t_end, double at_least, int seg_a,
                            int seg_b) const;
   // A maximal straight run of collinear segments [begin, end): one line for every search.
