@@ -110,6 +110,7 @@ class Integrator {
     if (st.kind == Kind::flight) {  // above the ground: starts in flight
       mode_ = Mode::flight;
       dep_ = Departure{};
+      check_flight();
     } else if (st.kind == Kind::outside) {
       stop(StopReason::boundary);
     } else {
@@ -133,7 +134,7 @@ class Integrator {
       dep_ = Departure{};
       dep_.segment[0] = j;
       dep_.tangent[0] = true;
-      return;
+      return check_flight();
     }
     seg_ = j;
     note_floor(j);
@@ -143,8 +144,13 @@ class Integrator {
     mode_ = Mode::sliding;
   }
 
+  // A flight starts only from a finite state (fly() relies on it): else the block stops here,
+  // as the flight would have before it began. A rebound checks just its position (below).
+  void check_flight() {
+    if (!all_finite(p_.x, p_.z, v_.x, v_.z, omega_)) stop(StopReason::numerical);
+  }
+
   void fly() {
-    if (!all_finite(p_.x, p_.z, v_.x, v_.z, omega_)) return stop(StopReason::numerical);
     // When the block would leave the profile's horizontal extent, or run out of time.
     double t_leave = kInf;
     if (v_.x > 0) t_leave = (profile_.x_max() - p_.x) / v_.x;
@@ -266,6 +272,8 @@ class Integrator {
       dep_.segment[1] = j + 1;
       dep_.concave_vertex = profile_.turn_after(j) == VertexTurn::concave;
     }
+    // The rebound's velocity and spin were checked above; its position is the contact's.
+    if (!all_finite(p_.x, p_.z)) stop(StopReason::numerical);
   }
 
   void slide() {
@@ -370,6 +378,7 @@ class Integrator {
     dep_.segment[0] = seg_;
     dep_.tangent[0] = true;
     dep_.segment[1] = next;
+    check_flight();
   }
 
   const TrajectoryModel& m_;
