@@ -220,8 +220,12 @@ class Integrator {
     return true;
   }
 
+  // An impact from the ground (a launch, a concave vertex): rare, so one copy out of line,
+  // while fly() has impact() inlined, without a call's register saves and restores.
+  [[gnu::noinline]] void impact_from_ground(int j, double along) { impact(j, along); }
+
   // An impact on segment j at p_, `along` metres from its start vertex.
-  void impact(int j, double along) {
+  [[gnu::always_inline]] void impact(int j, double along) {
     if (!count_event()) return;
     const Segment& s = profile_.segment(j);
     if (!out_.has_first_impact) {
@@ -349,7 +353,7 @@ class Integrator {
         return;                      // next call decides: stop by friction or restart
       case Event::launch:
         // Forced into flight: the roughness tilts the plane so v_n' = −v sin θ < 0 (§3.2.2).
-        return impact(seg_, along_);
+        return impact_from_ground(seg_, along_);
       case Event::end:
         return vertex(dir);
     }
@@ -368,7 +372,7 @@ class Integrator {
       return;
     }
     // A concave vertex is an impact on the next segment, and impact() counts it.
-    if (turn == VertexTurn::concave) return impact(next, dir > 0 ? 0.0 : ns.length);
+    if (turn == VertexTurn::concave) return impact_from_ground(next, dir > 0 ? 0.0 : ns.length);
     if (!count_event()) return;
     // Convex: a point mass cannot follow the bend, it flies from the vertex. At rest it simply
     // moves on to the next segment.
