@@ -7,7 +7,11 @@ namespace pierre::sim {
 
 ObservationTally::ObservationTally(const std::vector<ObservationLine>& lines,
                                    const geometry::Profile& profile, bool all_crossings)
-    : profile_(&profile), all_(all_crossings), main_direction_(profile.main_direction()) {
+    : profile_(&profile),
+      all_(all_crossings),
+      main_direction_(profile.main_direction()),
+      forwards_(all_ || main_direction_ > 0),
+      backwards_(all_ || main_direction_ < 0) {
   for (const ObservationLine& l : lines) {
     Line ln{l.x, 0.0, false};
     // Where one ground line is all there is at x, its elevation is fixed; under an overhang

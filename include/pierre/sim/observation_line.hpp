@@ -39,23 +39,22 @@ class ObservationTally {
   // cross no line, and that is found here from the lines sorted by x without a call.
   void flight(geometry::Vec2 p0, geometry::Vec2 v0, double omega, double t0, double tau,
               double g) {
-    if (v0.x == 0.0) return;  // a vertical drop crosses no vertical line
-    // Only first crossings in the main direction count unless all are asked for.
-    if (!all_ && (v0.x >= 0 ? 1 : -1) != main_direction_) return;
-    const double x1 = p0.x + v0.x * tau;
     // The lines crossed, half-open (0, tau] (a crossing at an arc's end is not counted again by
     // the next piece), are a run [a, b) of the sorted ones: x0 < xc <= x1 forwards, x1 <= xc < x0
-    // backwards. The tests are written as negations so that a NaN end counts as before.
+    // backwards. The tests are written as negations so that a NaN end counts as before, and a
+    // NaN v0.x goes backwards. Only first crossings in the main direction count unless all are
+    // asked for (forwards_, backwards_); a vertical drop crosses no vertical line.
+    const double x1 = p0.x + v0.x * tau;
     const std::size_t n = xs_.size();
     if (v0.x > 0) {
-      if (p0.x >= x_last_ || x1 < x_first_) return;  // the arc is beside every line
+      if (!forwards_ || p0.x >= x_last_ || x1 < x_first_) return;  // beside every line
       const std::size_t a = std::upper_bound(xs_.begin(), xs_.end(), p0.x) - xs_.begin();
       if (a == n || xs_[a] > x1) return;
       std::size_t b = a + 1;
       while (b < n && !(xs_[b] > x1)) ++b;
       flight_crossings(a, b, p0, v0, omega, t0, g);
     } else {
-      if (p0.x <= x_first_ || x1 > x_last_) return;
+      if (v0.x == 0.0 || !backwards_ || p0.x <= x_first_ || x1 > x_last_) return;
       const std::size_t b = std::lower_bound(xs_.begin(), xs_.end(), p0.x) - xs_.begin();
       if (b == 0 || xs_[b - 1] < x1) return;
       std::size_t a = b - 1;
@@ -93,6 +92,7 @@ class ObservationTally {
   const geometry::Profile* profile_;
   bool all_;
   int main_direction_;
+  bool forwards_, backwards_;  // crossings in that direction (x rising, falling) are recorded
   std::uint64_t trajectory_ = 0;
   std::uint32_t block_ = 0;
   double mass_ = 0, inertia_ = 0;
