@@ -175,7 +175,7 @@ class Integrator {
       return stop(StopReason::numerical);  // no contact and no way out: lost through the ground
     }
     // The segments under the arc's ends: where it departs (if on the ground) and lands.
-    const int seg_from = dep_.segment[0] >= 0 ? dep_.segment[0] : -1;
+    const int seg_from = dep_.segment[0];  // -1 when none
     const int seg_to = contact ? contact->segment : (v_.x * profile_.main_direction() > 0
                                                          ? static_cast<int>(profile_.segment_count()) - 1
                                                          : 0);
