@@ -316,7 +316,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
         is_path(spec.rules) ? relative_to(file, spec.rules).string() : spec.rules;
     const fs::path rules_file = quarry_rules_file(rules_arg, rules_dir);
     if (const auto kind = detail::rule_file_kind(rules_file);
-        kind != detail::RuleFileKind::quarry && kind != detail::RuleFileKind::other)
+        detail::is_other_rule_kind(kind, detail::RuleFileKind::quarry))
       q.fail("rules", fmt::format("a quarry rule set (e.g. \"quarry-thesis-2015\", "
                                   "\"quarry-conservative\"; {} is {})",
                                   rules_file.string(), detail::describe(kind)));

@@ -8,12 +8,17 @@
 
 namespace pierre::io::detail {
 
-enum class RuleFileKind { barrier, energy_classes, quarry, materials, other };
+enum class RuleFileKind { barrier, energy_classes, quarry, materials, other, unparsable };
 
 // By its [rule_set] kind ("barrier", "energy-classes"), a quarry rule set's [toe] and
-// [governing], or a materials file's preset tables; `other` for anything else, a file that
-// cannot be read or parsed included (its own loader reports that).
-RuleFileKind rule_file_kind(const std::filesystem::path& file);
+// [governing], or a materials file's preset tables; `unparsable` for a file that is not valid
+// TOML (where and why in *parse_error, when given), `other` for anything else, a file that
+// cannot be read included (its own loader reports that).
+RuleFileKind rule_file_kind(const std::filesystem::path& file, std::string* parse_error = nullptr);
+
+// True when the file is a rule file of another kind than `wanted`: a scenario naming it is told
+// what it is. A file that is no rule file, or does not parse, is left to the loader's errors.
+bool is_other_rule_kind(RuleFileKind kind, RuleFileKind wanted);
 
 // "a barrier rule set", "an energy class table", …
 std::string_view describe(RuleFileKind kind);

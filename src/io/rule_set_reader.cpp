@@ -292,4 +292,28 @@ std::vector<std::string> barrier_rule_set_names(const fs::path& rules_dir) {
   return names;
 }
 
+std::string barrier_rule_sets_held(const fs::path& rules_dir) {
+  std::vector<std::string> names, broken;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(rules_dir, ec)) {
+    if (e.path().extension() != ".toml") continue;
+    std::string why;
+    const auto kind = detail::rule_file_kind(e.path(), &why);
+    if (kind == detail::RuleFileKind::barrier) names.push_back(e.path().stem().string());
+    if (kind == detail::RuleFileKind::unparsable)
+      broken.push_back(e.path().filename().string() + " (" + why + ")");
+  }
+  std::sort(names.begin(), names.end());
+  std::sort(broken.begin(), broken.end());
+  // A rule set with a typo in it is not a barrier rule set yet, but it is the one the user may
+  // be looking for: say it is there and why it was passed over.
+  std::string held = names.empty() ? "it holds no barrier rule set"
+                                   : "its barrier rule sets: " + detail::quoted_list(names);
+  if (!broken.empty()) {
+    held += "; not valid TOML, so not looked at: ";
+    for (std::size_t i = 0; i < broken.size(); ++i) held += (i ? ", " : "") + broken[i];
+  }
+  return held;
+}
+
 }  // namespace pierre::io

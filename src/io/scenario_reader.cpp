@@ -27,6 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 using detail::CsvTable;
 using detail::describe;
+using detail::quoted_list;
 using detail::line_of;
 using detail::extent;
 using detail::parse_toml;
@@ -283,12 +284,6 @@ void read_lines(const TomlTable& top, sim::Scenario& sc) {
 
 // ---- barriers (design-checks.md §1) ----
 
-std::string quoted_list(const std::vector<std::string>& v, const char* sep = ", ") {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : sep) + ("\"" + x + "\"");
-  return s;
-}
-
 design::DesignBlock read_design_block(const TomlTable& t) {
   const std::string expected =
       "\"largest\", { percentile = p } (of the block volumes, optional density) or "
@@ -459,10 +454,9 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
                                                       : rules_dir / (b.rules + ".toml");
     std::error_code ec;
     if (!fs::is_regular_file(rules_file, ec)) {
-      const auto names = barrier_rule_set_names(rules_dir);
-      const std::string held = names.empty() ? "it holds none" : "it holds " + quoted_list(names);
-      const std::string expected = fmt::format(
-          "a rule set of {} or a path to a rule-set TOML file", rules_folder.named(held));
+      const std::string expected =
+          fmt::format("a rule set of {} or a path to a rule-set TOML file",
+                      rules_folder.named(barrier_rule_sets_held(rules_dir)));
       if (t.has("rules"))
         t.fail("rules", expected + fmt::format(" ({} {})", rules_file.string(),
                                                fs::exists(rules_file, ec) ? "is not a file"
@@ -471,20 +465,16 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
       t.missing("rules", fmt::format("the default rule set \"{}\" in {}: copy {}.toml and the "
                                      "class table it names (etag027-classes.toml) there, or give "
                                      "rules = a name or a path",
-                                     b.rules, rules_folder.named(held), b.rules));
+                                     b.rules, rules_folder.named(barrier_rule_sets_held(rules_dir)),
+                                     b.rules));
     }
     auto cached = cache.find(rules_file);
     if (cached == cache.end()) {  // read once per file, however many barriers name it
       if (const auto kind = detail::rule_file_kind(rules_file);
-          kind != detail::RuleFileKind::barrier && kind != detail::RuleFileKind::other) {
-        const auto names = barrier_rule_set_names(rules_dir);
+          detail::is_other_rule_kind(kind, detail::RuleFileKind::barrier))
         t.fail("rules", fmt::format("a barrier rule set ({} is {}; the rules folder is {})",
                                     rules_file.string(), detail::describe(kind),
-                                    rules_folder.named(names.empty()
-                                                           ? "it holds no barrier rule set"
-                                                           : "its barrier rule sets: " +
-                                                                 quoted_list(names))));
-      }
+                                    rules_folder.named(barrier_rule_sets_held(rules_dir))));
       design::BarrierRuleSet rules = load_rule_set_file(rules_file);
       design::EnergyClassTable classes =
           load_energy_classes_file(energy_classes_file(rules, rules_file, rules_folder));

@@ -11,6 +11,12 @@
 
 namespace pierre::io::detail {
 
+std::string quoted_list(const std::vector<std::string>& v, const char* sep) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : sep) + ("\"" + x + "\"");
+  return s;
+}
+
 std::string describe(const toml::node& n) {
   switch (n.type()) {
     case toml::node_type::string: return fmt::format("\"{}\"", n.as_string()->get());

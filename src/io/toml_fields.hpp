@@ -17,6 +17,9 @@ namespace pierre::io::detail {
 
 // How a node looks in a message: "1" as "\"1\"", 1.5 as 1.5, nan, an array, a table...
 std::string describe(const toml::node& n);
+
+// "a", "b", "c" (each in quotes, joined by sep): names for an error message's expectation.
+std::string quoted_list(const std::vector<std::string>& v, const char* sep = ", ");
 long line_of(const toml::node& n);
 
 class TomlTable {

@@ -34,4 +34,8 @@ design::EnergyClassTable load_energy_classes_file(const std::filesystem::path& f
 // sorted; for messages.
 std::vector<std::string> barrier_rule_set_names(const std::filesystem::path& rules_dir);
 
+// What rules_dir holds, for messages: "its barrier rule sets: \"a\", \"b\"" or "it holds no
+// barrier rule set", and the .toml files passed over because they do not parse, with where.
+std::string barrier_rule_sets_held(const std::filesystem::path& rules_dir);
+
 }  // namespace pierre::io

@@ -253,7 +253,30 @@ TEST(TemporaryRuleSet, AFolderWithoutTheDefaultSaysWhichWasLookedFor) {
     EXPECT_EQ(e.found(), "nothing");
     EXPECT_NE(e.expected().find("the default rule set \"peila-ronco-2009\""), std::string::npos)
         << e.expected();
-    EXPECT_NE(e.expected().find("it holds none"), std::string::npos) << e.expected();
+    EXPECT_NE(e.expected().find("it holds no barrier rule set"), std::string::npos)
+        << e.expected();
+  }
+}
+
+// A rule set of one's own with a TOML typo is not a barrier rule set, but it is the one the user
+// may be looking for: the list says it was passed over, and at which line it does not parse.
+TEST(TemporaryRuleSet, AFolderListsTheRuleFilesThatDoNotParse) {
+  TempDir rules, dir;
+  rules.write("materials.toml", test::read_file(kRules / "materials.toml"));
+  rules.write("thesis-2015.toml", test::read_file(kRules / "thesis-2015.toml"));
+  rules.write("my-code.toml", "[rule_set]\nkind = \"barrier\"\nname = \"my code\n");
+  const auto s = dir.write("s.toml", with_barrier(
+      "[[barriers]]\nname = \"B1\"\nline = \"L\"\nrules = \"my-cod\"\n"));
+  try {
+    (void)io::load_scenario(s, rules.path());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "barriers[0].rules");
+    EXPECT_EQ(e.found(), "\"my-cod\"");
+    EXPECT_NE(e.expected().find("its barrier rule sets: \"thesis-2015\"; not valid TOML, so not "
+                                "looked at: my-code.toml (line 3: "),
+              std::string::npos)
+        << e.expected();
   }
 }
 
