@@ -4,6 +4,8 @@
 //   valgrind --tool=callgrind --toggle-collect='*measured_run*' build/bench/bench_one_run quarry-preg 4000
 //
 // prints the trajectories and impacts of the run; divide callgrind's "Collected" by the impacts.
+// A third argument, a vertex count, runs the section subdivided into collinear pieces to that
+// many vertices (bench_sim's "subdivided"): `bench_one_run quarry-preg 4000 10000`.
 #include <fmt/core.h>
 
 #include <cstdlib>
@@ -12,6 +14,7 @@
 
 #include "pierre/io/scenario_reader.hpp"
 #include "pierre/sim/runner.hpp"
+#include "subdivided.hpp"
 
 using namespace pierre;
 
@@ -28,8 +31,9 @@ namespace {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    fmt::print(stderr, "usage: bench_one_run <example> <throws>   (e.g. quarry-preg 4000)\n");
+  if (argc != 3 && argc != 4) {
+    fmt::print(stderr,
+               "usage: bench_one_run <example> <throws> [<vertices>]   (e.g. quarry-preg 4000)\n");
     return 2;
   }
   const std::filesystem::path root = PIERRE_SOURCE_DIR;
@@ -37,6 +41,7 @@ int main(int argc, char** argv) {
       io::load_scenario(root / "examples" / argv[1] / "scenario.toml", root / "rules");
   sim::Scenario s = loaded.scenario;
   s.settings.throws = static_cast<std::uint32_t>(std::atoi(argv[2]));
+  if (argc == 4) s = bench::subdivided(s, static_cast<std::size_t>(std::atol(argv[3])));
   const auto rep = measured_run(s);
   fmt::print("{} trajectories {} impacts\n", rep.trajectories, rep.impacts);
   return 0;

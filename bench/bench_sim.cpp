@@ -22,6 +22,7 @@
 #include "pierre/io/scenario_reader.hpp"
 #include "pierre/sim/random_stream.hpp"
 #include "pierre/sim/runner.hpp"
+#include "subdivided.hpp"
 
 using namespace pierre;
 namespace fs = std::filesystem;
@@ -45,25 +46,6 @@ Rate simulate(const sim::Scenario& s, unsigned threads) {
   const auto rep = sim::run_simulation(s, o, sink);
   const double dt = now() - t0;
   return {rep.trajectories / dt, rep.impacts / dt, dt};
-}
-
-// The same geometry with every segment cut into equal collinear pieces (model-2d.md §2: the
-// same physics, so the same numbers).
-sim::Scenario subdivided(const sim::Scenario& s, std::size_t target_vertices) {
-  const auto& segs = s.profile.segments();
-  const std::size_t per = std::max<std::size_t>(1, (target_vertices - 1) / segs.size());
-  std::vector<geometry::Vec2> pts;
-  std::vector<int> mats;
-  for (const auto& g : segs)
-    for (std::size_t k = 0; k < per; ++k) {
-      const double u = double(k) / per;
-      pts.push_back({g.a.x + u * (g.b.x - g.a.x), g.a.z + u * (g.b.z - g.a.z)});
-      mats.push_back(g.material);
-    }
-  pts.push_back(segs.back().b);
-  sim::Scenario out = s;
-  out.profile = *geometry::Profile::build(pts, mats, nullptr);
-  return out;
 }
 
 // One impact setting for both loops: the first material, the first block, the first segment
@@ -187,7 +169,7 @@ int main(int argc, char** argv) {
     fmt::print("  plane trajectory loop  : {:>10.0f} impacts/s (chained, each rebound flown back onto the plane); plane/bare = {:.2f}, simulator/plane = {:.2f}\n",
                plane, plane / bare, r1.impacts_per_s / plane);
     if (std::string(c.name) == "quarry-preg") {
-      const sim::Scenario fine = subdivided(s, 10000);
+      const sim::Scenario fine = bench::subdivided(s, 10000);
       const Rate rf = simulate(fine, 1);
       fmt::print("  subdivided to {} vertices, 1 thread: {:>10.0f} trajectories/s; cost x{:.2f} of the original\n",
                  fine.profile.vertices().size(), rf.traj_per_s, r1.traj_per_s / rf.traj_per_s);

@@ -347,19 +347,26 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
       if (const int found = march_runs(p0, v0, g, t_max, run_of_[j], c); found >= 0)
         return found ? std::optional<Contact>(c) : std::nullopt;
     }
+  } else if (const int j = dep.segment[0];
+             x_monotone_ && v0.x != 0.0 && j >= 0 && dep.segment[1] < 0 && !dep.tangent[0]) {
+    // The same from a segment of a longer run (a finely digitised straight slope).
+    Contact c;
+    if (const int found = contact_from(p0, v0, g, t_max, j, 1, c); found >= 0)
+      return found ? std::optional<Contact>(c) : std::nullopt;
   } else if (x_monotone_ && v0.x != 0.0 && dep.segment[0] < 0 && dep.segment[1] < 0) {
-    // A flight from a source: the segment under the block first, then the runs ahead (the
-    // general search's order and arithmetic, without its set-up).
+    // A flight from a source: from the segment under the block.
     const int under = segment_under(p0.x);
+    Contact c;
     if (runs_[run_of_[under]].end - runs_[run_of_[under]].begin == 1) {
       const Segment& s = segments_[under];
       double t, along;
       if (line_root(p0, v0, g, ArcX(p0.x, v0.x), t_max, s.a, s.n, s.d, s.length, s.x_lo, s.x_hi,
                     0, false, t, along))
         return Contact{t, under, along};
-      Contact c;
       if (const int found = march_runs(p0, v0, g, t_max, run_of_[under], c); found >= 0)
         return found ? std::optional<Contact>(c) : std::nullopt;
+    } else if (const int found = contact_from(p0, v0, g, t_max, under, 0, c); found >= 0) {
+      return found ? std::optional<Contact>(c) : std::nullopt;
     }
     return first_contact_search(p0, v0, g, t_max, dep, under);
   }
@@ -375,6 +382,30 @@ int Profile::segment_under(double x) const {
   return lo;
 }
 
+int Profile::contact_from(Vec2 p0, Vec2 v0, double g, double t_max, int j, int kind,
+                          Contact& out) const {
+  // first_contact_search's order and arithmetic, without its set-up: the segment, then its
+  // whole run when longer (the contact may lie on another piece of the same line), then the
+  // runs ahead.
+  const Segment& s = segments_[j];
+  const Run& run = runs_[run_of_[j]];
+  const ArcX ax(p0.x, v0.x);
+  double t_best = t_max, t, along;
+  bool found = false;
+  if (line_root(p0, v0, g, ax, t_best, s.a, s.n, s.d, s.length, s.x_lo, s.x_hi, kind, false, t,
+                along)) {
+    out = {t, j, along};
+    t_best = t;
+    found = true;
+  }
+  if (run.end - run.begin > 1 && line_root(p0, v0, g, ax, t_best, run.a, run.n, run.d, run.length,
+                                           run.x_lo, run.x_hi, kind, false, t, along)) {
+    out = contact_on_line(run.a, run.d, run.begin, run.end, t, along);
+    found = true;
+  }
+  return found ? 1 : march_runs(p0, v0, g, t_max, run_of_[j], out);
+}
+
 int Profile::march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact& out) const {
   const ArcX ax(p0.x, v0.x);
   const int step = (v0.x > 0) == (main_direction_ > 0) ? 1 : -1;
@@ -383,15 +414,43 @@ int Profile::march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact
     r += step;
     if (r < 0 || r >= n_runs) return 0;
     const Run& run = runs_[r];
-    if (run.end - run.begin > 1) return -1;
     double t, along;
     if (line_root(p0, v0, g, ax, t_max, run.a, run.n, run.d, run.length, run.x_lo, run.x_hi, 0,
                   false, t, along)) {
-      out = {t, run.begin, along};
+      out = run.end - run.begin == 1 ? Contact{t, run.begin, along}
+                                     : contact_on_line(run.a, run.d, run.begin, run.end, t, along);
       return 1;
     }
   }
   return -1;
+}
+
+Contact Profile::contact_on_line(Vec2 a, Vec2 d, int first, int last, double t,
+                                 double along) const {
+  // The last segment whose start is at or before `along`. The starts rise with the index, so
+  // there is one such segment however it is found. (The first starts at a: at 0.)
+  auto starts_before = [&](int k) { return dot(segments_[k].a - a, d) <= along; };
+  int lo = first, hi = last - 1;
+  if (hi > lo) {
+    // A line cut into equal pieces (a digitised straight slope) has it at the share along/total
+    // of the pieces: look there first, and bisect only what is left.
+    const double total = dot(segments_[last - 1].b - a, d);
+    const int guess =
+        first + std::clamp(static_cast<int>(along / total * (last - first)), 0, last - 1 - first);
+    if (starts_before(guess)) {
+      lo = guess;
+      if (guess < hi && !starts_before(guess + 1)) hi = guess;
+    } else {
+      hi = guess - 1;
+      if (starts_before(hi)) lo = hi;
+    }
+  }
+  while (lo < hi) {
+    const int mid = (lo + hi + 1) / 2;
+    if (starts_before(mid)) lo = mid; else hi = mid - 1;
+  }
+  const Segment& sj = segments_[lo];
+  return {t, lo, std::clamp(along - dot(sj.a - a, d), 0.0, sj.length)};
 }
 
 [[gnu::noinline]] std::optional<Contact> Profile::first_contact_search(
@@ -404,14 +463,8 @@ int Profile::march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact
                        int first, int last) {
     double t, along;
     if (!as.solve(a, n, d, length, x_lo, x_hi, as.kind_of(first, last), t, along)) return;
-    int lo = first, hi = last - 1;  // last segment whose start is at or before `along`
-    while (lo < hi) {
-      const int mid = (lo + hi + 1) / 2;
-      if (dot(segments_[mid].a - a, d) <= along) lo = mid; else hi = mid - 1;
-    }
-    const Segment& sj = segments_[lo];
     as.t_best = t;
-    as.best = {t, lo, std::clamp(along - dot(sj.a - a, d), 0.0, sj.length)};
+    as.best = contact_on_line(a, d, first, last, t, along);
     as.found = true;
   };
   auto test_run = [&](const Run& r) {

@@ -120,11 +120,18 @@ class Profile {
   // from a source, when already found.
   std::optional<Contact> first_contact_search(Vec2 p0, Vec2 v0, double g, double t_max,
                                               const Departure& dep, int under = -1) const;
-  // first_contact's march for a hop whose departure (or starting segment) is the single-segment
-  // run r and holds no contact: the runs ahead solved in order, as first_contact_search does.
-  // 1: found (out); 0: none before the section ends; -1: first_contact_search must decide (a
-  // longer run ahead, or none within its march).
+  // first_contact's march for a hop whose departure (or starting segment) is in run r, which
+  // holds no contact: the runs ahead solved in order, as first_contact_search does. 1: found
+  // (out); 0: none before the section ends; -1: first_contact_search must decide (none within
+  // its march).
   int march_runs(Vec2 p0, Vec2 v0, double g, double t_max, int r, Contact& out) const;
+  // first_contact's search for an arc that starts on or over segment j (kind 1: departed from
+  // it, without a neighbour; 0: a flight from a source above it): j, its run, then march_runs.
+  // Returns as march_runs does.
+  int contact_from(Vec2 p0, Vec2 v0, double g, double t_max, int j, int kind, Contact& out) const;
+  // The contact at `along` metres on the line of the collinear segments [first, last) from a
+  // (direction d): the segment it lies on (by bisection) and the distance along that segment.
+  Contact contact_on_line(Vec2 a, Vec2 d, int first, int last, double t, double along) const;
   // The last segment whose start is not beyond x along the main direction (x-monotone sections).
   int segment_under(double x) const;
   // max_height_above_ground over the runs [r_lo, r_hi] of an x-monotone section, each one line.
