@@ -366,7 +366,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
       sc.settings.seed = section_seed(settings.seed, i);  // independent streams, pooled sections
     }
     sc.profile = detail::read_profile(q, materials, "quarries", s.notes);
-    detail::read_blocks(q, s.block_groups, sc.blocks, "quarries");
+    detail::read_blocks(q, s.block_groups, sc.blocks, "quarries", s.notes);
     detail::read_sources(q, sc, "quarries", s.notes);
     {
       // Each section is a run of its own: its count, not the sum, is what must stay countable.

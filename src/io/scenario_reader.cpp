@@ -602,7 +602,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
     return out;
   }
   out.scenario.profile = detail::read_profile(top, out.scenario.materials, "", out.notes);
-  detail::read_blocks(top, out.block_groups, out.scenario.blocks, "");
+  detail::read_blocks(top, out.block_groups, out.scenario.blocks, "", out.notes);
   detail::read_sources(top, out.scenario, "", out.notes);
   note_unused_materials(top, out.scenario.materials, {&out.scenario.profile}, out.notes);
   {

@@ -326,10 +326,54 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
   }
 }
 
+// The unit slips a block table invites, each said once: a density in t/m³ (in [blocks] or in
+// rows of their own), masses in tonnes, volumes in litres.
+void note_unlikely_blocks(const TomlTable& b, const std::vector<BlockGroup>& groups,
+                          const std::vector<GroupSource>& where, std::vector<InputNote>& notes) {
+  auto rock = [](double d) { return d >= kRockDensityMin && d <= kRockDensityMax; };
+  const std::string why = fmt::format(
+      "outside the densities of rock ({:g} to {:g} kg/m³). A density is in kg/m³: 2.65 (t/m³ "
+      "or g/cm³) gives blocks 1000 times too light, and every energy 1000 times too small",
+      kRockDensityMin, kRockDensityMax);
+  const double shared = b.number("density", ModelDefaults::density);
+  const std::size_t before = notes.size();
+  if (b.has("density") && !rock(shared))
+    notes.push_back({b.file(), line_of(*b.find("density")), b.field("density"),
+                     fmt::format("the block density {:g} kg/m³ is {}", shared, why)});
+  std::size_t odd = 0, first = 0;
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    if (groups[i].density != shared && !rock(groups[i].density) && odd++ == 0) first = i;
+  if (odd > 0)
+    notes.push_back({where[first].file, where[first].line, where[first].field,
+                     fmt::format("block \"{}\" has a density of {:g} kg/m³{}, {}",
+                                 groups[first].id, groups[first].density,
+                                 odd > 1 ? fmt::format(" (and {} more rows like it)", odd - 1) : "",
+                                 why)});
+  if (notes.size() > before) return;  // light blocks of a light density: said already
+  std::size_t heaviest = 0;
+  for (std::size_t i = 1; i < groups.size(); ++i)
+    if (groups[i].mass > groups[heaviest].mass) heaviest = i;
+  if (!groups.empty() && groups[heaviest].mass < kLightestPlausibleBlock)
+    notes.push_back(
+        {where[heaviest].file, where[heaviest].line, where[heaviest].field,
+         fmt::format("the heaviest block, \"{}\", weighs {:.3g} kg: a mass is in kg and a "
+                     "volume in m³; a mass in tonnes or a volume in litres gives blocks 1000 "
+                     "times too light, and every energy 1000 times too small",
+                     groups[heaviest].id, groups[heaviest].mass)});
+  if (!groups.empty() && groups[heaviest].mass > kHeaviestPlausibleBlock)
+    notes.push_back(
+        {where[heaviest].file, where[heaviest].line, where[heaviest].field,
+         fmt::format("the heaviest block, \"{}\", weighs {:.0f} t ({:.0f} m³), beyond any "
+                     "rockfall barrier: a volume is in m³ and a mass in kg; a volume in litres "
+                     "gives blocks 1000 times too heavy",
+                     groups[heaviest].id, groups[heaviest].mass / 1000, groups[heaviest].volume)});
+}
+
 }  // namespace
 
 void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
-                 std::vector<model::Block>& blocks, std::string_view table_path) {
+                 std::vector<model::Block>& blocks, std::string_view table_path,
+                 std::vector<InputNote>& notes) {
   const auto b = top.subtable("blocks", {"density", "shape_factor", "file", "table"});
   if (!b) top.missing("blocks", fmt::format("a [{}] table", dotted(table_path, "blocks")));
   const double density = b->number("density", ModelDefaults::density);
@@ -378,6 +422,8 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
     throw InputError(top.file(), b->line(), top.field("blocks"), "no blocks",
                      fmt::format("{0}.file or at least one [[{0}.table]]",
                                  dotted(table_path, "blocks")));
+
+  note_unlikely_blocks(*b, groups, where, notes);
 
   std::int64_t in_all = 0;
   for (std::size_t i = 0; i < groups.size(); ++i)

@@ -32,9 +32,25 @@ geometry::Profile read_profile(const TomlTable& parent, const std::vector<model:
                                std::string_view table_path, std::vector<InputNote>& notes);
 
 // parent.blocks: the block rows as written (appended to `groups`) and the blocks they expand
-// to (appended to `blocks`, a row of count n giving ids "<id>.1" … "<id>.n").
+// to (appended to `blocks`, a row of count n giving ids "<id>.1" … "<id>.n"). A density outside
+// kRockDensityMin..Max, or a heaviest block lighter than kLightestPlausibleBlock or heavier than
+// kHeaviestPlausibleBlock, add a note to `notes`: the usual unit slips (t/m³, tonnes, litres),
+// which change every energy a thousandfold.
 void read_blocks(const TomlTable& parent, std::vector<BlockGroup>& groups,
-                 std::vector<model::Block>& blocks, std::string_view table_path);
+                 std::vector<model::Block>& blocks, std::string_view table_path,
+                 std::vector<InputNote>& notes);
+
+// Densities of rock (kg/m³): from porous tuff and chalk (~1500) to the heaviest ores in a quarry
+// face (~4000). Outside, a density in t/m³ or g/cm³ (2.65) is far likelier than a rock.
+inline constexpr double kRockDensityMin = 1500.0;
+inline constexpr double kRockDensityMax = 4000.0;
+// When even the heaviest block is lighter than this (kg; a stone of ~4 litres), the masses were
+// most likely typed in tonnes or the volumes in litres. Rockfall design blocks weigh from
+// hundreds of kilograms up (the thesis's lightest, at Preg, 140 kg).
+inline constexpr double kLightestPlausibleBlock = 10.0;
+// And when the heaviest is heavier than this (kg; ~400 m³ of rock), volumes typed in litres or
+// masses in grams are likelier than a block beyond any barrier (the largest tested: 8 000 kJ).
+inline constexpr double kHeaviestPlausibleBlock = 1e6;
 
 // parent.sources (one or more): appended to scenario.sources, each inside scenario.profile's
 // horizontal extent. A source far above the ground under it, or far below the ground over it

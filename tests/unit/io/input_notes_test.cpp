@@ -164,6 +164,57 @@ TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
       << n[0].text;
 }
 
+// The unit slips of a block table change every energy a thousandfold and pass every range
+// check: a density in t/m³ (2.65), masses in tonnes, volumes in litres. Each is noted once, at
+// the value that holds it.
+TEST(InputNotes, ADensityInTonnesPerCubicMetreIsNoted) {
+  TempDir dir;
+  const fs::path s = dir.path() / "s.toml";
+  const auto notes = notes_of(dir, base_with(16, "[blocks]\ndensity = 2.65"));
+  ASSERT_EQ(notes.size(), 1u);  // and not the light blocks too: the density says why
+  EXPECT_EQ(notes[0].message(),
+            s.string() + ":17: blocks.density: the block density 2.65 kg/m³ is outside the "
+                         "densities of rock (1500 to 4000 kg/m³). A density is in kg/m³: 2.65 "
+                         "(t/m³ or g/cm³) gives blocks 1000 times too light, and every energy "
+                         "1000 times too small");
+  // Rows of their own: the first one said, with how many more.
+  const auto rows = notes_of(
+      dir, base_with(17, "[[blocks.table]]\nid = \"a\"\nvolume = 1.0\ndensity = 2.7\n"
+                         "[[blocks.table]]\nid = \"b\"\nvolume = 1.0\ndensity = 2.7\n"
+                         "[[blocks.table]]\nid = \"c\""));  // and line 18's mass
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].line, 18);
+  EXPECT_EQ(rows[0].field, "blocks.table[0].id");
+  EXPECT_NE(rows[0].text.find("block \"a\" has a density of 2.7 kg/m³ (and 1 more rows like "
+                              "it), outside the densities of rock"),
+            std::string::npos)
+      << rows[0].text;
+  // The bounds themselves are rock.
+  EXPECT_TRUE(notes_of(dir, base_with(16, "[blocks]\ndensity = 1500.0")).empty());
+  EXPECT_TRUE(notes_of(dir, base_with(16, "[blocks]\ndensity = 4000.0")).empty());
+}
+
+TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
+  TempDir dir;
+  const auto tonnes = notes_of(dir, base_with(18, "mass = 2.5"));
+  ASSERT_EQ(tonnes.size(), 1u);
+  EXPECT_EQ(tonnes[0].line, 17);  // the row (it has no id)
+  EXPECT_NE(tonnes[0].text.find("the heaviest block, \"B1\", weighs 2.5 kg: a mass is in kg"),
+            std::string::npos)
+      << tonnes[0].text;
+  // 1500 litres typed as m³, at the default 2650 kg/m³: 3 975 000 kg.
+  const auto litres = notes_of(dir, base_with(18, "volume = 1500.0"));
+  ASSERT_EQ(litres.size(), 1u);
+  EXPECT_NE(litres[0].text.find("weighs 3975 t (1500 m³), beyond any rockfall barrier"),
+            std::string::npos)
+      << litres[0].text;
+  // The heaviest block decides: light stones beside a real block are a valid mix.
+  EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 10.0")).empty());
+  EXPECT_EQ(notes_of(dir, base_with(18, "mass = 9.9")).size(), 1u);
+  EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 2.5\n[[blocks.table]]\nmass = 800.0")).empty());
+  EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 1e6")).empty());
+}
+
 // A quarry section's profile and sources are read by the same readers: its notes are the
 // scenario's, named by the section's field.
 TEST(InputNotes, AQuarrySectionsNotesAreTheScenarios) {
