@@ -101,12 +101,12 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
   if (!s.lines.empty()) {
     std::fputs(s.every_crossing
                         ? "Observation lines (every crossing, in both directions: --all-crossings; "
-                          "missed: trajectories without a crossing in the main direction)\n"
+                          "not reached: trajectories without a crossing in the main direction)\n"
                         : "Observation lines (first crossing of each trajectory in the main "
                           "direction)\n",
                out);
-    fmt::print(out, "{:<16} {:>9} {:>8} {:>8}  {:<26} {:>10} {:>10} {:>10} {:>10}\n", "line",
-               "x (m)", "count", "missed", "quantity", "mean", "P50", "P95", "max");
+    fmt::print(out, "{:<16} {:>9} {:>8} {:>11}  {:<26} {:>10} {:>10} {:>10} {:>10}\n", "line",
+               "x (m)", "count", "not reached", "quantity", "mean", "P50", "P95", "max");
     for (const auto& l : s.lines) {
       struct Row {
         const char* label;
@@ -119,10 +119,10 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
       bool first = true;
       for (const Row& r : rows) {
         if (first)
-          fmt::print(out, "{:<16} {:>9.2f} {:>8} {:>8}  ", l.name, l.chainage, l.count,
+          fmt::print(out, "{:<16} {:>9.2f} {:>8} {:>11}  ", l.name, l.chainage, l.count,
                      l.not_reached);
         else
-          fmt::print(out, "{:<16} {:>9} {:>8} {:>8}  ", "", "", "", "");
+          fmt::print(out, "{:<16} {:>9} {:>8} {:>11}  ", "", "", "", "");
         first = false;
         fmt::print(out, "{:<26} {} {} {} {}\n", r.label, cell(r.q->mean * r.scale, 10),
                    cell(r.q->p50 * r.scale, 10), cell(r.q->p95 * r.scale, 10),
@@ -172,17 +172,28 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
     fmt::print(out, "Barriers (ETAG 027, docs/barriers.md; characteristic values at the rule set's percentile)\n");
     // The class the requirement needs, not a candidate's (the report's "smallest energy class
     // required"): "class" alone read as the candidate's own.
-    fmt::print(out, "{:<18} {:<12} {:<18} {:>8} {:>8} {:>8} {:>9} {:>10} {:>10} {:>9} {:>7}\n", "barrier",
+    fmt::print(out, "{:<18} {:<12} {:<18} {:>10} {:>10} {:>8} {:>9} {:>10} {:>10} {:>9} {:>7}\n", "barrier",
                "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req kJ", "SEL_req kJ",
                "req class", "h_i m");
+    // Which of the two a characteristic value is: a Weibull v_k below the P95 of the line table
+    // above is the fit's, not a slip.
+    auto k = [](const design::Characteristic& c) {
+      const char* from = std::isnan(c.value)           ? " "
+                         : c.value == c.weibull       ? "W"
+                         : c.value == c.empirical     ? "E"
+                                                      : " ";
+      return g(c.value, 8) + " " + from;
+    };
     for (const auto& d : r.barriers)
       fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>9} {}\n", d.spec.name, d.spec.line,
-                 d.rules_name, g(d.v_k.value, 8), g(d.h_k.value, 8), g(d.v_d, 8), g(d.E_d_kJ, 9),
+                 d.rules_name, k(d.v_k), k(d.h_k), g(d.v_d, 8), g(d.E_d_kJ, 9),
                  g(d.MEL_req_kJ, 10), g(d.SEL_req_kJ, 10),
                  d.energy_class ? std::to_string(d.energy_class->number) +
                                       (d.energy_class->open_ended ? "+" : "")
                                 : std::string("-"),
                  g(d.h_i, 7));
+    fmt::print(out, "v_k, h_k: W the Weibull quantile, E the empirical percentile (the rule set's "
+                    "`governing`)\n");
     // What an engineer should know of a design (fits from few values, zero heights left out of
     // the Weibull, ...): the report and summary.json keep them too.
     for (const auto& d : r.barriers)

@@ -16,6 +16,7 @@
 #include <tuple>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_fixture.hpp"
@@ -278,6 +279,43 @@ TEST_F(Check, ACandidateThatCouldNotBeCheckedFails) {
       << c["reason"];
   EXPECT_EQ(j["checks_failed"], true);
   EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;
+}
+
+// The barrier table marks each characteristic value W (the Weibull quantile) or E (the empirical
+// percentile): a Weibull v_k below the line table's P95 is the fit's, not a slip. thesis-2015
+// governs on the Weibull; peila-ronco-2009 on the larger of the two, whichever that is here.
+TEST_F(Check, TheBarrierTableSaysWhichValueGoverns) {
+  for (const std::string rules : {"thesis-2015", "peila-ronco-2009"}) {
+    const fs::path file = dir_ / ("pass-" + rules + ".toml");
+    write_variant("pass.toml",
+                  {{"rules = \"thesis-2015\"",
+                    "rules = \"" + rules + "\"" +
+                        (rules == "thesis-2015"
+                             ? ""  // it asks no data-quality questions; Peila-Ronco does
+                             : "\ndata_quality = { trajectory = \"back-analysed\", topography "
+                               "= \"low\", block_volume = \"surveyed\" }")}},
+                  file);
+    const fs::path out = dir_ / ("out-" + rules);
+    const Result r = pierre("run '" + file.string() + "' --out '" + out.string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const auto j = summary(out);
+    const auto& b = j["barriers"][0];
+    std::istringstream text(r.out);
+    std::string row;
+    while (std::getline(text, row) && row.rfind("Generous ", 0) != 0) {
+    }
+    ASSERT_EQ(row.rfind("Generous ", 0), 0u) << r.out;
+    for (const char* key : {"v_k_m_s", "h_k_m"}) {
+      const double w = b[key]["weibull"], e = b[key]["empirical"], v = b[key]["value"];
+      ASSERT_NE(w, e) << key;  // else the mark says nothing
+      const bool weibull = rules == "thesis-2015" || w > e;
+      EXPECT_EQ(v, weibull ? w : e) << rules << " " << key;
+      const std::string cell = fmt::format("{:.4g} {}", v, weibull ? "W" : "E");
+      EXPECT_NE(row.find(" " + cell + " "), std::string::npos) << rules << ": " << cell << "\n" << row;
+    }
+    EXPECT_NE(r.out.find("v_k, h_k: W the Weibull quantile, E the empirical percentile"),
+              std::string::npos);
+  }
 }
 
 // design-checks.md §1 step 1: the energy a barrier is designed on is the translational energy
