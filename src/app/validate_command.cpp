@@ -1,5 +1,7 @@
-// pierre validate SCENARIO: every check of `run`, no simulation, a one-paragraph summary.
+// pierre validate SCENARIO: every check of `run`, no simulation, a summary of one item a line.
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "commands.hpp"
 #include "console.hpp"
@@ -37,23 +39,47 @@ class ValidateCommand final : public Command {
       return code;
     }
     const sim::Scenario& s = l.scenario;
-    std::string mats;
-    for (const auto& m : s.materials)
-      mats += fmt::format("{}{} ({})", mats.empty() ? "" : ", ", m.name, m.source);
-    std::string lines;
-    for (const auto& o : s.lines)
-      lines += fmt::format("{}{} at x = {} m", lines.empty() ? "" : ", ", o.name, o.x);
-    fmt::print(
-        "{}: valid. \"{}\": a profile of {} vertices from x = {} to {} m; {} material{}: {}; "
-        "{} block{} in {} group{}; {} source{}; {} observation line{}{}{}. {} throw{} per block "
-        "and source with seed {}: {} trajector{} to run.\n",
-        l.file.string(), s.name, s.profile.vertices().size(), s.profile.x_min(),
-        s.profile.x_max(), s.materials.size(), s.materials.size() == 1 ? "" : "s", mats,
-        s.blocks.size(), s.blocks.size() == 1 ? "" : "s", l.block_groups.size(),
-        l.block_groups.size() == 1 ? "" : "s", s.sources.size(), s.sources.size() == 1 ? "" : "s",
-        s.lines.size(), s.lines.size() == 1 ? "" : "s", lines.empty() ? "" : ": ", lines,
-        s.settings.throws, s.settings.throws == 1 ? "" : "s", s.settings.seed,
-        s.trajectory_count(), s.trajectory_count() == 1 ? "y" : "ies");
+    // One item a line: what an engineer checks before a long run, each with its unit.
+    double z_lo = s.profile.vertices().front().z, z_hi = z_lo;
+    for (const auto& v : s.profile.vertices()) {
+      z_lo = std::min(z_lo, v.z);
+      z_hi = std::max(z_hi, v.z);
+    }
+    fmt::print("{}: valid.\n  scenario: \"{}\"\n", l.file.string(), s.name);
+    fmt::print("  profile: {} vertices, x from {} to {} m, z from {} to {} m\n",
+               s.profile.vertices().size(), design::number_text(s.profile.x_min()),
+               design::number_text(s.profile.x_max()), design::number_text(z_lo),
+               design::number_text(z_hi));
+    fmt::print("  {} material{}:\n", s.materials.size(), s.materials.size() == 1 ? "" : "s");
+    for (const auto& m : s.materials) fmt::print("    {}: {}\n", m.name, m.source);
+    double m_lo = s.blocks.front().mass, m_hi = m_lo, d_lo = s.blocks.front().density, d_hi = d_lo;
+    for (const auto& b : s.blocks) {
+      m_lo = std::min(m_lo, b.mass);
+      m_hi = std::max(m_hi, b.mass);
+      d_lo = std::min(d_lo, b.density);
+      d_hi = std::max(d_hi, b.density);
+    }
+    auto range = [](double lo, double hi, const char* unit) {
+      return lo == hi ? fmt::format("{} {}", design::number_text(lo), unit)
+                      : fmt::format("{} to {} {}", design::number_text(lo), design::number_text(hi), unit);
+    };
+    fmt::print("  {} block{} from {} row{}: {}, density {}\n", s.blocks.size(),
+               s.blocks.size() == 1 ? "" : "s", l.block_groups.size(),
+               l.block_groups.size() == 1 ? "" : "s", range(m_lo, m_hi, "kg"),
+               range(d_lo, d_hi, "kg/m³"));
+    fmt::print("  {} source{}:", s.sources.size(), s.sources.size() == 1 ? "" : "s");
+    for (std::size_t i = 0; i < s.sources.size(); ++i)
+      fmt::print("{} \"{}\" at x = {} m, z = {} m", i ? "," : "", s.sources[i].name,
+                 design::number_text(s.sources[i].position.x),
+                 design::number_text(s.sources[i].position.z));
+    fmt::print("\n  {} observation line{}{}", s.lines.size(), s.lines.size() == 1 ? "" : "s",
+               s.lines.empty() ? "" : ":");
+    for (std::size_t i = 0; i < s.lines.size(); ++i)
+      fmt::print("{} {} at x = {} m", i ? "," : "", s.lines[i].name,
+                 design::number_text(s.lines[i].x));
+    fmt::print("\n  {} trajector{} to run: {} throw{} per block and source, seed {}\n",
+               s.trajectory_count(), s.trajectory_count() == 1 ? "y" : "ies", s.settings.throws,
+               s.settings.throws == 1 ? "" : "s", s.settings.seed);
     const design::BlocksThrown thrown = design::blocks_thrown(s.blocks);
     for (std::size_t i = 0; i < l.barriers.size(); ++i) {
       const auto& b = l.barriers[i];

@@ -264,7 +264,29 @@ sim::SimulationSettings read_simulation(const TomlTable& top) {
   return out;
 }
 
-void read_lines(const TomlTable& top, sim::Scenario& sc) {
+// Lines count first crossings in the main direction (the profile's vertex order): one behind
+// every source, upslope of where the blocks start, is crossed by none of them unless one bounces
+// back past it. A design at such a line has nothing to stand on: said before the run.
+void note_line_behind_sources(const TomlTable& t, const sim::Scenario& sc,
+                              const sim::ObservationLine& l, std::vector<InputNote>& notes) {
+  const int dir = sc.profile.main_direction();
+  const sim::Source* nearest = nullptr;
+  for (const auto& src : sc.sources) {
+    if ((l.x - src.position.x) * dir >= 0) return;  // ahead of (or at) this one
+    if (!nearest || std::abs(src.position.x - l.x) < std::abs(nearest->position.x - l.x))
+      nearest = &src;
+  }
+  if (!nearest) return;
+  notes.push_back(
+      {t.file(), line_of(*t.find("x")), t.field("x"),
+       fmt::format("observation line \"{}\" (x = {} m) lies behind every source (the nearest, "
+                   "\"{}\", is at x = {} m): lines count the blocks that cross them in the "
+                   "profile's vertex order, away from the sources, so none reaches this one unless "
+                   "it bounces back past it. Check x, or the order of the profile's vertices",
+                   l.name, l.x, nearest->name, nearest->position.x)});
+}
+
+void read_lines(const TomlTable& top, sim::Scenario& sc, std::vector<InputNote>& notes) {
   const toml::array* a = top.array_of_tables("observation_lines");
   if (!a) return;
   for (std::size_t i = 0; i < a->size(); ++i) {
@@ -277,6 +299,7 @@ void read_lines(const TomlTable& top, sim::Scenario& sc) {
     l.x = t.required_number("x", "a chainage x (m)");
     t.check("x", l.x >= sc.profile.x_min() && l.x <= sc.profile.x_max(),
             "a chainage " + extent(sc.profile));
+    note_line_behind_sources(t, sc, l, notes);
     sc.lines.push_back(std::move(l));
   }
 }
@@ -611,7 +634,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
     check_trajectory_count(out.scenario, scenario_file, line_of(throws), s->field("throws"),
                            describe(throws));
   }
-  read_lines(top, out.scenario);
+  read_lines(top, out.scenario, out.notes);
   read_barriers(top, rules, out);
   return out;
 }

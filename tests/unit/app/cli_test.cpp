@@ -221,6 +221,10 @@ TEST_F(Cli, ValidatePrintsASummary) {
   EXPECT_NE(r.out.find("5 vertices"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("2 materials"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("600 trajectories"), std::string::npos) << r.out;
+  // The masses, where a unit slip shows: 500 kg given, and 1.2 m³ × 2650 kg/m³ = 3180 kg.
+  EXPECT_NE(r.out.find("\n  2 blocks from 2 rows: 500 to 3180 kg, density 2650 kg/m³\n"),
+            std::string::npos)
+      << r.out;
   EXPECT_EQ(r.out.find("Note:"), std::string::npos) << r.out;
 }
 

@@ -152,6 +152,7 @@ TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
     lines.at(8) = tall;
     lines.at(20) = source;
     lines.at(21) = "z = " + std::string(source == "x = 100.0" ? "350.0" : "420.0");
+    lines.at(25) = "x = 180.0";  // the line ahead of the source (behind it is noted too)
     std::string text;
     for (const auto& l : lines) text += l + "\n";
     return text;
@@ -213,6 +214,29 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   EXPECT_EQ(notes_of(dir, base_with(18, "mass = 9.9")).size(), 1u);
   EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 2.5\n[[blocks.table]]\nmass = 800.0")).empty());
   EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 1e6")).empty());
+}
+
+// Lines count crossings in the vertex order, away from the sources: one upslope of every source
+// is crossed by no block (a design there has nothing to stand on), said at its x.
+TEST(InputNotes, ALineBehindEverySourceIsNoted) {
+  TempDir dir;
+  const fs::path s = dir.path() / "s.toml";
+  const auto notes = notes_of(dir, base_with(26, "x = 0.5"));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].message(),
+            s.string() + ":26: observation_lines[0].x: observation line \"L\" (x = 0.5 m) lies "
+                         "behind every source (the nearest, \"S1\", is at x = 1 m): lines count "
+                         "the blocks that cross them in the profile's vertex order, away from the "
+                         "sources, so none reaches this one unless it bounces back past it. Check "
+                         "x, or the order of the profile's vertices");
+  EXPECT_TRUE(notes_of(dir, base_with(26, "x = 1.0")).empty());  // at the source: not behind it
+  // Behind one source but ahead of another: that one's blocks reach it.
+  auto lines = pierre::test::base_lines();
+  lines.at(22) = "[[sources]]\nx = 0.2\nz = 11.0\n";  // line 23
+  lines.at(25) = "x = 0.5";                              // line 26
+  std::string two;
+  for (const auto& l : lines) two += l + "\n";
+  EXPECT_TRUE(notes_of(dir, two).empty());
 }
 
 // A quarry section's profile and sources are read by the same readers: its notes are the
