@@ -96,7 +96,7 @@ std::string duration_text(double seconds) {
 }
 
 void print_results(std::FILE* out, const design::RunStatistics& s, double seconds,
-                   const std::vector<std::filesystem::path>& files) {
+                   const std::vector<std::filesystem::path>& files, std::size_t quarry_sections) {
   fmt::print(out, "{} trajectories in {}\n\n", s.trajectories, duration_text(seconds));
   if (!s.lines.empty()) {
     std::fputs(s.every_crossing
@@ -131,8 +131,15 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
     }
     fmt::print(out, "\n");
   }
-  fmt::print(out, "Runout from the release point (m):   P50 {}   P95 {}   P99 {}   max {}\n", cell(s.runout.p50, 0),
-             cell(s.runout.p95, 0), cell(s.runout.p99, 0), cell(s.runout.max, 0));
+  // In a quarry run these pool every section's travel from its release point: the distances
+  // from the toe that set the zones (RD) are the quarry table's.
+  const std::string pooled =
+      quarry_sections > 1 ? fmt::format(", {} sections pooled; RD from the toe below", quarry_sections)
+      : quarry_sections == 1 ? "; RD from the toe below"
+                             : "";
+  fmt::print(out, "Runout from the release point (m{}):   P50 {}   P95 {}   P99 {}   max {}\n",
+             pooled, cell(s.runout.p50, 0), cell(s.runout.p95, 0), cell(s.runout.p99, 0),
+             cell(s.runout.max, 0));
   fmt::print(out, "Stop reasons:");
   for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
   fmt::print(out, "\n");

@@ -44,8 +44,11 @@ void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes);
 // A run's wall time to three significant digits: "42.3 ms" below a second, else "1.25 s".
 std::string duration_text(double seconds);
 
+// quarry_sections: the sections of a quarry run (0 for another run), whose runouts from the
+// release point are pooled: not the RD of the table that follows.
 void print_results(std::FILE* out, const design::RunStatistics& stats, double seconds,
-                   const std::vector<std::filesystem::path>& files);
+                   const std::vector<std::filesystem::path>& files,
+                   std::size_t quarry_sections = 0);
 
 // The barriers' design values, then every check line as a table (subject, id, value, limit,
 // unit, status, rule), then the reason of each FAIL and WARN line, then of each N/A line.

@@ -176,8 +176,9 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
     };
     fmt::print(out,
                "{}: crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); from the "
-               "toe, danger zone {}, first-impact zone {}; {} thrown, {} reached the floor, {} "
-               "stopped at or above the toe (RD = 0), {} left the section{}\n",
+               "toe, danger zone {}, first-impact zone {}; {} thrown: {} reached the floor (the "
+               "ID sample), {} came to rest at or above the toe (RD = 0; a block that lands at the "
+               "toe and stops there is in both), {} left the section{}\n",
                s.spec.name, g.crest.x, design::to_string(g.crest_origin), g.toe.x,
                design::to_string(g.toe_origin), g.height, design::to_string(g.height_origin),
                zone(s.danger_zone), zone(s.first_impact_zone),
@@ -306,7 +307,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   bar.finish();
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});
-  if (!o.quiet) print_results(stdout, stats, seconds, written);
+  if (!o.quiet) print_results(stdout, stats, seconds, written, loaded.quarries.size());
   if (!o.quiet || o.check) {
     print_quarries(stdout, *results.quarry, !o.quiet);
     print_design(stdout, results);

@@ -54,9 +54,13 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
   g.value_h = kNaN;
   std::string how;
   // "<label> 0.51 H", "<label> beyond the profile", or "<label>: no values" (an empty sample).
-  auto labelled = [](const std::string& label, double v_h) {
+  // Two decimals of H, as the tables of /H (Tables 6.2/6.3) print them.
+  auto of_h = [](double v_h) {
+    return std::isfinite(v_h) ? fixed_text(v_h, 2) + " H" : num(v_h);
+  };
+  auto labelled = [&](const std::string& label, double v_h) {
     if (std::isnan(v_h)) return label + ": no values";
-    return label + " " + num(v_h) + (std::isfinite(v_h) ? " H" : "");
+    return label + " " + of_h(v_h);
   };
   auto take = [&](double v, const std::string& text) {
     how += (how.empty() ? "" : ", ") + text;
@@ -77,7 +81,7 @@ GoverningDistance governing_distance(const DistanceSample& sample, const Distanc
         if (st.fit) {
           g.lognormal_h = stats::value_at_exceedance(*st.fit, 1.0 - rules.lognormal_percentile / 100.0);
           take(g.lognormal_h, "log-normal P" + num(rules.lognormal_percentile) + " " +
-                                  num(g.lognormal_h) + " H");
+                                  of_h(g.lognormal_h));
         } else {
           take(kNaN, "log-normal P" + num(rules.lognormal_percentile) + ": no fit (" + st.fit_error + ")");
         }

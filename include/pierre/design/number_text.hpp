@@ -13,4 +13,11 @@ inline std::string number_text(double v, int significant = 4) {
   return buf;
 }
 
+// The same with a fixed number of decimals (%.<n>f): for values a table prints so, e.g. /H.
+inline std::string fixed_text(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
 }  // namespace pierre::design

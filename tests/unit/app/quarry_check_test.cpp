@@ -59,6 +59,9 @@ TEST_F(QuarryCli, WorkAreasOutsideTheZonesExitZero) {
   for (const char* s : {"Quarry danger zones", "RD m", "RD/H", "ID m", "ID/H", "P50", "P95", "P99",
                         "max", "RD_gov", "ID_gov", "Checks", "zone.crusher", "zone.office"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
+  // The runout from the release point pools both sections: not their RD, and said so.
+  EXPECT_NE(r.out.find("Runout from the release point (m, 2 sections pooled; RD from the toe below)"),
+            std::string::npos) << r.out;
   const auto j = summary(out);
   EXPECT_EQ(j["checks_failed"], false);
   EXPECT_EQ(check(j, "North", "zone.crusher")["status"], "PASS");

@@ -102,6 +102,8 @@ TEST(QuarryZones, WorkAreasInsideAndOutsideTheDangerZone) {
   const QuarryDesign& d = *out.design;
   EXPECT_DOUBLE_EQ(d.sections[0].danger_zone, 95.05);  // P95 of 1..100
   EXPECT_DOUBLE_EQ(d.sections[0].first_impact_zone, 95.05 / 5);
+  // How it was found, in /H to two decimals as Tables 6.2/6.3 print it: 95.05 m / 20 m.
+  EXPECT_EQ(d.rows[0].rd_gov.how, "P95 4.75 H");
   const CheckLine* crusher = find(d, "Face A", "zone.crusher");
   const CheckLine* road = find(d, "Face A", "zone.haul-road");
   ASSERT_TRUE(crusher && road);
