@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
         "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
         "Run `pierre <command> --help` for a command's options. Exit codes: 0 ran (check: every\n"
         "check passed), 1 a check failed (check only), 2 bad input or usage, 3 internal error,\n"
-        "130 interrupted by Ctrl-C (nothing written).");
+        "130 interrupted by Ctrl-C, SIGTERM or SIGHUP (nothing written).");
 
     std::vector<std::unique_ptr<Command>> commands;
     commands.push_back(make_run_command());

@@ -44,7 +44,7 @@ CLI::Validator whole_number(std::int64_t lo, std::int64_t hi) {
         if (ec == std::errc{} && p == end && v >= lo && v <= hi) return {};
         return fmt::format("found {}, expected a whole number from {} to {}", text, lo, hi);
       },
-      fmt::format("INT in [{} - {}]", lo, hi));
+      "");  // the range is in each option's help text, not CLI11's "INT:INT in [...]"
 }
 
 class RunCommand final : public Command {
@@ -55,28 +55,37 @@ class RunCommand final : public Command {
     CLI::App* c =
         check_ ? parent.add_subcommand(
                      "check",
-                     "Simulate a scenario, design or check its barriers, write the results; exit "
-                     "1 when a check fails")
+                     "Simulate a scenario, design or check its barriers or quarry danger zones, "
+                     "write the results; exit 1 when a check fails")
                : parent.add_subcommand("run", "Simulate a scenario and write its results");
     c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
-        ->required();
-    c->add_option("--out,-o", out_, "Output folder (created when missing)")->required();
-    seed_opt_ = c->add_option("--seed", seed_, "Seed, an integer >= 0 (overrides simulation.seed)")
-                    ->check(whole_number(0, std::numeric_limits<std::int64_t>::max()));
-    c->add_option("--threads", threads_, "Worker threads (0: every hardware thread)")
-        ->check(whole_number(0, 4096));
-    throws_opt_ = c->add_option("--throws", throws_, "Throws per block and source (overrides simulation.throws)")
-                      ->check(whole_number(1, std::numeric_limits<std::uint32_t>::max()));
+        ->required()
+        ->type_name("FILE");
+    c->add_option("--out,-o", out_, "Output folder (created when missing)")
+        ->required()
+        ->type_name("DIR");
+    seed_opt_ = c->add_option("--seed", seed_,
+                              "Seed, a whole number from 0 to 2^63 - 1 (overrides simulation.seed)")
+                    ->check(whole_number(0, std::numeric_limits<std::int64_t>::max()))
+                    ->type_name("N");
+    c->add_option("--threads", threads_, "Worker threads, 0 to 4096 (0: every hardware thread)")
+        ->check(whole_number(0, 4096))
+        ->type_name("N");
+    throws_opt_ = c->add_option("--throws", throws_,
+                                "Throws per block and source, 1 to 2^32 - 1 (overrides "
+                                "simulation.throws)")
+                      ->check(whole_number(1, std::numeric_limits<std::uint32_t>::max()))
+                      ->type_name("N");
     c->add_flag("--quiet,-q", quiet_,
                 check_ ? "No progress bar and no results table (the check lines are still printed)"
                        : "No progress bar and no results table");
     c->add_flag("--impacts", impacts_, "Also write impacts.csv (every impact; large)");
     c->add_flag("--all-crossings", all_crossings_,
-                "Record every crossing of the observation lines, in both directions, not only "
-                "each trajectory's first in the main direction: crossings.csv holds them all and "
-                "the lines' statistics count them all (the barrier checks still use the first)");
+                "Record every line crossing, both ways, and count them all (barriers still use "
+                "each trajectory's first)");
     c->add_option("--rules", rules_,
-                  "Rules folder holding materials.toml and the barrier and quarry rule sets");
+                  "Rules folder holding materials.toml and the barrier and quarry rule sets")
+        ->type_name("DIR");
     if (check_)
       c->footer(
           "Example:\n"

@@ -19,8 +19,10 @@ class ValidateCommand final : public Command {
   CLI::App* add_to(CLI::App& parent) override {
     CLI::App* c = parent.add_subcommand("validate", "Check a scenario without running it");
     c->add_option("scenario", scenario_, "Scenario file (TOML, docs/scenario-format.md)")
-        ->required();
-    c->add_option("--rules", rules_, "Rules folder holding materials.toml and the barrier and quarry rule sets");
+        ->required()
+        ->type_name("FILE");
+    c->add_option("--rules", rules_, "Rules folder holding materials.toml and the barrier and quarry rule sets")
+        ->type_name("DIR");
     c->footer(
         "Example:\n"
         "  pierre validate examples/vaujany-2d/scenario.toml\n"
