@@ -71,12 +71,12 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
                                       const std::vector<int>& materials,
                                       std::vector<ProfileIssue>* issues) {
   std::vector<ProfileIssue> found;
-  if (vertices.size() < 2) found.push_back({0, "a profile needs at least two vertices"});
+  if (vertices.size() < 2) found.push_back({0, "a profile needs at least two vertices", {}});
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     if (!std::isfinite(vertices[i].x) || !std::isfinite(vertices[i].z))
-      found.push_back({i, "vertex coordinates must be finite numbers"});
+      found.push_back({i, "vertex coordinates must be finite numbers", {}});
     else if (i > 0 && vertices[i].x == vertices[i - 1].x && vertices[i].z == vertices[i - 1].z)
-      found.push_back({i, "vertex repeats the previous one (a segment of zero length)"});
+      found.push_back({i, "vertex repeats the previous one (a segment of zero length)", {}});
   }
   if (!found.empty()) {
     if (issues) *issues = std::move(found);
@@ -118,7 +118,7 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
     else
       p.turns_[i] = angle > 0 ? VertexTurn::concave : VertexTurn::convex;
     if (std::abs(angle) > M_PI - kStraightAngle)
-      found.push_back({i + 1, "the profile folds back on itself at this vertex"});
+      found.push_back({i + 1, "the profile folds back on itself at this vertex", {}});
   }
 
   p.nodes_.reserve(2 * p.segments_.size() / kLeafSize + 4);
@@ -169,7 +169,7 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
         for (int j = nd.first; j < nd.last; ++j) {
           if (j <= static_cast<int>(i) + 1) continue;  // each pair once; neighbours share a vertex
           if (segments_intersect(si, p.segments_[j]))
-            found.push_back({i, fmt_crossing(si, p.segments_[j])});
+            found.push_back({i, fmt_crossing(si, p.segments_[j]), static_cast<std::size_t>(j)});
         }
       } else {
         stack.push_back(nd.left);

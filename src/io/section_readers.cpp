@@ -173,8 +173,15 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
   if (!profile) {
     const geometry::ProfileIssue& is = issues.front();
     const Vertex& v = vs[std::min(is.vertex, vs.size() - 1)];
+    // The other segment of a crossing by where it is written too: a long CSV is edited by line.
+    std::string other;
+    if (is.other_vertex && *is.other_vertex < vs.size()) {
+      const Vertex& w = vs[*is.other_vertex];
+      other = has_file ? fmt::format(" (it starts on line {})", w.line)
+                       : fmt::format(" (it starts at {})", w.field);
+    }
     throw InputError(v.file, v.line, v.field,
-                     fmt::format("vertex ({}, {}): {}", v.p.x, v.p.z, is.what),
+                     fmt::format("vertex ({}, {}): {}{}", v.p.x, v.p.z, is.what, other),
                      "a profile of distinct, finite vertices that never crosses itself");
   }
   // The air is on the left of the walking direction (model-2d.md §1), so a slope listed from

@@ -31,6 +31,7 @@ enum class VertexTurn : std::uint8_t { straight, convex, concave };
 struct ProfileIssue {
   std::size_t vertex = 0;
   std::string what;
+  std::optional<std::size_t> other_vertex;  // a crossing: where the segment met starts
 };
 
 // Where the flight leaves the ground: the segments it departs from have c = 0 exactly

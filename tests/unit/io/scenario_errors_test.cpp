@@ -308,10 +308,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"csv_unknown_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material,colour\n0,10,rock,red\n"}}, "p.csv", 1, "header", "colour"},
         Case{"csv_missing_header_column", {{9, kCsvProfile}}, {{"p.csv", "x,material\n0,rock\n"}}, "p.csv", 1, "header", "no column \"z\""},
         // profile geometry: crossing, too few vertices (vertex → CSV line or points entry)
-        Case{"csv_crosses_itself", {{9, kCsvProfile}}, {{"p.csv", kCrossingRows}}, "p.csv", 2, "x,z", "crosses itself"},
+        Case{"csv_crosses_itself", {{9, kCsvProfile}}, {{"p.csv", kCrossingRows}}, "p.csv", 2, "x,z", "crosses itself: the segment from (0, 10) to (10, 0) meets the segment from (10, 10) to (0, 0) (it starts on line 4)"},
         Case{"inline_crosses_itself",
              {{9, "points = [\n  [0.0, 10.0, \"rock\"],\n  [10.0, 0.0, \"rock\"],\n  [10.0, 10.0, \"rock\"],\n  [0.0, 0.0, \"\"],\n]"}},
-             {}, "s.toml", 10, "profile.points[0]", "crosses itself"},
+             {}, "s.toml", 10, "profile.points[0]", "crosses itself: the segment from (0, 10) to (10, 0) meets the segment from (10, 10) to (0, 0) (it starts at profile.points[2])"},
         Case{"inline_one_vertex", {{9, "points = [[0.0, 10.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points", "1 vertex"},
         Case{"csv_one_vertex", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n\n# c\n0,10,\n"}}, "p.csv", 4, "profile", "1 vertex row"},
         // a slope listed from its source end but descending towards -x: the air is below it
