@@ -42,16 +42,11 @@ class ValidateCommand final : public Command {
     }
     const sim::Scenario& s = l.scenario;
     // One item a line: what an engineer checks before a long run, each with its unit.
-    double z_lo = s.profile.vertices().front().z, z_hi = z_lo;
-    for (const auto& v : s.profile.vertices()) {
-      z_lo = std::min(z_lo, v.z);
-      z_hi = std::max(z_hi, v.z);
-    }
     fmt::print("{}: valid.\n  scenario: \"{}\"\n", l.file.string(), s.name);
     fmt::print("  profile: {} vertices, x from {} to {} m, z from {} to {} m\n",
                s.profile.vertices().size(), design::number_text(s.profile.x_min()),
-               design::number_text(s.profile.x_max()), design::number_text(z_lo),
-               design::number_text(z_hi));
+               design::number_text(s.profile.x_max()), design::number_text(s.profile.z_min()),
+               design::number_text(s.profile.z_max()));
     fmt::print("  {} material{}:\n", s.materials.size(), s.materials.size() == 1 ? "" : "s");
     for (const auto& m : s.materials) fmt::print("    {}: {}\n", m.name, m.source);
     double m_lo = s.blocks.front().mass, m_hi = m_lo, d_lo = s.blocks.front().density, d_hi = d_lo;

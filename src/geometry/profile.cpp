@@ -98,11 +98,13 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
     s.material = i < materials.size() ? materials[i] : 0;
     p.segments_.push_back(s);
   }
-  p.x_min_ = kInf;
-  p.x_max_ = -kInf;
+  p.x_min_ = p.z_min_ = kInf;
+  p.x_max_ = p.z_max_ = -kInf;
   for (const Vec2& v : vertices) {
     p.x_min_ = std::min(p.x_min_, v.x);
     p.x_max_ = std::max(p.x_max_, v.x);
+    p.z_min_ = std::min(p.z_min_, v.z);
+    p.z_max_ = std::max(p.z_max_, v.z);
   }
   p.main_direction_ = vertices.back().x >= vertices.front().x ? 1 : -1;
   p.x_monotone_ = true;
@@ -357,6 +359,8 @@ std::optional<Contact> Profile::first_contact(Vec2 p0, Vec2 v0, double g, double
     // A flight from a source: from the segment under the block.
     const int under = segment_under(p0.x);
     Contact c;
+    // A one-segment run: contact_from's first step and its march, written out here, since the
+    // call cost every trajectory 62 instructions (callgrind, bench_one_run quarry-preg 4000).
     if (runs_[run_of_[under]].end - runs_[run_of_[under]].begin == 1) {
       const Segment& s = segments_[under];
       double t, along;

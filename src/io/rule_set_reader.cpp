@@ -281,30 +281,26 @@ design::EnergyClassTable load_energy_classes_file(const fs::path& file) {
   return t;
 }
 
-std::vector<std::string> barrier_rule_set_names(const fs::path& rules_dir) {
+std::vector<std::string> barrier_rule_set_names(const fs::path& rules_dir,
+                                                std::vector<std::string>* unparsable) {
   std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(rules_dir, ec)) {
-    if (e.path().extension() == ".toml" && detail::rule_file_kind(e.path()) == detail::RuleFileKind::barrier)
-      names.push_back(e.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::string barrier_rule_sets_held(const fs::path& rules_dir) {
-  std::vector<std::string> names, broken;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(rules_dir, ec)) {
     if (e.path().extension() != ".toml") continue;
     std::string why;
     const auto kind = detail::rule_file_kind(e.path(), &why);
     if (kind == detail::RuleFileKind::barrier) names.push_back(e.path().stem().string());
-    if (kind == detail::RuleFileKind::unparsable)
-      broken.push_back(e.path().filename().string() + " (" + why + ")");
+    if (kind == detail::RuleFileKind::unparsable && unparsable)
+      unparsable->push_back(e.path().filename().string() + " (" + why + ")");
   }
   std::sort(names.begin(), names.end());
-  std::sort(broken.begin(), broken.end());
+  if (unparsable) std::sort(unparsable->begin(), unparsable->end());
+  return names;
+}
+
+std::string barrier_rule_sets_held(const fs::path& rules_dir) {
+  std::vector<std::string> broken;
+  const std::vector<std::string> names = barrier_rule_set_names(rules_dir, &broken);
   // A rule set with a typo in it is not a barrier rule set yet, but it is the one the user may
   // be looking for: say it is there and why it was passed over.
   std::string held = names.empty() ? "it holds no barrier rule set"

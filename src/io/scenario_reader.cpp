@@ -477,9 +477,9 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
                                                       : rules_dir / (b.rules + ".toml");
     std::error_code ec;
     if (!fs::is_regular_file(rules_file, ec)) {
+      const std::string folder = rules_folder.named(barrier_rule_sets_held(rules_dir));
       const std::string expected =
-          fmt::format("a rule set of {} or a path to a rule-set TOML file",
-                      rules_folder.named(barrier_rule_sets_held(rules_dir)));
+          fmt::format("a rule set of {} or a path to a rule-set TOML file", folder);
       if (t.has("rules"))
         t.fail("rules", expected + fmt::format(" ({} {})", rules_file.string(),
                                                fs::exists(rules_file, ec) ? "is not a file"
@@ -488,8 +488,7 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
       t.missing("rules", fmt::format("the default rule set \"{}\" in {}: copy {}.toml and the "
                                      "class table it names (etag027-classes.toml) there, or give "
                                      "rules = a name or a path",
-                                     b.rules, rules_folder.named(barrier_rule_sets_held(rules_dir)),
-                                     b.rules));
+                                     b.rules, folder, b.rules));
     }
     auto cached = cache.find(rules_file);
     if (cached == cache.end()) {  // read once per file, however many barriers name it

@@ -334,15 +334,15 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
 }
 
 // The unit slips a block table invites, each said once: a density in t/m³ (in [blocks] or in
-// rows of their own), masses in tonnes, volumes in litres.
-void note_unlikely_blocks(const TomlTable& b, const std::vector<BlockGroup>& groups,
+// rows of their own), masses in tonnes, volumes in litres. `shared`: [blocks].density, the
+// density of the rows without one of their own.
+void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<BlockGroup>& groups,
                           const std::vector<GroupSource>& where, std::vector<InputNote>& notes) {
   auto rock = [](double d) { return d >= kRockDensityMin && d <= kRockDensityMax; };
   const std::string why = fmt::format(
       "outside the densities of rock ({:g} to {:g} kg/m³). A density is in kg/m³: 2.65 (t/m³ "
       "or g/cm³) gives blocks 1000 times too light, and every energy 1000 times too small",
       kRockDensityMin, kRockDensityMax);
-  const double shared = b.number("density", ModelDefaults::density);
   const std::size_t before = notes.size();
   if (b.has("density") && !rock(shared))
     notes.push_back({b.file(), line_of(*b.find("density")), b.field("density"),
@@ -430,7 +430,7 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
                      fmt::format("{0}.file or at least one [[{0}.table]]",
                                  dotted(table_path, "blocks")));
 
-  note_unlikely_blocks(*b, groups, where, notes);
+  note_unlikely_blocks(*b, density, groups, where, notes);
 
   std::int64_t in_all = 0;
   for (std::size_t i = 0; i < groups.size(); ++i)
@@ -487,11 +487,7 @@ std::string extent(const geometry::Profile& p) {
 
 void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view table_path,
                   std::vector<InputNote>& notes) {
-  double z_lo = sc.profile.vertices().front().z, z_hi = z_lo;
-  for (const auto& v : sc.profile.vertices()) {
-    z_lo = std::min(z_lo, v.z);
-    z_hi = std::max(z_hi, v.z);
-  }
+  const double z_lo = sc.profile.z_min(), z_hi = sc.profile.z_max();
   const toml::array* a = top.array_of_tables("sources");
   if (!a)
     top.missing("sources", fmt::format("at least one [[{}]] table with x and z",

@@ -70,6 +70,8 @@ class Profile {
   VertexTurn turn_after(std::size_t i) const { return turns_[i]; }
   double x_min() const { return x_min_; }
   double x_max() const { return x_max_; }
+  double z_min() const { return z_min_; }  // the lowest and highest vertex (m)
+  double z_max() const { return z_max_; }
   // +1 when the profile runs towards increasing x (its source end has the smaller x).
   int main_direction() const { return main_direction_; }
 
@@ -158,7 +160,7 @@ class Profile {
   std::vector<int> leaf_of_;  // leaf node holding each segment
   std::vector<Run> runs_;      // in segment order
   std::vector<int> run_of_;    // run holding each segment
-  double x_min_ = 0, x_max_ = 0;
+  double x_min_ = 0, x_max_ = 0, z_min_ = 0, z_max_ = 0;
   int main_direction_ = 1;
   bool x_monotone_ = true;  // every vertical line meets the ground once: no overhangs
 };

@@ -31,8 +31,10 @@ design::EnergyClassTable load_energy_classes(const std::string& name_or_path,
 design::EnergyClassTable load_energy_classes_file(const std::filesystem::path& file);
 
 // The names of the barrier rule sets in rules_dir (files whose [rule_set] kind is "barrier"),
-// sorted; for messages.
-std::vector<std::string> barrier_rule_set_names(const std::filesystem::path& rules_dir);
+// sorted; for messages. The .toml files that do not parse, each "name.toml (line N: why)", go to
+// *unparsable when given.
+std::vector<std::string> barrier_rule_set_names(const std::filesystem::path& rules_dir,
+                                                std::vector<std::string>* unparsable = nullptr);
 
 // What rules_dir holds, for messages: "its barrier rule sets: \"a\", \"b\"" or "it holds no
 // barrier rule set", and the .toml files passed over because they do not parse, with where.
