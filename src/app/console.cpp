@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "pierre/io/number_kind.hpp"
 #include "pierre/sim/trajectory.hpp"
 
 namespace pierre::app {
@@ -75,10 +76,6 @@ void print_wrapped(std::FILE* out, std::string_view lead, std::string_view text)
   fmt::print(out, "{}\n", line);
 }
 
-std::string cell(double v, int width) {
-  if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
-  return fmt::format("{:>{}.2f}", v, width);
-}
 
 }  // namespace
 
@@ -112,10 +109,11 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
         const char* label;
         const design::QuantityStatistics* q;
         double scale;
+        io::NumberKind kind;
       };
-      const Row rows[] = {{"speed (m/s)", &l.speed, 1.0},
-                          {"passing height (m)", &l.height, 1.0},
-                          {"transl. energy (kJ)", &l.translational_energy, 1e-3}};
+      const Row rows[] = {{"speed (m/s)", &l.speed, 1.0, io::NumberKind::speed},
+                          {"passing height (m)", &l.height, 1.0, io::NumberKind::length},
+                          {"transl. energy (kJ)", &l.translational_energy, 1e-3, io::NumberKind::energy}};
       bool first = true;
       for (const Row& r : rows) {
         if (first)
@@ -124,9 +122,9 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
         else
           fmt::print(out, "{:<16} {:>9} {:>8} {:>11}  ", "", "", "", "");
         first = false;
-        fmt::print(out, "{:<26} {} {} {} {}\n", r.label, cell(r.q->mean * r.scale, 10),
-                   cell(r.q->p50 * r.scale, 10), cell(r.q->p95 * r.scale, 10),
-                   cell(r.q->max * r.scale, 10));
+        auto cell = [&](double v) { return io::number_cell(v * r.scale, r.kind, 10); };
+        fmt::print(out, "{:<26} {} {} {} {}\n", r.label, cell(r.q->mean), cell(r.q->p50),
+                   cell(r.q->p95), cell(r.q->max));
       }
     }
     fmt::print(out, "\n");
@@ -137,9 +135,10 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
       quarry_sections > 1 ? fmt::format(", {} sections pooled; RD from the toe below", quarry_sections)
       : quarry_sections == 1 ? "; RD from the toe below"
                              : "";
+  auto metres = [](double v) { return io::number_cell(v, io::NumberKind::length); };
   fmt::print(out, "Runout from the release point (m{}):   P50 {}   P95 {}   P99 {}   max {}\n",
-             pooled, cell(s.runout.p50, 0), cell(s.runout.p95, 0), cell(s.runout.p99, 0),
-             cell(s.runout.max, 0));
+             pooled, metres(s.runout.p50), metres(s.runout.p95), metres(s.runout.p99),
+             metres(s.runout.max));
   fmt::print(out, "Stop reasons:");
   for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
   fmt::print(out, "\n");
@@ -152,19 +151,6 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
 void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes) {
   for (const auto& n : notes) fmt::print(out, "Note: {}\n", n.message());
 }
-
-namespace {
-
-std::string g(double v, int width) {
-  if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
-  if (std::isinf(v)) return fmt::format("{:>{}}", v > 0 ? "beyond" : "-inf", width);  // a zone off the end
-  // Four significant digits, but a whole number of kJ or m up to a million stays one (a MEL
-  // of 10 000 kJ printed as 1e+04 reads as a typo).
-  if (std::abs(v) >= 1e4 && std::abs(v) < 1e6) return fmt::format("{:>{}.0f}", v, width);
-  return fmt::format("{:>{}.4g}", v, width);
-}
-
-}  // namespace
 
 void print_design(std::FILE* out, const io::DesignResults& r, bool follows_output) {
   if (r.barriers.empty() && r.checks.empty()) return;
@@ -184,21 +170,24 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
                "req class", "h_i m");
     // Which of the two a characteristic value is: a Weibull v_k below the P95 of the line table
     // above is the fit's, not a slip.
-    auto k = [](const design::Characteristic& c) {
+    auto k = [](const design::Characteristic& c, io::NumberKind kind) {
       const char* from = std::isnan(c.value)           ? " "
                          : c.value == c.weibull       ? "W"
                          : c.value == c.empirical     ? "E"
                                                       : " ";
-      return g(c.value, 8) + " " + from;
+      return io::number_cell(c.value, kind, 8) + " " + from;
     };
+    constexpr auto speed = io::NumberKind::speed, length = io::NumberKind::length,
+                   energy = io::NumberKind::energy;
     for (const auto& d : r.barriers)
       fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>9} {}\n", d.spec.name, d.spec.line,
-                 d.rules_name, k(d.v_k), k(d.h_k), g(d.v_d, 8), g(d.E_d_kJ, 9),
-                 g(d.MEL_req_kJ, 10), g(d.SEL_req_kJ, 10),
+                 d.rules_name, k(d.v_k, speed), k(d.h_k, length), io::number_cell(d.v_d, speed, 8),
+                 io::number_cell(d.E_d_kJ, energy, 9), io::number_cell(d.MEL_req_kJ, energy, 10),
+                 io::number_cell(d.SEL_req_kJ, energy, 10),
                  d.energy_class ? std::to_string(d.energy_class->number) +
                                       (d.energy_class->open_ended ? "+" : "")
                                 : std::string("-"),
-                 g(d.h_i, 7));
+                 io::number_cell(d.h_i, length, 7));
     fmt::print(out, "v_k, h_k: W the Weibull quantile, E the empirical percentile (the rule set's "
                     "`governing`)\n");
     // What an engineer should know of a design (fits from few values, zero heights left out of
@@ -210,8 +199,10 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
   fmt::print(out, "Checks\n{:<18} {:<20} {:>10} {:>10} {:<4} {:<6} {}\n", "subject", "id", "value",
              "limit", "unit", "status", "rule");
   for (const auto& c : r.checks)
-    fmt::print(out, "{:<18} {:<20} {} {} {:<4} {:<6} {}\n", c.subject, c.id, g(c.value, 10),
-               g(c.limit, 10), c.unit, design::to_string(c.status), c.rule);
+    fmt::print(out, "{:<18} {:<20} {} {} {:<4} {:<6} {}\n", c.subject, c.id,
+               io::number_cell(c.value, io::check_number_kind(c.unit, c.value), 10),
+               io::number_cell(c.limit, io::check_number_kind(c.unit, c.limit), 10), c.unit,
+               design::to_string(c.status), c.rule);
   // The reasons: FAIL and WARN first, then why a line does not apply (an N/A line still shows a
   // value and a limit, e.g. a candidate's SEL below SEL_req when the rule set designs on MEL).
   bool header = false;

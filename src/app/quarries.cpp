@@ -120,7 +120,7 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
       std::string gov;
       if (l.gov)
         gov = fmt::format("{}_gov {}{} ({})", l.s == &r.rd ? "RD" : "ID",
-                          metres(l.gov->value_h * H, 0),
+                          metres(l.gov->value_h * H, 0, 2),  // as the check lines' m
                           std::isfinite(l.gov->value_h)  ? " m"
                           : std::isinf(l.gov->value_h) ? " the profile"
                                                         : "",  // "-": no values

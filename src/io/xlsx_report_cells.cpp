@@ -58,14 +58,7 @@ lxw_format* Report::number(std::string_view kind, int align) {
 }
 
 lxw_format* Report::check_number(const std::string& unit, double v, int align) {
-  if (unit == "kJ") return number("energy", align);
-  if (unit == "m") return number("length", align);
-  if (unit == "m/s") return number("speed", align);
-  if (unit == "%")  // two decimals; more for a small probability of exceedance (0.00217 %)
-    return number(std::isfinite(v) && v != 0 && std::abs(v) < 0.1 ? "small_percent" : "length", align);
-  if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15) return number("count", align);
-  if (std::isfinite(v) && v != 0 && std::abs(v) < 1e-3) return number("scientific", align);
-  return number("parameter", align);
+  return number(format_key(check_number_kind(unit, v)), align);
 }
 
 lxw_format* Report::heading() {

@@ -31,6 +31,7 @@
 
 #include <fmt/format.h>
 
+#include "pierre/io/number_kind.hpp"
 #include "pierre/io/report_data.hpp"
 #include "pierre/io/report_template.hpp"
 

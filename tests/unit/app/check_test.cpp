@@ -310,7 +310,7 @@ TEST_F(Check, TheBarrierTableSaysWhichValueGoverns) {
       ASSERT_NE(w, e) << key;  // else the mark says nothing
       const bool weibull = rules == "thesis-2015" || w > e;
       EXPECT_EQ(v, weibull ? w : e) << rules << " " << key;
-      const std::string cell = fmt::format("{:.4g} {}", v, weibull ? "W" : "E");
+      const std::string cell = fmt::format("{:.2f} {}", v, weibull ? "W" : "E");  // m/s, m
       EXPECT_NE(row.find(" " + cell + " "), std::string::npos) << rules << ": " << cell << "\n" << row;
     }
     EXPECT_NE(r.out.find("v_k, h_k: W the Weibull quantile, E the empirical percentile"),
