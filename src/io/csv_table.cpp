@@ -127,7 +127,8 @@ double CsvTable::number(const CsvRow& row, std::size_t col) const {
 }
 
 CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
-                  std::string_view expected_header, const ColumnAliases& aliases) {
+                  std::string_view expected_header, const ColumnAliases& aliases,
+                  const std::vector<std::string>& may_be_empty) {
   std::string text = read_text(file, fmt::format("CSV file with header {}", expected_header));
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
   // Excel's "Unicode text" export is UTF-16: two bytes a character, half of them zero here.
@@ -200,10 +201,21 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
                                                           t.header.size()),
                                         *sep),
                          fmt::format("cells separated by commas ({})", join(t.header)));
-      throw InputError(file, line_no, t.header[cells.size()],
-                       fmt::format("nothing (the row has {} of {} columns)", cells.size(),
-                                   t.header.size()),
-                       fmt::format("a value in every column of {}", join(t.header)));
+      // Where the missing columns may be left empty (a block given by its mass in a table
+      // with a volume column), say how: a cut-off row and an empty cell differ by a comma.
+      const std::vector<std::string> missing(t.header.begin() + static_cast<std::ptrdiff_t>(cells.size()),
+                                             t.header.end());
+      const bool may_skip = std::all_of(missing.begin(), missing.end(), [&](const std::string& h) {
+        return std::find(may_be_empty.begin(), may_be_empty.end(), h) != may_be_empty.end();
+      });
+      throw InputError(
+          file, line_no, t.header[cells.size()],
+          fmt::format("nothing (the row has {} of {} columns)", cells.size(), t.header.size()),
+          may_skip ? fmt::format("a value or an empty cell in every column of {} (\"{}{}\" leaves "
+                                 "{} empty)",
+                                 join(t.header), line, std::string(missing.size(), ','),
+                                 join(missing))
+                   : fmt::format("a value in every column of {}", join(t.header)));
     }
     if (cells.size() > t.header.size() && all_empty(cells, t.header.size()))
       cells.resize(t.header.size());

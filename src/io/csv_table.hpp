@@ -37,7 +37,11 @@ using ColumnAliases = std::vector<std::pair<std::string, std::string>>;
 // Reads `file`; every header name must be one of `allowed` or an alias of one (no duplicates).
 // `expected_header` says in messages what the header should hold. Empty cells after the last
 // column, and rows of empty cells only, are what spreadsheets write for nothing: ignored.
+// `may_be_empty`: the columns a row may leave empty (the reader decides what that means); a
+// row short of only such cells is still an error (a cut-off row), whose message shows the
+// row with its empty cells.
 CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
-                  std::string_view expected_header, const ColumnAliases& aliases = {});
+                  std::string_view expected_header, const ColumnAliases& aliases = {},
+                  const std::vector<std::string>& may_be_empty = {});
 
 }  // namespace pierre::io::detail

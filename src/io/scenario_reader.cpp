@@ -393,8 +393,9 @@ design::CandidateBarrier read_candidate(const TomlTable& c, const design::Energy
 }
 
 design::ObservedSample read_observed(const fs::path& file) {
-  const CsvTable t = detail::read_csv(file, {"speed_m_s", "height_m", "energy_kJ"},
-                                      "speed_m_s, height_m and/or energy_kJ");
+  const std::vector<std::string> columns = {"speed_m_s", "height_m", "energy_kJ"};
+  const CsvTable t = detail::read_csv(file, columns, "speed_m_s, height_m and/or energy_kJ", {},
+                                      columns);  // a value not measured for a block: empty
   design::ObservedSample o;
   o.file = file.string();
   struct Col {

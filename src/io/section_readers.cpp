@@ -269,10 +269,12 @@ std::string block_mass_limit() {
 
 void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
                      std::vector<BlockGroup>& groups, std::vector<GroupSource>& where) {
+  const std::vector<std::string> columns = {"id",        "mass",      "volume", "density",
+                                            "shape_min", "shape_max", "count"};
+  // Every cell may be empty: a row gives its mass or its volume, the rest has defaults.
   const CsvTable t = detail::read_csv(
-      file, {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"},
-      "mass or volume, and optionally id, density, shape_min, shape_max, count",
-      {{"mass_kg", "mass"}, {"volume_m3", "volume"}, {"density_kg_m3", "density"}});
+      file, columns, "mass or volume, and optionally id, density, shape_min, shape_max, count",
+      {{"mass_kg", "mass"}, {"volume_m3", "volume"}, {"density_kg_m3", "density"}}, columns);
   const auto c_id = t.column("id"), c_mass = t.column("mass"), c_vol = t.column("volume"),
              c_den = t.column("density"), c_smin = t.column("shape_min"),
              c_smax = t.column("shape_max"), c_count = t.column("count");

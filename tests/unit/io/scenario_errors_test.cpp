@@ -116,7 +116,8 @@ TEST(ScenarioCsv, ASemicolonHeaderSaysItsSeparator) {
 }
 
 // A row short of a cell without another separator keeps its message; so does one whose ';' is
-// inside a quoted text (a block's id), which is no separator.
+// inside a quoted text (a block's id), which is no separator. Where the missing cells may be
+// empty (a blocks CSV), the message shows the row with them: a cut-off row stays an error.
 TEST(ScenarioCsv, AShortCommaRowNamesTheMissingColumn) {
   TempDir dir;
   EXPECT_EQ(csv_error(dir, "x,z,material\n0,10,rock\n10,0\n20,0,\n"),
@@ -125,8 +126,13 @@ TEST(ScenarioCsv, AShortCommaRowNamesTheMissingColumn) {
                 "every column of x,z,material");
   EXPECT_EQ(csv_error(dir, "id,mass,count\n\"a;b\",100\n", "b.csv"),
             (dir.path() / "b.csv").string() +
-                ":2: count: found nothing (the row has 2 of 3 columns), expected a value in "
-                "every column of id,mass,count");
+                ":2: count: found nothing (the row has 2 of 3 columns), expected a value or an "
+                "empty cell in every column of id,mass,count (\"\"a;b\",100,\" leaves count empty)");
+  EXPECT_EQ(csv_error(dir, "id,mass,volume,count\nP01,,0.5,2\nP02,140\n", "b.csv"),
+            (dir.path() / "b.csv").string() +
+                ":3: volume: found nothing (the row has 2 of 4 columns), expected a value or an "
+                "empty cell in every column of id,mass,volume,count (\"P02,140,,\" leaves "
+                "volume,count empty)");
 }
 
 // Rows added to a table written inline: a TOML syntax error whose expectation says what to write.
