@@ -154,6 +154,7 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   BarrierDesign d;
   d.spec = spec;
   d.rules_name = rules.name;
+  d.design_on = rules.design_on;
   d.rules_title = rules.title;
   d.rules_source = rules.source;
   d.rules_file = rules.file;

@@ -40,7 +40,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   s["formats"] = {"count",   "speed",     "length",   "coordinate",  "energy",  "mass",
                   "volume",  "density",   "factor",   "parameter",   "p_value", "scientific", "probability",
                   "percent", "small_percent", "time",      "angle",    "material",    "general", "date",
-                  "open_class", "open_energy"};
+                  "open_class", "open_energy", "info_energy"};
   s["titles"] = {"summary",      "run",          "barriers",       "lines",
                  "checks",       "inputs",       "simulation",     "materials",
                  "blocks",       "sources",      "profile_vertices", "observation_lines", "barrier_inputs",
@@ -62,7 +62,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
                  "quarry_average_note", "resolved", "defaulted", "from_class",
                  "open_class_capacity", "input_notes", "quarry_all", "quarry_all_note", "travel_time",
-                 "travel_time_value"};
+                 "travel_time_value", "runout_quarry_note", "failing"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};

@@ -86,6 +86,12 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
       label(key);
       num(ws, r++, 2, v, number("length", 2));
     }
+    // Beside the quarry table's RD, these read as a danger zone: say what they are.
+    if (d_.quarry)
+      text(ws, r++, 0,
+           replace_all(t_.get("labels", "runout_quarry_note"), "{sections}",
+                       std::to_string(d_.quarry_sections.size())),
+           note());
   }
   return r;
 }
@@ -113,8 +119,10 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
     } else {
       text(ws, r, 4, t_.get("labels", "none"), centred());
     }
-    num(ws, r, 7, b.MEL_req_kJ, number("energy", 1));
-    num(ws, r, 8, b.SEL_req_kJ, number("energy", 1));
+    // A capacity the rule set does not design on is information, not a requirement: a class
+    // whose SEL is below an SEL_req of a MEL design read as a failure.
+    num(ws, r, 7, b.MEL_req_kJ, number(design::needs_mel(b.design_on) ? "energy" : "info_energy", 1));
+    num(ws, r, 8, b.SEL_req_kJ, number(design::needs_sel(b.design_on) ? "energy" : "info_energy", 1));
     num(ws, r, 9, b.h_i, number("length", 1));
     const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
     fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
@@ -213,6 +221,12 @@ void Report::summary_checks(lxw_worksheet* ws, Row r) {
                         {"{pass}", n[0]}, {"{na}", n[3]}})
     verdict = replace_all(verdict, key, std::to_string(v));
   text(ws, r++, 0, verdict, bold());
+  std::string failing;
+  for (const auto& l : lines)
+    if (l.status == design::CheckStatus::fail)
+      failing += (failing.empty() ? "" : ", ") + l.subject + " " + l.id;
+  if (!failing.empty())
+    text(ws, r++, 0, replace_all(t_.get("labels", "failing"), "{lines}", failing), bold());
   const Row head = r;
   r = check_table(ws, r, lines, true);
   check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : 9),

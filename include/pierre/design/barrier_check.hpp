@@ -114,6 +114,7 @@ struct BarrierDesign {
 
   // Added with the procedure (design-checks.md §1):
   std::string rules_name;                    // the rule set's name (file stem)
+  DesignOn design_on = DesignOn::both;       // the rule set's: the other capacity is information
   std::string rules_file;                    // where the rule set was read from
   std::string classes_name, classes_title, classes_file;  // the energy class table used
   std::optional<QuantityFit> observed_speed, observed_height, observed_energy;  // energy kJ

@@ -192,6 +192,7 @@ std::unique_ptr<Fixture> make_fixture() {
     d.trajectory_sections.push_back(0);
   }
   d.total_trajectories = 2;
+  d.statistics.runout = {1200, 14.5, 26.0, 31.0, 44.0};  // m from the release points, pooled
   return f;
 }
 
@@ -516,6 +517,19 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
       EXPECT_TRUE(!blank || blank->text.empty()) << dump(s, *all);
     }
     EXPECT_EQ(cell(s, *all + 1, 0)->text, tpl.get("labels", "quarry_all_note"));
+    // The runouts from the release points, pooled over the sections, are said not to be the
+    // zones (a client read their P95 as the danger zone).
+    const auto p95 = find_row(s, 0, tpl.get("labels", "runout_p95"));
+    ASSERT_TRUE(p95);
+    expect_number(s, *p95, 2, 26.0);
+    const auto pooled = find_row(s, 0, tpl.get("labels", "runout_max"));
+    ASSERT_TRUE(pooled);
+    EXPECT_EQ(cell(s, *pooled + 1, 0)->text.rfind("The runouts above are horizontal distances from "
+                                                   "each block's release point, pooled over 3 "
+                                                   "section(s): they are not the danger zones",
+                                                   0),
+              0u)
+        << dump(s, *pooled + 1);
     const auto head = find_row(s, 0, "Subject");
     ASSERT_TRUE(head);
     for (const auto& l : q.checks) {

@@ -409,7 +409,14 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   std::size_t counts[4] = {0, 0, 0, 0};
   for (const auto& l : f->data.checks) ++counts[static_cast<int>(l.status)];
   ASSERT_GT(counts[1], 0u);
-  EXPECT_EQ(cell(sum, *hdr - 1, 0)->text,
+  // Then the lines that FAIL, by subject and id, so that they are not lost in the list.
+  std::string failing;
+  for (const auto& l : f->data.checks)
+    if (l.status == design::CheckStatus::fail)
+      failing += (failing.empty() ? "FAIL: " : ", ") + l.subject + " " + l.id;
+  EXPECT_EQ(cell(sum, *hdr - 1, 0)->text, failing);
+  EXPECT_NE(failing.find("Screen A energy.sel"), std::string::npos) << failing;
+  EXPECT_EQ(cell(sum, *hdr - 2, 0)->text,
             std::to_string(f->data.checks.size()) + " check lines: " + std::to_string(counts[1]) +
                 " FAIL, " + std::to_string(counts[2]) + " WARN, " + std::to_string(counts[0]) +
                 " PASS, " + std::to_string(counts[3]) +
@@ -636,6 +643,30 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   EXPECT_EQ(cell(*bar, *head, 4)->text, "Simulated, empirical");
   const auto beyond = cell(*bar, *head, 5);
   EXPECT_TRUE(!beyond || beyond->text.empty()) << "an empty Observed column: " << beyond->text;
+}
+
+// A rule set that designs on MEL: the Summary's SEL_req is information, and says so (a class
+// whose SEL is below it read as failing), while MEL_req stays a requirement; and the reverse.
+TEST(XlsxReport, ACapacityTheRulesDoNotDesignOnIsInformation) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  f->data.barriers.at(0).design_on = design::DesignOn::mel;
+  f->data.barriers.push_back(f->data.barriers.at(0));
+  f->data.barriers.back().spec.name = "Screen B";
+  f->data.barriers.back().design_on = design::DesignOn::sel;
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);  // as shown
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Sheet& sum = sheets.at("Summary");
+  const auto a = find_row(sum, 0, "Screen A"), b = find_row(sum, 0, "Screen B");
+  ASSERT_TRUE(a && b);
+  // Columns 7 and 8: MEL_req and SEL_req (1,386.9 and 1,066.9 kJ in the fixture).
+  EXPECT_EQ(cell(sum, *a, 7)->text, "1,386.9") << dump(sum, *a);
+  EXPECT_EQ(cell(sum, *a, 8)->text, "1,066.9 (info)") << dump(sum, *a);
+  EXPECT_EQ(cell(sum, *b, 7)->text, "1,386.9 (info)") << dump(sum, *b);
+  EXPECT_EQ(cell(sum, *b, 8)->text, "1,066.9") << dump(sum, *b);
 }
 
 // Inputs, a barrier's inputs that the procedure resolved or defaulted: the design block's volume
