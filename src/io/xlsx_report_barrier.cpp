@@ -271,9 +271,11 @@ Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesig
                 const std::string& formula = {}) {
     text(ws, r, 0, h("factors", key), bold());
     num(ws, r, 1, v, number(kind));
-    text(ws, r, 2, std::string(unit));
+    text(ws, r, 2, std::string(unit), indented());  // apart from the right-aligned value
     const auto it = b.how.find(std::string(key));
-    text(ws, r, 3, it != b.how.end() ? it->second : formula);
+    // Under the merged heading (D:I, 6 columns of 14), wrapped: the derivations of the partial
+    // factors ran off the printed page.
+    paragraph(ws, r, 3, 8, 6 * 14, it != b.how.end() ? it->second : formula, wrap());
     ++r;
   };
   fr("v_k_weibull", b.v_k.weibull, "speed", "m/s");

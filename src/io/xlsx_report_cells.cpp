@@ -97,6 +97,15 @@ lxw_format* Report::note() {
   });
 }
 
+lxw_format* Report::wrapped_note() {
+  return cached("wrapped_note", [&](lxw_format* f) {
+    format_set_italic(f);
+    format_set_font_color(f, t_.colour("note_font"));
+    format_set_text_wrap(f);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
+}
+
 lxw_format* Report::bold() {
   return cached("bold", [&](lxw_format* f) {
     format_set_bold(f);
@@ -184,6 +193,15 @@ void Report::seed(lxw_worksheet* ws, Row r, Col c, std::uint64_t v, lxw_format* 
 void Report::merged(lxw_worksheet* ws, Row r, Col c0, Col c1, const std::string& s,
                     lxw_format* f) {
   check(worksheet_merge_range(ws, r, c0, r, c1, s.c_str(), f), "worksheet_merge_range");
+}
+
+void Report::paragraph(lxw_worksheet* ws, Row r, Col c0, Col c1, double chars,
+                       const std::string& s, lxw_format* f) {
+  if (c1 > c0)
+    merged(ws, r, c0, c1, s, f);
+  else
+    text(ws, r, c0, s, f);
+  fit_row(ws, r, {{&s, chars}});
 }
 
 void Report::headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,

@@ -129,9 +129,10 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
     ++r;
   }
   // How each class was chosen: on which capacity, from which table (its source).
+  // Over the print area's width (A:J, 196 wide), wrapped: it ran off the printed page.
   for (const auto& b : d_.barriers)
     if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
-      text(ws, r++, 0, b.spec.name + ": class " + std::to_string(b.energy_class->number) +
+      paragraph(ws, r++, 0, 9, 196, b.spec.name + ": class " + std::to_string(b.energy_class->number) +
                            (b.energy_class->open_ended ? "+" : "") + ", " + it->second +
                            (b.energy_class->open_ended
                                 ? fmt::format("; the class is open-ended: the kit must declare MEL >= "
@@ -139,7 +140,7 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
                                               design::number_text(b.MEL_req_kJ, 4),
                                               design::number_text(b.SEL_req_kJ, 4))
                                 : std::string()),
-           note());
+           wrapped_note());
   return r;
 }
 

@@ -94,6 +94,7 @@ class Report {
   lxw_format* title();
   lxw_format* section();
   lxw_format* note();
+  lxw_format* wrapped_note();  // note(), wrapped in its cell, at the top
   lxw_format* bold();
   lxw_format* wrap();
   lxw_format* centred();
@@ -116,6 +117,11 @@ class Report {
   void seed(lxw_worksheet* ws, Row r, Col c, std::uint64_t v, lxw_format* f);
   // Text across the columns c0 … c1 of row r (a merged range).
   void merged(lxw_worksheet* ws, Row r, Col c0, Col c1, const std::string& s, lxw_format* f);
+  // A text longer than its cell, kept inside the print area: merged over columns c0..c1
+  // (`chars` wide in all, Excel's width units), wrapped (f must wrap), the row as high as it
+  // needs. A long note in one cell ran off the printed page.
+  void paragraph(lxw_worksheet* ws, Row r, Col c0, Col c1, double chars, const std::string& s,
+                 lxw_format* f);
   // A table's title after a blank row: the template's titles.<key>; returns the row below it.
   Row table_title(lxw_worksheet* ws, Row r, std::string_view key) {
     text(ws, r + 1, 0, t_.get("titles", key), section());

@@ -861,6 +861,55 @@ TEST(XlsxReport, ColumnWidthEntriesDoNotOverlap) {
   EXPECT_GE(sheets, 5);
 }
 
+// A long note stays inside the printed page: merged over the print area's columns (Summary A:J;
+// a barrier sheet's "how it was obtained" D:I), wrapped, its row as high as its lines. In one
+// cell, the energy class's note and the partial factors' derivations ran off the page.
+TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture();
+  std::string words;
+  for (int i = 0; i < 40; ++i) words += "a reason in many words ";  // 920 characters
+  f->data.barriers.at(0).how["energy_class"] = words;
+  f->data.barriers.at(0).gamma_F.how = words;
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  // The row of the cell holding `text` (a shared string's index in its <c>), its merged range
+  // and its height.
+  const std::string strings = zip_entry(xlsx, "xl/sharedStrings.xml", dir.path());
+  auto string_index = [&](const std::string& prefix) {
+    long index = 0;
+    for (std::size_t k = strings.find("<si>"); k != std::string::npos;
+         k = strings.find("<si>", k + 1), ++index)
+      if (strings.find("<t>" + prefix, k) == k + 4 || strings.find("<t xml:space=\"preserve\">" + prefix, k) == k + 4)
+        return index;
+    return -1L;
+  };
+  auto expect_paragraph = [&](const std::string& sheet, const std::string& prefix, char c0,
+                              char c1, double min_height) {
+    SCOPED_TRACE(sheet + ": " + prefix);
+    const long si = string_index(prefix);
+    ASSERT_GE(si, 0) << "no such text";
+    const std::string x = zip_entry(xlsx, sheet, dir.path());
+    const std::size_t v = x.find("<v>" + std::to_string(si) + "</v>");
+    ASSERT_NE(v, std::string::npos);
+    const std::size_t c = x.rfind("<c r=\"", v);
+    const std::string ref = x.substr(c + 6, x.find('"', c + 6) - c - 6);  // e.g. "A23"
+    ASSERT_EQ(ref[0], c0) << ref;
+    const std::string row = ref.substr(1);
+    EXPECT_NE(x.find("<mergeCell ref=\"" + ref + ":" + c1 + row + "\"/>"), std::string::npos)
+        << "not merged " << ref << ":" << c1 << row;
+    const std::size_t r = x.find("<row r=\"" + row + "\"");
+    ASSERT_NE(r, std::string::npos);
+    const std::size_t ht = x.find("ht=\"", r);
+    ASSERT_LT(ht, x.find('>', r)) << "no height of its own";
+    EXPECT_GE(std::stod(x.substr(ht + 4)), min_height);
+  };
+  // 920 characters over 196 (Summary) and 84 (D:I of 14) units: 5 and 10 lines of 15 pt at least.
+  expect_paragraph("xl/worksheets/sheet1.xml", "Screen A: class", 'A', 'J', 5 * 15.0);
+  expect_paragraph("xl/worksheets/sheet2.xml", words.substr(0, 30), 'D', 'I', 10 * 15.0);
+}
+
 // The profile is drawn at one scale: metres per pixel of the plot area (taken as 85 % of the
 // chart's width and 68 % of its height) equal across and up, up to the round numbers the axis
 // bounds are put on (a half-decade step: at most a factor 1.5 either way), and the axes hold
