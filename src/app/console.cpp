@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "pierre/io/number_kind.hpp"
+#include "pierre/design/number_kind.hpp"
 #include "pierre/sim/trajectory.hpp"
 
 namespace pierre::app {
@@ -109,11 +109,11 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
         const char* label;
         const design::QuantityStatistics* q;
         double scale;
-        io::NumberKind kind;
+        design::NumberKind kind;
       };
-      const Row rows[] = {{"speed (m/s)", &l.speed, 1.0, io::NumberKind::speed},
-                          {"passing height (m)", &l.height, 1.0, io::NumberKind::length},
-                          {"transl. energy (kJ)", &l.translational_energy, 1e-3, io::NumberKind::energy}};
+      const Row rows[] = {{"speed (m/s)", &l.speed, 1.0, design::NumberKind::speed},
+                          {"passing height (m)", &l.height, 1.0, design::NumberKind::length},
+                          {"transl. energy (kJ)", &l.translational_energy, 1e-3, design::NumberKind::energy}};
       bool first = true;
       for (const Row& r : rows) {
         if (first)
@@ -122,7 +122,7 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
         else
           fmt::print(out, "{:<16} {:>9} {:>8} {:>11}  ", "", "", "", "");
         first = false;
-        auto cell = [&](double v) { return io::number_cell(v * r.scale, r.kind, 10); };
+        auto cell = [&](double v) { return design::number_cell(v * r.scale, r.kind, 10); };
         fmt::print(out, "{:<26} {} {} {} {}\n", r.label, cell(r.q->mean), cell(r.q->p50),
                    cell(r.q->p95), cell(r.q->max));
       }
@@ -135,7 +135,7 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
       quarry_sections > 1 ? fmt::format(", {} sections pooled; RD from the toe below", quarry_sections)
       : quarry_sections == 1 ? "; RD from the toe below"
                              : "";
-  auto metres = [](double v) { return io::number_cell(v, io::NumberKind::length); };
+  auto metres = [](double v) { return design::number_cell(v, design::NumberKind::length); };
   fmt::print(out, "Runout from the release point (m{}):   P50 {}   P95 {}   P99 {}   max {}\n",
              pooled, metres(s.runout.p50), metres(s.runout.p95), metres(s.runout.p99),
              metres(s.runout.max));
@@ -170,24 +170,24 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
                "req class", "h_i m");
     // Which of the two a characteristic value is: a Weibull v_k below the P95 of the line table
     // above is the fit's, not a slip.
-    auto k = [](const design::Characteristic& c, io::NumberKind kind) {
+    auto k = [](const design::Characteristic& c, design::NumberKind kind) {
       const char* from = std::isnan(c.value)           ? " "
                          : c.value == c.weibull       ? "W"
                          : c.value == c.empirical     ? "E"
                                                       : " ";
-      return io::number_cell(c.value, kind, 8) + " " + from;
+      return design::number_cell(c.value, kind, 8) + " " + from;
     };
-    constexpr auto speed = io::NumberKind::speed, length = io::NumberKind::length,
-                   energy = io::NumberKind::energy;
+    constexpr auto speed = design::NumberKind::speed, length = design::NumberKind::length,
+                   energy = design::NumberKind::energy;
     for (const auto& d : r.barriers)
       fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>9} {}\n", d.spec.name, d.spec.line,
-                 d.rules_name, k(d.v_k, speed), k(d.h_k, length), io::number_cell(d.v_d, speed, 8),
-                 io::number_cell(d.E_d_kJ, energy, 9), io::number_cell(d.MEL_req_kJ, energy, 10),
-                 io::number_cell(d.SEL_req_kJ, energy, 10),
+                 d.rules_name, k(d.v_k, speed), k(d.h_k, length), design::number_cell(d.v_d, speed, 8),
+                 design::number_cell(d.E_d_kJ, energy, 9), design::number_cell(d.MEL_req_kJ, energy, 10),
+                 design::number_cell(d.SEL_req_kJ, energy, 10),
                  d.energy_class ? std::to_string(d.energy_class->number) +
                                       (d.energy_class->open_ended ? "+" : "")
                                 : std::string("-"),
-                 io::number_cell(d.h_i, length, 7));
+                 design::number_cell(d.h_i, length, 7));
     fmt::print(out, "v_k, h_k: W the Weibull quantile, E the empirical percentile (the rule set's "
                     "`governing`)\n");
     // What an engineer should know of a design (fits from few values, zero heights left out of
@@ -200,8 +200,8 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
              "limit", "unit", "status", "rule");
   for (const auto& c : r.checks)
     fmt::print(out, "{:<18} {:<20} {} {} {:<4} {:<6} {}\n", c.subject, c.id,
-               io::number_cell(c.value, io::check_number_kind(c.unit, c.value), 10),
-               io::number_cell(c.limit, io::check_number_kind(c.unit, c.limit), 10), c.unit,
+               design::number_cell(c.value, design::check_number_kind(c.unit, c.value), 10),
+               design::number_cell(c.limit, design::check_number_kind(c.unit, c.limit), 10), c.unit,
                design::to_string(c.status), c.rule);
   // The reasons: FAIL and WARN first, then why a line does not apply (an N/A line still shows a
   // value and a limit, e.g. a candidate's SEL below SEL_req when the rule set designs on MEL).

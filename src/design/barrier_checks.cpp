@@ -6,6 +6,7 @@
 
 #include "pierre/design/barrier_check.hpp"
 
+#include "pierre/design/number_kind.hpp"
 #include "pierre/design/number_text.hpp"
 
 namespace pierre::design {
@@ -58,19 +59,20 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
                                 (std::string(name) == "MEL" ? "mel" : "sel") +
                                 ", or an energy_class whose " + name + " the class table holds)";
     if (!declares_energy)
-      set(l, CheckStatus::warn, missing + ": required " + num(required) + " kJ not compared");
+      set(l, CheckStatus::warn, missing + ": required " + compared_texts(required, required, "kJ").first +
+                                    " not compared");
     else
       set(l, CheckStatus::fail,
           "the rule set designs on " +
               std::string(b.r.design_on == DesignOn::both ? "MEL and SEL" : to_string(b.r.design_on)) +
               " and " + missing);
   }
-  else if (at_least(declared, required))
-    set(l, CheckStatus::pass, std::string("candidate ") + name + " " + num(declared) + " kJ >= required " +
-                                  num(required) + " kJ");
-  else
-    set(l, CheckStatus::fail, std::string("candidate ") + name + " " + num(declared) + " kJ < required " +
-                                  num(required) + " kJ");
+  else {
+    const auto [has, needs] = compared_texts(declared, required, "kJ");
+    const bool pass = at_least(declared, required);
+    set(l, pass ? CheckStatus::pass : CheckStatus::fail,
+        std::string("candidate ") + name + " " + has + (pass ? " >= " : " < ") + "required " + needs);
+  }
 }
 
 void elongation_line(Builder& b, const CandidateBarrier& c) {
@@ -106,10 +108,12 @@ void elongation_line(Builder& b, const CandidateBarrier& c) {
     set(l, CheckStatus::not_applicable,
         "not applicable: the candidate does not declare both the elongation of the governing "
         "test and distance_to_object");
-  else if (at_least(value, limit))
-    set(l, CheckStatus::pass, "distance " + num(value) + " m >= " + how + " = " + num(limit) + " m");
-  else
-    set(l, CheckStatus::fail, "distance " + num(value) + " m < " + how + " = " + num(limit) + " m");
+  else {
+    const auto [has, needs] = compared_texts(value, limit, "m");
+    const bool pass = at_least(value, limit);
+    set(l, pass ? CheckStatus::pass : CheckStatus::fail,
+        "distance " + has + (pass ? " >= " : " < ") + how + " = " + needs);
+  }
 }
 
 // Value and limit in % (unit "%"), as the reason words them and as sample.size is; judged on the
@@ -240,13 +244,14 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
       CheckLine& l = b.add("height.interception",
                            "candidate's vertical interception height against h_i = h_k γh + f",
                            value, d.h_i, "m");
+      const auto [has, needs] = compared_texts(value, d.h_i, "m");
       if (!c.height)  // WARN, not N/A: the check applies, it could not be made
         set(l, CheckStatus::warn, "the candidate declares no height (give height, m): h_i " +
-                                      num(d.h_i) + " m not compared");
+                                      needs + " not compared");
       else if (at_least(*c.height, d.h_i))
-        set(l, CheckStatus::pass, "height " + num(*c.height) + " m >= h_i " + num(d.h_i) + " m");
+        set(l, CheckStatus::pass, "height " + has + " >= h_i " + needs);
       else
-        set(l, CheckStatus::fail, "height " + num(*c.height) + " m < h_i " + num(d.h_i) + " m");
+        set(l, CheckStatus::fail, "height " + has + " < h_i " + needs);
     }
     elongation_line(b, c);
     const double pE = d.exceedance.size() > 1 ? d.exceedance[1].simulated_weibull : kNaN;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 
+#include "pierre/design/number_kind.hpp"
 #include "pierre/design/number_text.hpp"
 #include "pierre/stats/percentile.hpp"
 
@@ -315,9 +316,6 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
     const std::string& subject = sr.spec.name;
     sr.danger_zone = row.rd_gov.value_h * H;
     sr.first_impact_zone = row.id_gov.value_h * H;
-    const std::string gov_text = "RD_gov = " + num(sr.danger_zone) +
-                                 (std::isfinite(sr.danger_zone) ? " m" : "") + " (" +
-                                 row.rd_gov.how + ")";
     // A zone set by a log-normal the KS test rejects extrapolates a curve the blocks do not
     // follow: said where the zone is judged, not only on the row's fit.RD line.
     std::string fit_doubt;
@@ -342,12 +340,13 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
         l.reason = "the danger zone reaches beyond the profile's end (" + row.rd_gov.how + "; " +
                    std::to_string(row.left_profile) + " of " + std::to_string(row.thrown) +
                    " blocks left the section); extend the section";
-      } else if (!at_least(value, sr.danger_zone)) {
-        l.status = CheckStatus::fail;
-        l.reason = num(value) + " m from the toe is inside the danger zone: " + gov_text + fit_doubt;
       } else {
-        l.status = CheckStatus::pass;
-        l.reason = num(value) + " m from the toe is outside the danger zone: " + gov_text + fit_doubt;
+        // In the decimals of the value and limit cells (more where those would read alike).
+        const auto [at, zone] = compared_texts(value, sr.danger_zone, "m");
+        const bool outside = at_least(value, sr.danger_zone);
+        l.status = outside ? CheckStatus::pass : CheckStatus::fail;
+        l.reason = at + " from the toe is " + (outside ? "outside" : "inside") +
+                   " the danger zone: RD_gov = " + zone + " (" + row.rd_gov.how + ")" + fit_doubt;
       }
       d.checks.push_back(std::move(l));
     };
@@ -367,8 +366,9 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
       l.limit = sr.danger_zone;
       l.unit = "m";
       l.status = CheckStatus::warn;
-      l.reason = gov_text + " reaches past the floor's end at " + num(sr.geometry.floor_length) +
-                 " m from the toe: the zone's end is extrapolated, not simulated; extend the "
+      const auto [floor, zone] = compared_texts(sr.geometry.floor_length, sr.danger_zone, "m");
+      l.reason = "RD_gov = " + zone + " (" + row.rd_gov.how + ") reaches past the floor's end at " +
+                 floor + " from the toe: the zone's end is extrapolated, not simulated; extend the "
                  "section to simulate it" + fit_doubt;
       d.checks.push_back(std::move(l));
     }

@@ -58,7 +58,7 @@ lxw_format* Report::number(std::string_view kind, int align) {
 }
 
 lxw_format* Report::check_number(const std::string& unit, double v, int align) {
-  return number(format_key(check_number_kind(unit, v)), align);
+  return number(design::format_key(design::check_number_kind(unit, v)), align);
 }
 
 lxw_format* Report::heading() {

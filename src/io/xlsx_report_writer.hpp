@@ -31,7 +31,7 @@
 
 #include <fmt/format.h>
 
-#include "pierre/io/number_kind.hpp"
+#include "pierre/design/number_kind.hpp"
 #include "pierre/io/report_data.hpp"
 #include "pierre/io/report_template.hpp"
 

@@ -313,3 +313,21 @@ TEST(BarrierCheckLines, AMissingCapacityFailsOnlyWhenTheCandidateDeclaresAnother
 }
 
 }  // namespace
+
+namespace {
+
+// A reason compares the value and the limit in the decimals their cells show (h_i 4.29 beside
+// the cell 4.29, not 4.287), and with more where those would print a difference as equality.
+TEST(BarrierCheckLines, ReasonsCompareInTheDecimalsOfTheCells) {
+  auto d = base();
+  d.h_i = 4.28712;
+  d.spec.candidate->height = 4.0;
+  d.MEL_req_kJ = 2000.04;  // the candidate's MEL is 2000: a FAIL by 0.04 kJ
+  const auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "height.interception").reason, "height 4.00 m < h_i 4.29 m");
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::fail);
+  EXPECT_EQ(line(lines, "energy.mel").reason, "candidate MEL 2000.00 kJ < required 2000.04 kJ");
+  EXPECT_EQ(line(lines, "energy.sel").reason, "candidate SEL 1300.0 kJ >= required 1250.0 kJ");
+}
+
+}  // namespace

@@ -112,6 +112,10 @@ TEST(QuarryZones, WorkAreasInsideAndOutsideTheDangerZone) {
   EXPECT_DOUBLE_EQ(road->value, 50);
   EXPECT_DOUBLE_EQ(road->limit, 95.05);
   EXPECT_EQ(road->unit, "m");
+  // The reason in the decimals of the value and limit cells.
+  EXPECT_EQ(road->reason, "50.00 m from the toe is inside the danger zone: RD_gov = 95.05 m (P95 4.75 H)");
+  EXPECT_EQ(crusher->reason,
+            "120.00 m from the toe is outside the danger zone: RD_gov = 95.05 m (P95 4.75 H)");
   EXPECT_TRUE(any_failure(d.checks));
 }
 
@@ -204,6 +208,10 @@ TEST(QuarryZones, DangerZonePastTheFloorWarns) {
     EXPECT_DOUBLE_EQ(extent->value, 90.0);
     EXPECT_NEAR(extent->limit, 95.05, 1e-9);
     EXPECT_NE(extent->reason.find("extrapolated"), std::string::npos) << extent->reason;
+    EXPECT_EQ(extent->reason.rfind("RD_gov = 95.05 m (P95 ", 0), 0u) << extent->reason;
+    EXPECT_NE(extent->reason.find(") reaches past the floor's end at 90.00 m from the toe"),
+              std::string::npos)
+        << extent->reason;
   }
   const CheckLine* fine = find(*out.design, "Long", "zone.yard");
   ASSERT_TRUE(fine);

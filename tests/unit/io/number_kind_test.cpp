@@ -7,13 +7,13 @@
 #include <string>
 #include <utility>
 
-#include "pierre/io/number_kind.hpp"
+#include "pierre/design/number_kind.hpp"
 #include "pierre/io/report_template.hpp"
 
 namespace {
 
-using pierre::io::NumberKind;
-using pierre::io::number_cell;
+using pierre::design::NumberKind;
+using pierre::design::number_cell;
 
 const std::filesystem::path kTemplate = PIERRE_SOURCE_DIR "/templates/report.toml";
 
@@ -44,7 +44,7 @@ TEST(NumberKind, TheConsoleRoundsAsTheShippedReportLayout) {
       {NumberKind::small_percent, 0.00217}, {NumberKind::scientific, 5.4e-19},
       {NumberKind::parameter, 0.511432}};
   for (const auto& [kind, v] : kinds) {
-    const std::string key(pierre::io::format_key(kind));
+    const std::string key(pierre::design::format_key(kind));
     const std::string code = t.get("formats", key);
     EXPECT_EQ(text_decimals(number_cell(v, kind)), format_decimals(code))
         << key << ": the console prints " << number_cell(v, kind) << ", the report's format is "
@@ -57,7 +57,7 @@ TEST(NumberKind, TheConsoleRoundsAsTheShippedReportLayout) {
 }
 
 TEST(NumberKind, ACheckLineIsRoundedByItsUnit) {
-  using pierre::io::check_number_kind;
+  using pierre::design::check_number_kind;
   EXPECT_EQ(check_number_kind("kJ", 1571.9), NumberKind::energy);
   EXPECT_EQ(check_number_kind("m", 5.29), NumberKind::length);
   EXPECT_EQ(check_number_kind("m/s", 26.3), NumberKind::speed);

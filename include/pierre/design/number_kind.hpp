@@ -1,12 +1,14 @@
-// How a number of the results is rounded, the same on the console as in report.xlsx: each kind
-// is a key of the report layout's [formats] (templates/report.toml), and the console writes it
-// with the decimals of the shipped layout's format ("0.00" m/s: 22.66 m/s in both places).
+// How a number of the results is rounded, the same on the console, in report.xlsx and in the
+// reasons of the check lines: each kind is a key of the report layout's [formats]
+// (templates/report.toml), and text is written with the decimals of the shipped layout's format
+// ("0.00" m/s: 22.66 m/s in all three places). Pure text arithmetic, no I/O.
 #pragma once
 
 #include <string>
 #include <string_view>
+#include <utility>
 
-namespace pierre::io {
+namespace pierre::design {
 
 enum class NumberKind {
   count,          // a whole number (trajectories, an energy class)
@@ -28,5 +30,12 @@ NumberKind check_number_kind(std::string_view unit, double v);
 // v as the console prints it: the shipped layout's decimals of `kind`, right-aligned in
 // `width` ("-" for NaN, "beyond" for +inf: a zone that reaches past the profile's end).
 std::string number_cell(double v, NumberKind kind, int width = 0);
+// s with spaces before it to make `width` characters (bytes: the texts above are ASCII).
+std::string right_aligned(std::string s, int width);
 
-}  // namespace pierre::io
+// A value and a limit compared in a check line's reason, each with its unit ("5.30 m", "1309.9
+// kJ"), in the decimals of the unit's kind, or more where those would print two different
+// numbers alike ("1000.00 kJ < 1000.04 kJ", not "1000.0 kJ < 1000.0 kJ").
+std::pair<std::string, std::string> compared_texts(double value, double limit, std::string_view unit);
+
+}  // namespace pierre::design
