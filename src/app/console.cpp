@@ -76,7 +76,6 @@ void print_wrapped(std::FILE* out, std::string_view lead, std::string_view text)
   fmt::print(out, "{}\n", line);
 }
 
-
 }  // namespace
 
 std::string duration_text(double seconds) {

@@ -47,42 +47,43 @@ std::string right_aligned(std::string s, int width) {
   return s;
 }
 
+// The decimals of the shipped layout's formats (a test holds them together): "#,##0" count,
+// "0.00" speed and length, "#,##0.0" energy, "0.0000" parameter, "0.00E+00" scientific (of the
+// mantissa), "0.00000" small_percent (scientific below 0.00001 %).
+int decimals_of(NumberKind kind) {
+  switch (kind) {
+    case NumberKind::count: return 0;
+    case NumberKind::energy: return 1;
+    case NumberKind::speed:
+    case NumberKind::length:
+    case NumberKind::scientific: return 2;
+    case NumberKind::parameter: return 4;
+    case NumberKind::small_percent: return 5;
+  }
+  return 4;
+}
+
 std::string number_cell(double v, NumberKind kind, int width) {
   if (std::isnan(v)) return right_aligned("-", width);
   if (std::isinf(v)) return right_aligned(v > 0 ? "beyond" : "-inf", width);
-  // The decimals of the shipped layout's formats (a test holds them together): "#,##0" count,
-  // "0.00" speed and length, "#,##0.0" energy, "0.0000" parameter, "0.00E+00" scientific,
-  // "0.00000" small_percent (scientific below 0.00001 %).
-  switch (kind) {
-    case NumberKind::count: return printed(v, 0, false, width);
-    case NumberKind::speed:
-    case NumberKind::length: return printed(v, 2, false, width);
-    case NumberKind::energy: return printed(v, 1, false, width);
-    case NumberKind::small_percent: return printed(v, v != 0 && std::abs(v) < 1e-5 ? 2 : 5, v != 0 && std::abs(v) < 1e-5, width);
-    case NumberKind::scientific: return printed(v, 2, true, width);
-    case NumberKind::parameter: return printed(v, 4, false, width);
-  }
-  return printed(v, 4, false, width);
+  const bool scientific = kind == NumberKind::scientific ||
+                          (kind == NumberKind::small_percent && v != 0 && std::abs(v) < 1e-5);
+  return printed(v, scientific ? 2 : decimals_of(kind), scientific, width);
 }
 
 std::pair<std::string, std::string> compared_texts(double value, double limit,
                                                    std::string_view unit) {
-  auto trimmed = [](std::string s) { return s.substr(s.find_first_not_of(' ')); };
-  const NumberKind kv = check_number_kind(unit, value), kl = check_number_kind(unit, limit);
-  std::string a = trimmed(number_cell(value, kv)), b = trimmed(number_cell(limit, kl));
-  // Alike in print but not in value: fixed decimals, more of them until they differ.
+  const NumberKind kind = check_number_kind(unit, value);
+  std::string a = number_cell(value, kind), b = number_cell(limit, check_number_kind(unit, limit));
+  // Alike in print but not in value: fixed decimals, one more at a time until they differ.
   if (a == b && value != limit && std::isfinite(value) && std::isfinite(limit))
-    for (int decimals = 1; decimals <= 9 && a == b; ++decimals) {
-      const int more = (kv == NumberKind::energy ? 1 : kv == NumberKind::count ? 0 : 2) + decimals;
+    for (int more = decimals_of(kind) + 1; more <= 12 && a == b; ++more) {
       a = printed(value, more, false, 0);
       b = printed(limit, more, false, 0);
     }
-  if (!unit.empty() && unit != "%") {
+  if (!unit.empty()) {
     a += " " + std::string(unit);
     b += " " + std::string(unit);
-  } else if (unit == "%") {
-    a += " %";
-    b += " %";
   }
   return {a, b};
 }

@@ -30,6 +30,8 @@ NumberKind check_number_kind(std::string_view unit, double v);
 // v as the console prints it: the shipped layout's decimals of `kind`, right-aligned in
 // `width` ("-" for NaN, "beyond" for +inf: a zone that reaches past the profile's end).
 std::string number_cell(double v, NumberKind kind, int width = 0);
+// The decimals `kind` is printed with (of the mantissa for scientific).
+int decimals_of(NumberKind kind);
 // s with spaces before it to make `width` characters (bytes: the texts above are ASCII).
 std::string right_aligned(std::string s, int width);
 
