@@ -1,5 +1,6 @@
 #include "pierre/design/number_kind.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -43,8 +44,8 @@ std::string printed(double v, int decimals, bool scientific, int width) {
 }  // namespace
 
 std::string right_aligned(std::string s, int width) {
-  if (static_cast<int>(s.size()) < width) s.insert(0, static_cast<std::size_t>(width) - s.size(), ' ');
-  return s;
+  const auto n = static_cast<std::size_t>(std::max(width, 0));
+  return s.size() < n ? std::string(n - s.size(), ' ') + s : s;
 }
 
 // The decimals of the shipped layout's formats (a test holds them together): "#,##0" count,
@@ -81,9 +82,9 @@ std::pair<std::string, std::string> compared_texts(double value, double limit,
       a = printed(value, more, false, 0);
       b = printed(limit, more, false, 0);
     }
-  if (!unit.empty()) {
-    a += " " + std::string(unit);
-    b += " " + std::string(unit);
+  if (!unit.empty()) {  // (append: GCC 12's -Wrestrict misreads " " + std::string)
+    a.append(" ").append(unit);
+    b.append(" ").append(unit);
   }
   return {a, b};
 }
