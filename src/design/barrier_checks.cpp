@@ -59,7 +59,7 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
                                 (std::string(name) == "MEL" ? "mel" : "sel") +
                                 ", or an energy_class whose " + name + " the class table holds)";
     if (!declares_energy)
-      set(l, CheckStatus::warn, missing + ": required " + compared_texts(required, required, "kJ").first +
+      set(l, CheckStatus::warn, missing + ": required " + quantity_text(required, "kJ") +
                                     " not compared");
     else
       set(l, CheckStatus::fail,

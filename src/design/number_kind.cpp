@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace pierre::design {
 
@@ -33,6 +34,18 @@ NumberKind check_number_kind(std::string_view unit, double v) {
 
 namespace {
 
+// s with spaces before it to make `width` characters (bytes: the texts here are ASCII).
+std::string right_aligned(std::string s, int width) {
+  const auto n = static_cast<std::size_t>(std::max(width, 0));
+  return s.size() < n ? std::string(n - s.size(), ' ') + s : s;
+}
+
+// text + " " + unit (append: GCC 12's -Wrestrict misreads " " + std::string under -Werror).
+std::string with_unit(std::string text, std::string_view unit) {
+  if (!unit.empty()) text.append(" ").append(unit);
+  return text;
+}
+
 // printf's %.<decimals>f or %.<decimals>E (not the global locale's, as number_text), padded on
 // the left to `width`.
 std::string printed(double v, int decimals, bool scientific, int width) {
@@ -42,11 +55,6 @@ std::string printed(double v, int decimals, bool scientific, int width) {
 }
 
 }  // namespace
-
-std::string right_aligned(std::string s, int width) {
-  const auto n = static_cast<std::size_t>(std::max(width, 0));
-  return s.size() < n ? std::string(n - s.size(), ' ') + s : s;
-}
 
 // The decimals of the shipped layout's formats (a test holds them together): "#,##0" count,
 // "0.00" speed and length, "#,##0.0" energy, "0.0000" parameter, "0.00E+00" scientific (of the
@@ -72,6 +80,10 @@ std::string number_cell(double v, NumberKind kind, int width) {
   return printed(v, scientific ? 2 : decimals_of(kind), scientific, width);
 }
 
+std::string quantity_text(double v, std::string_view unit) {
+  return with_unit(number_cell(v, check_number_kind(unit, v)), unit);
+}
+
 std::pair<std::string, std::string> compared_texts(double value, double limit,
                                                    std::string_view unit) {
   const NumberKind kind = check_number_kind(unit, value);
@@ -82,11 +94,7 @@ std::pair<std::string, std::string> compared_texts(double value, double limit,
       a = printed(value, more, false, 0);
       b = printed(limit, more, false, 0);
     }
-  if (!unit.empty()) {  // (append: GCC 12's -Wrestrict misreads " " + std::string)
-    a.append(" ").append(unit);
-    b.append(" ").append(unit);
-  }
-  return {a, b};
+  return {with_unit(std::move(a), unit), with_unit(std::move(b), unit)};
 }
 
 }  // namespace pierre::design

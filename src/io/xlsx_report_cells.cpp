@@ -197,10 +197,7 @@ void Report::merged(lxw_worksheet* ws, Row r, Col c0, Col c1, const std::string&
 
 void Report::paragraph(lxw_worksheet* ws, Row r, Col c0, Col c1, double chars,
                        const std::string& s, lxw_format* f) {
-  if (c1 > c0)
-    merged(ws, r, c0, c1, s, f);
-  else
-    text(ws, r, c0, s, f);
+  merged(ws, r, c0, c1, s, f);
   fit_row(ws, r, {{&s, chars}});
 }
 

@@ -32,8 +32,9 @@ NumberKind check_number_kind(std::string_view unit, double v);
 std::string number_cell(double v, NumberKind kind, int width = 0);
 // The decimals `kind` is printed with (of the mantissa for scientific).
 int decimals_of(NumberKind kind);
-// s with spaces before it to make `width` characters (bytes: the texts above are ASCII).
-std::string right_aligned(std::string s, int width);
+
+// v with its unit ("5.29 m", "1309.9 kJ"), in the decimals of the unit's kind.
+std::string quantity_text(double v, std::string_view unit);
 
 // A value and a limit compared in a check line's reason, each with its unit ("5.30 m", "1309.9
 // kJ"), in the decimals of the unit's kind, or more where those would print two different
