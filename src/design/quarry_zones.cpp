@@ -440,7 +440,53 @@ CheckLine sample_size_line(const QuarryRow& row, const QuarryRuleSet& rules) {
   return l;
 }
 
-// A row's own checks: sample.size, fit.ID and fit.RD.
+// observed.ID and observed.RD of a row with observed values: the field's P95 against the
+// governing distance. The thesis validates the model on exactly these values (Tables 6.2,
+// 6.3, calculated beside observed); a zone drawn shorter than what was seen at the face
+// rests on a calibration the field contradicts, whatever the fits say.
+void observed_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rules) {
+  const std::pair<const char*, const std::optional<ObservedComparison>*> kinds[] = {
+      {"ID", &row.observed_id}, {"RD", &row.observed_rd}};
+  for (const auto& [name, obs] : kinds) {
+    if (!*obs) continue;
+    const std::string what(name);
+    const GoverningDistance& gov = what == "ID" ? row.id_gov : row.rd_gov;
+    CheckLine l = line(row.name, "observed." + what, rules);
+    l.what = "observed P95 of " + what + " (field values) vs " + what +
+             "_gov: does the simulation reach what was seen";
+    l.unit = "m";
+    const ObservedComparison& o = **obs;
+    const std::string n = o.count > 0 ? " (n = " + std::to_string(o.count) + ")" : "";
+    // Judged in /H, where each observation carries its own face's H, and shown in metres at the
+    // row's H: for observations at this face, the observed P95 itself.
+    l.value = o.p95_h * row.height;
+    l.limit = gov.value_h * row.height;
+    if (std::isnan(o.p95_h) || std::isnan(gov.value_h)) {
+      l.status = CheckStatus::not_applicable;
+      l.reason = std::isnan(o.p95_h) ? "no observed P95" : "no simulated " + what + " sample";
+    } else if (std::isinf(gov.value_h)) {
+      l.status = CheckStatus::pass;
+      l.reason = what + "_gov is beyond the profile (" + gov.how + ")";
+    } else {
+      const bool covered = at_least(gov.value_h, o.p95_h);
+      const auto [seen, zone] = compared_texts(l.value, l.limit, "m");
+      l.status = covered ? CheckStatus::pass : CheckStatus::warn;
+      l.reason = "observed P95 " + seen + n + (covered ? " <= " : " > ") + what + "_gov " + zone +
+                 " (" + gov.how + ")" +
+                 (covered ? ""
+                          : std::string(what == "ID" ? ": blocks at the face first struck the floor"
+                                                     : ": blocks at the face ran out") +
+                                " farther from the toe than the simulation has them; check the "
+                                "materials and roughness against the observations before "
+                                "relying on the " +
+                                (what == "ID" ? "first-impact zone" : "danger zone"));
+    }
+    d.checks.push_back(std::move(l));
+  }
+}
+
+// A row's own checks: sample.size, fit.ID, fit.RD, and observed.ID and observed.RD with
+// observed values.
 void row_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rules) {
   d.checks.push_back(sample_size_line(row, rules));
   for (auto [id, st] : {std::pair<std::string, const DistanceStatistics*>{"fit.ID", &row.id},
@@ -461,6 +507,7 @@ void row_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rule
     }
     d.checks.push_back(std::move(l));
   }
+  observed_checks(d, row, rules);
 }
 
 // The averages over the rows (thesis Tables 6.2 and 6.3, last line).

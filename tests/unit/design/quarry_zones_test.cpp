@@ -442,6 +442,60 @@ TEST(QuarryZones, FitChecks) {
   EXPECT_FALSE(any_failure(good.design->checks));
 }
 
+// The field's P95 against the governing distance: a zone drawn shorter than what was seen
+// warns; one that covers it passes; a summary without a P95 has nothing to judge.
+TEST(QuarryZones, ObservedValuesAgainstTheGoverningDistances) {
+  auto s = section("Face A", one_to(100));  // RD_gov = P95 of 1..100 = 95.05 m; ID = RD / 5
+  s.observed.rd.p95 = 96;                     // m, a printed summary value
+  s.observed.id.metres = one_to(10);          // raw: P95 = 1 + 9 · 0.95 = 9.55 m
+  const auto out = design_quarry({s}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const CheckLine* rd = find(*out.design, "Face A", "observed.RD");
+  const CheckLine* id = find(*out.design, "Face A", "observed.ID");
+  ASSERT_TRUE(rd && id);
+  EXPECT_EQ(rd->status, CheckStatus::warn);
+  EXPECT_DOUBLE_EQ(rd->value, 96.0);
+  EXPECT_DOUBLE_EQ(rd->limit, 95.05);
+  EXPECT_EQ(rd->unit, "m");
+  EXPECT_EQ(rd->reason,
+            "observed P95 96.00 m > RD_gov 95.05 m (P95 4.75 H): blocks at the face ran out farther "
+            "from the toe than the simulation has them; check the materials and roughness against "
+            "the observations before relying on the danger zone");
+  EXPECT_EQ(id->status, CheckStatus::pass);
+  EXPECT_DOUBLE_EQ(id->value, 9.55);
+  EXPECT_DOUBLE_EQ(id->limit, 95.05 / 5);
+  EXPECT_EQ(id->reason, "observed P95 9.55 m (n = 10) <= ID_gov 19.01 m (P95 0.95 H)");
+  // A WARN, never a FAIL: the exit code stays with the zones.
+  EXPECT_FALSE(any_failure(out.design->checks));
+
+  // A group of a 20 m and a 10 m face (row H 15 m) is judged in /H, each observation over its
+  // own face's H. Pooled /H runouts k/20 and k/10 (k = 1..100): P95 = 9.0 + 0.05 · 0.1 =
+  // 9.005 H = 135.075 m. 95 m seen under the 10 m face is fewer metres than that, but 9.5 H:
+  // beyond the zone, and shown as 9.5 H at the row's H, 142.5 m.
+  auto a = section("Face B1", one_to(100));
+  auto b = section("Face B2", one_to(100), thesis(), 10);
+  a.spec.group = b.spec.group = "B";
+  b.observed.rd.metres = {95, 95};
+  const auto group = design_quarry({a, b}, 1);
+  ASSERT_TRUE(group.design) << group.error;
+  EXPECT_DOUBLE_EQ(group.design->rows[0].rd_gov.value_h, 9.005);
+  const CheckLine* scaled = find(*group.design, "B", "observed.RD");
+  ASSERT_TRUE(scaled);
+  EXPECT_EQ(scaled->status, CheckStatus::warn);
+  EXPECT_DOUBLE_EQ(scaled->value, 142.5);
+  EXPECT_DOUBLE_EQ(scaled->limit, 9.005 * 15);
+  EXPECT_FALSE(find(*group.design, "B", "observed.ID"));  // none observed: no line
+
+  auto u = section("Face C", one_to(100));
+  u.observed.rd.p50 = 5;  // a summary without its P95
+  const auto part = design_quarry({u}, 1);
+  ASSERT_TRUE(part.design) << part.error;
+  const CheckLine* none = find(*part.design, "Face C", "observed.RD");
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none->status, CheckStatus::not_applicable);
+  EXPECT_EQ(none->reason, "no observed P95");
+}
+
 TEST(QuarryZones, GroupsPoolSectionsAndAveragesTakeRows) {
   auto a = section("Kloech a", one_to(50));
   auto b = section("Kloech b", one_to(50));
