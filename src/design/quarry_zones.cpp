@@ -452,8 +452,7 @@ void observed_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet&
     const std::string what(name);
     const GoverningDistance& gov = what == "ID" ? row.id_gov : row.rd_gov;
     CheckLine l = line(row.name, "observed." + what, rules);
-    l.what = "observed P95 of " + what + " (field values) vs " + what +
-             "_gov: does the simulation reach what was seen";
+    l.what = "observed P95 of " + what + " (field values) vs " + what + "_gov";
     l.unit = "m";
     const ObservedComparison& o = **obs;
     const std::string n = o.count > 0 ? " (n = " + std::to_string(o.count) + ")" : "";
