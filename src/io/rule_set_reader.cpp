@@ -254,9 +254,10 @@ design::EnergyClassTable load_energy_classes_file(const fs::path& file) {
     design::EnergyClass e;
     const auto num = c.integer("class");
     if (!num) c.missing("class", "the class number, an integer");
+    c.check("class", *num >= 0 && *num < 1000, "a class number from 0 to 999");
     e.number = static_cast<int>(*num);
     if (!t.classes.empty())
-      c.check("class", e.number > t.classes.back().number && *num < 1000,
+      c.check("class", e.number > t.classes.back().number,
               fmt::format("a class number above the previous one ({})", t.classes.back().number));
     e.mel_kJ = positive(c, "mel", "the MEL in kJ (> 0)");
     if (!t.classes.empty())
@@ -264,6 +265,17 @@ design::EnergyClassTable load_energy_classes_file(const fs::path& file) {
               fmt::format("an MEL >= the previous class's ({} kJ)", t.classes.back().mel_kJ));
     e.sel_kJ = c.has("sel") ? positive(c, "sel", "the SEL in kJ (> 0)")
                             : std::numeric_limits<double>::quiet_NaN();
+    // A kit's service energy is a share of its maximum (ETAG 027: a third), and rises with it.
+    if (c.has("sel")) {
+      c.check("sel", e.sel_kJ <= e.mel_kJ,
+              fmt::format("an SEL <= the class's MEL ({} kJ)", e.mel_kJ));
+      for (auto it = t.classes.rbegin(); it != t.classes.rend(); ++it)
+        if (!std::isnan(it->sel_kJ)) {
+          c.check("sel", e.sel_kJ >= it->sel_kJ,
+                  fmt::format("an SEL >= class {}'s ({} kJ)", it->number, it->sel_kJ));
+          break;
+        }
+    }
     e.open_ended = c.boolean("open_ended").value_or(false);
     if (e.open_ended)
       c.check("open_ended", i + 1 == a->size(), "open_ended = true on the last class only");

@@ -405,4 +405,37 @@ TEST(EnergyClassErrors, OrderAndOpenEnd) {
   }
 }
 
+// Found by fuzzing: an SEL above its class's MEL was taken, and the first class's number was
+// not bounded (2^32 wrapped to class 0, which a candidate then matched).
+TEST(EnergyClassErrors, SelWithinMelAndRisingAndClassNumbersBounded) {
+  TempDir dir;
+  const std::string head = "[rule_set]\nkind = \"energy-classes\"\ntitle = \"t\"\nsource = \"s\"\n";
+  auto error = [&](const std::string& name, const std::string& classes) -> InputError {
+    try {
+      (void)io::load_energy_classes(dir.write(name, head + classes).string(), kRules);
+    } catch (const InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "no InputError for " << name;
+    return InputError("", 0, "", "", "");
+  };
+  const InputError above = error("a.toml", "[[classes]]\nclass = 1\nmel = 250\nsel = 300\n");
+  EXPECT_EQ(above.line(), 8);
+  EXPECT_EQ(above.field(), "classes[0].sel");
+  EXPECT_EQ(above.expected(), "an SEL <= the class's MEL (250 kJ)");
+  const InputError falling = error(
+      "f.toml", "[[classes]]\nclass = 1\nmel = 250\nsel = 85\n[[classes]]\nclass = 2\nmel = 500\n"
+                "[[classes]]\nclass = 3\nmel = 1000\nsel = 80\n");
+  EXPECT_EQ(falling.line(), 15);
+  EXPECT_EQ(falling.expected(), "an SEL >= class 1's (85 kJ)");
+  const InputError wrapped = error("w.toml", "[[classes]]\nclass = 4294967296\nmel = 100\n");
+  EXPECT_EQ(wrapped.line(), 6);
+  EXPECT_EQ(wrapped.field(), "classes[0].class");
+  EXPECT_EQ(wrapped.found(), "4294967296");
+  const InputError negative = error("n.toml", "[[classes]]\nclass = -1\nmel = 100\n");
+  EXPECT_EQ(negative.field(), "classes[0].class");
+  // The shipped table passes all of these.
+  EXPECT_NO_THROW((void)io::load_energy_classes("etag027-classes", kRules));
+}
+
 }  // namespace
