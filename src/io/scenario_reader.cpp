@@ -307,7 +307,18 @@ void read_lines(const TomlTable& top, sim::Scenario& sc, std::vector<InputNote>&
 
 // ---- barriers (design-checks.md §1) ----
 
-design::DesignBlock read_design_block(const TomlTable& t) {
+// The design block's density, where it is given, said when it is not a rock's: the unit slip
+// the blocks' densities are checked for (section_readers.cpp).
+void note_density(const TomlTable& d, double density, std::vector<InputNote>& notes) {
+  if (density >= detail::kRockDensityMin && density <= detail::kRockDensityMax) return;
+  notes.push_back({d.file(), line_of(*d.find("density")), d.field("density"),
+                   fmt::format("the design block's density {:g} kg/m³ is outside the densities of "
+                               "rock ({:g} to {:g} kg/m³): a density is in kg/m³, and 2.65 (t/m³ "
+                               "or g/cm³) makes its energy 1000 times too small",
+                               density, detail::kRockDensityMin, detail::kRockDensityMax)});
+}
+
+design::DesignBlock read_design_block(const TomlTable& t, std::vector<InputNote>& notes) {
   const std::string expected =
       "\"largest\", { percentile = p } (of the block volumes, optional density) or "
       "{ volume = m³, density = kg/m³ }";
@@ -332,6 +343,7 @@ design::DesignBlock read_design_block(const TomlTable& t) {
     if (d->has("density")) {
       b.density = d->required_number("density", "a density > 0 (kg/m³)");
       d->check("density", b.density > 0, "a density > 0 (kg/m³)");
+      note_density(*d, b.density, notes);
     }
     return b;
   }
@@ -340,6 +352,13 @@ design::DesignBlock read_design_block(const TomlTable& t) {
   d->check("volume", b.volume > 0, "a volume > 0 (m³)");
   b.density = d->required_number("density", "a density > 0 (kg/m³) with the volume");
   d->check("density", b.density > 0, "a density > 0 (kg/m³)");
+  // The blocks' own limit and unit slip (section_readers.cpp), for the block designed on.
+  const double mass = b.volume * b.density;
+  d->check("volume", mass <= ModelDefaults::max_block_mass,
+           fmt::format("a design block of at most {:g} kg (here {:g} m³ × density {:g} kg/m³ = "
+                       "{:g} kg; larger is a rock avalanche, beyond a lumped-mass model)",
+                       ModelDefaults::max_block_mass, b.volume, b.density, mass));
+  note_density(*d, b.density, notes);
   return b;
 }
 
@@ -506,7 +525,7 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
     const design::BarrierRuleSet& rules = cached->second.first;
     const design::EnergyClassTable& classes = cached->second.second;
 
-    b.design_block = read_design_block(t);
+    b.design_block = read_design_block(t, out.notes);
     b.free_board_diameter = positive_number(t, "free_board_diameter", "a diameter > 0 (m)");
 
     // Data-quality answers: exactly the questions the rule set asks.

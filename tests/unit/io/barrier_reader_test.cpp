@@ -107,6 +107,30 @@ data_quality = { trajectory = "back-analysed", topography = "low", block_volume 
   EXPECT_DOUBLE_EQ(l.barriers[0].design_block.volume, 1.26);
 }
 
+// A design block's density in t/m³ is noted as the blocks' densities are: its energy would be a
+// thousandth of the real one.
+TEST(BarrierReader, ADesignBlockDensityOutsideRockIsNoted) {
+  TempDir dir;
+  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(R"([[barriers]]
+name = "B"
+line = "L"
+rules = "thesis-2015"
+design_block = { volume = 1.26, density = 2.8 }
+)")), kRules);
+  ASSERT_EQ(l.notes.size(), 1u);
+  EXPECT_EQ(l.notes[0].line, 32);
+  EXPECT_EQ(l.notes[0].field, "barriers[0].design_block.density");
+  EXPECT_EQ(l.notes[0].text.rfind("the design block's density 2.8 kg/m³ is outside the densities of rock", 0), 0u)
+      << l.notes[0].text;
+  const auto ok = io::load_scenario(dir.write("t.toml", with_barrier(R"([[barriers]]
+name = "B"
+line = "L"
+rules = "thesis-2015"
+design_block = { percentile = 90, density = 2700.0 }
+)")), kRules);
+  EXPECT_TRUE(ok.notes.empty());
+}
+
 TEST(BarrierReader, NoBarriersNoVectors) {
   TempDir dir;
   const auto l = io::load_scenario(dir.write("s.toml", test::base()), kRules);
@@ -207,6 +231,10 @@ INSTANTIATE_TEST_SUITE_P(
              "barriers[0].design_block.density", "nothing", "density"},
         Case{"design_block_percentile", kThesis + "design_block = { percentile = 0 }\n", {}, "", 32,
              "barriers[0].design_block.percentile", "0", "(0, 100]"},
+        // Found by fuzzing: { volume = 1e300, density = 1e300 } was read as a block of infinite
+        // mass, where a block of the table that heavy is refused.
+        Case{"design_block_too_heavy", kThesis + "design_block = { volume = 2.0, density = 1e8 }\n", {}, "", 32,
+             "barriers[0].design_block.volume", "2.0", "here 2 m³ × density 1e+08 kg/m³ = 2e+08 kg"},
         Case{"free_board_negative", kThesis + "free_board_diameter = -1.0\n", {}, "", 32,
              "barriers[0].free_board_diameter", "-1.0", "> 0"},
         Case{"class_unknown", kThesis + "[barriers.candidate]\nenergy_class = 9\n", {}, "", 33,
