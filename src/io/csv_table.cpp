@@ -133,13 +133,22 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
   // Excel's "Unicode text" export is UTF-16: two bytes a character, half of them zero here.
   const bool utf16 = text.rfind("\xFF\xFE", 0) == 0 || text.rfind("\xFE\xFF", 0) == 0;
-  if (utf16 || text.find('\0') != std::string::npos)
-    throw InputError(file, 1, "file",
+  const std::size_t nul = text.find('\0');
+  if (utf16 || nul != std::string::npos) {
+    // Where the first NUL byte is: a UTF-16 text has one in its first line, a stray one (a
+    // broken copy, a binary file's tail) is named at its own line.
+    const auto before = std::string_view(text).substr(0, utf16 ? 0 : nul);
+    const long line = 1 + static_cast<long>(std::count(before.begin(), before.end(), '\n'));
+    const std::size_t column = before.size() - (before.rfind('\n') + 1) + 1;  // npos + 1 = 0
+    throw InputError(file, line, "file",
                      utf16 ? "a UTF-16 text (it starts with the byte-order mark of UTF-16)"
-                           : "zero bytes (a UTF-16 text, or not a text at all)",
+                           : fmt::format("a NUL byte (code 0) at column {} (a UTF-16 text, a binary "
+                                         "file or a damaged copy)",
+                                         column),
                      fmt::format("a CSV file in UTF-8 with header {} (in Excel: Save As, "
                                  "\"CSV UTF-8\")",
                                  expected_header));
+  }
 
   // The line ends of old Mac spreadsheets ("CSV (Macintosh)"): a CR alone. A CR before an LF
   // is the end of a Windows line and is trimmed with the line.
@@ -150,6 +159,9 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
   t.file = file;
   long line_no = 0;
   std::size_t pos = 0;
+  std::size_t comments = 0;      // comment lines
+  std::string header_text;       // the header line as written
+  std::size_t header_cells = 0;  // its cells, with the empty ones a spreadsheet adds
   auto all_empty = [](const std::vector<std::string>& cells, std::size_t from) {
     return std::all_of(cells.begin() + static_cast<std::ptrdiff_t>(from), cells.end(),
                        [](const std::string& c) { return c.empty(); });
@@ -160,13 +172,19 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
     const std::string_view line = trim(std::string_view(text).substr(pos, nl - pos));
     pos = nl + 1;
     ++line_no;
-    if (line.empty() || line.front() == '#') continue;
+    if (line.empty()) continue;
+    if (line.front() == '#') {
+      ++comments;
+      continue;
+    }
     std::vector<std::string> cells = split(line);
     // A spreadsheet writes every row as wide as its widest: ",,," for a row left empty, and
     // empty cells after the last column. Both say nothing.
     if (all_empty(cells, 0)) continue;
     if (t.header.empty()) {
       t.header_line = line_no;
+      header_text = line;
+      header_cells = cells.size();
       while (cells.back().empty()) cells.pop_back();  // (not all are empty)
       for (std::string& h : cells) {
         if (auto bad = unwritable_text(h))
@@ -219,16 +237,31 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
     }
     if (cells.size() > t.header.size() && all_empty(cells, t.header.size()))
       cells.resize(t.header.size());
-    if (cells.size() > t.header.size())
-      throw InputError(file, line_no, "row", fmt::format("{} columns", cells.size()),
-                       fmt::format("{} columns ({})", t.header.size(), join(t.header)));
+    if (cells.size() > t.header.size()) {
+      // The first value past the header's columns. Where the header has an empty name there
+      // ("x,z," for "x,z,material") the fault may be the header's, not the row's: say both.
+      std::size_t k = t.header.size();
+      while (cells[k].empty()) ++k;  // (not all are empty: see above)
+      const std::string unnamed =
+          header_cells > k ? fmt::format(", or a name for column {} in the header (line {}: \"{}\")",
+                                         k + 1, t.header_line, header_text)
+                           : "";
+      throw InputError(file, line_no, "row",
+                       fmt::format("{} columns (column {} holds \"{}\")", cells.size(), k + 1,
+                                   cells[k]),
+                       fmt::format("{} column{} ({}){}", t.header.size(),
+                                   t.header.size() == 1 ? "" : "s", join(t.header), unnamed));
+    }
     for (std::size_t c = 0; c < cells.size(); ++c)
       if (auto bad = unwritable_text(cells[c]))
         throw InputError(file, line_no, t.header[c], *bad, std::string(kWritableText));
     t.rows.push_back({line_no, std::move(cells)});
   }
   if (t.header.empty())
-    throw InputError(file, 0, "header", "an empty file",
+    throw InputError(file, 0, "header",
+                     comments > 0 ? fmt::format("only comment lines ({} starting with #), no header",
+                                                comments)
+                                  : std::string("an empty file"),
                      fmt::format("a header line {} and data rows", expected_header));
   return t;
 }

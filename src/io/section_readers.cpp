@@ -139,9 +139,6 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
       has_file ? read_profile_csv(*prof->file_path("file", "CSV file with header x,z,material"))
                : read_inline_points(*prof);
 
-  // Beyond a million kilometres the geometry's squares overflow (a segment 1e200 m long has an
-  // infinite length) and the error that followed named the wrong cause. No section comes near.
-  constexpr double kMaxCoordinate = 1e9;
   for (const Vertex& v : vs)
     for (const auto& [value, column] : {std::pair{v.p.x, "x"}, std::pair{v.p.z, "z"}})
       if (!(std::abs(value) <= kMaxCoordinate))
@@ -199,7 +196,28 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
                      fmt::format("a profile of vertical segments only, at x = {} m", v0.p.x),
                      "a profile that runs across a horizontal extent (the ground the blocks "
                      "fall onto and the chainages are measured along)");
-  if (down >= up)
+  if (down >= up) {
+    // Listed the wrong way round, the profile runs back in x from its first segment on. When
+    // it first runs forward, the vertex behind its predecessor is the likelier fault (an x
+    // mistyped, 0 for 90): named as the overhang note would have.
+    std::size_t back = vs.size();
+    bool forward = false;  // before `back`
+    for (std::size_t i = 0; i + 1 < vs.size() && back == vs.size(); ++i) {
+      if (vs[i + 1].p.x > vs[i].p.x) forward = true;
+      if (vs[i + 1].p.x < vs[i].p.x) back = i + 1;
+    }
+    if (forward && back < vs.size()) {
+      const Vertex &v = vs[back], &before = vs[back - 1];
+      throw InputError(
+          v.file, v.line, has_file ? std::string("x") : v.field,
+          fmt::format("x = {} m after x = {} m ({}): a segment back in x, which with the others "
+                      "leaves the air below {:.0f} % of the profile's horizontal length",
+                      v.p.x, before.p.x,
+                      has_file ? fmt::format("line {}", before.line) : before.field,
+                      100 * down / (up + down)),
+          "x values that increase from the source end (a segment back in x is an overhang, "
+          "with the air below it; most of the profile cannot be one)");
+    }
     throw InputError(
         v0.file, v0.line, v0.field,
         fmt::format("a profile from x = {} to {} m with the air below {:.0f} % of its horizontal "
@@ -208,6 +226,7 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
         "the air above most of the ground: the air is on the left of the walking direction, so "
         "list the vertices from the source end of a slope that descends towards +x (mirror the "
         "x coordinates of one that descends towards -x)");
+  }
   note_runs_back_in_x(vs, has_file, notes);
   return std::move(*profile);
 }
@@ -260,11 +279,15 @@ struct GroupSource {  // where a block group was written, for messages
   std::string field;  // of the id
 };
 
-// The expectation of a block heavier than the model's limit (given by mass or by volume).
-std::string block_mass_limit() {
-  return fmt::format("a block of at most {:g} kg (volume × density; larger is a rock avalanche, "
-                     "beyond a lumped-mass model)",
-                     ModelDefaults::max_block_mass);
+// The expectation of a block heavier than the model's limit. Given by volume, it shows the
+// density that made the mass (a density typed in t/m³ or g/cm³ times 1000 is the usual cause).
+std::string block_mass_limit(const BlockGroup& g, bool by_volume) {
+  return fmt::format("a block of at most {:g} kg ({}larger is a rock avalanche, beyond a "
+                     "lumped-mass model)",
+                     ModelDefaults::max_block_mass,
+                     by_volume ? fmt::format("here {:g} m³ × density {:g} kg/m³ = {:g} kg; ",
+                                             g.volume, g.density, g.mass)
+                               : std::string());
 }
 
 void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
@@ -312,7 +335,7 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
     }
     if (!(g.mass <= ModelDefaults::max_block_mass))
       throw InputError(file, r.line, has_mass ? "mass" : "volume",
-                       r.cells[has_mass ? *c_mass : *c_vol], block_mass_limit());
+                       r.cells[has_mass ? *c_mass : *c_vol], block_mass_limit(g, !has_mass));
     g.shape_min = present(r, c_smin) ? t.number(r, *c_smin) : shape.min;
     g.shape_max = present(r, c_smax) ? t.number(r, *c_smax) : shape.max;
     if (!shape_ok(g.shape_min, g.shape_max))
@@ -414,7 +437,8 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
         g.volume = *volume;
         g.mass = g.volume * g.density;
       }
-      t.check(mass ? "mass" : "volume", g.mass <= ModelDefaults::max_block_mass, block_mass_limit());
+      t.check(mass ? "mass" : "volume", g.mass <= ModelDefaults::max_block_mass,
+              block_mass_limit(g, !mass));
       const ShapeRange s = read_shape(t).value_or(shape);
       g.shape_min = s.min;
       g.shape_max = s.max;
@@ -515,6 +539,8 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     t.check("x", s.position.x >= sc.profile.x_min() && s.position.x <= sc.profile.x_max(),
             "an x " + extent(sc.profile));
     s.position.z = t.required_number("z", "a number (m)");
+    t.check("z", std::abs(s.position.z) <= kMaxCoordinate,
+            "a height of at most 1e9 m in size (z in metres, as the profile's)");
     s.velocity.x = t.number("vx", 0.0);
     s.velocity.z = t.number("vz", 0.0);
     s.omega = t.number("omega", 0.0);

@@ -40,6 +40,11 @@ void read_blocks(const TomlTable& parent, std::vector<BlockGroup>& groups,
                  std::vector<model::Block>& blocks, std::string_view table_path,
                  std::vector<InputNote>& notes);
 
+// The largest coordinate in size (m). Beyond a million kilometres the geometry's squares
+// overflow (a segment 1e200 m long has an infinite length) and the error that followed named
+// the wrong cause. No section comes near.
+inline constexpr double kMaxCoordinate = 1e9;
+
 // Densities of rock (kg/m³): from porous tuff and chalk (~1500) to the heaviest ores in a quarry
 // face (~4000). Outside, a density in t/m³ or g/cm³ (2.65) is far likelier than a rock.
 inline constexpr double kRockDensityMin = 1500.0;

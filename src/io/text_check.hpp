@@ -14,12 +14,14 @@
 namespace pierre::io::detail {
 
 // What is wrong with `s` for the found-value of an InputError, or nothing when it may be written.
-inline std::optional<std::string> unwritable_text(std::string_view s) {
+// `place` names a byte's place in `s`: "position" in a cell, "column" in a line.
+inline std::optional<std::string> unwritable_text(std::string_view s,
+                                                  std::string_view place = "position") {
   for (std::size_t i = 0; i < s.size();) {
     const auto b = static_cast<unsigned char>(s[i]);
     if (b < 0x80) {
       if ((b < 0x20 && b != '\t' && b != '\n' && b != '\r') || b == 0x7F)
-        return fmt::format("a text with the control character U+{:04X}", b);
+        return fmt::format("a text with the control character U+{:04X} at {} {}", b, place, i + 1);
       ++i;
       continue;
     }
@@ -36,8 +38,8 @@ inline std::optional<std::string> unwritable_text(std::string_view s) {
     const char32_t lowest = len == 4 ? 0x10000 : len == 3 ? 0x800 : 0x80;
     ok = ok && cp >= lowest && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF);
     if (!ok)
-      return fmt::format("a text that is not UTF-8 (byte 0x{:02X} at position {}; save the file "
-                         "as UTF-8)", b, i + 1);
+      return fmt::format("a text that is not UTF-8 (byte 0x{:02X} at {} {}; save the file "
+                         "as UTF-8)", b, place, i + 1);
     if (cp == 0xFFFE || cp == 0xFFFF)
       return fmt::format("a text with the non-character U+{:04X}", static_cast<unsigned>(cp));
     i += len;

@@ -42,6 +42,22 @@ std::string describe(const toml::node& n) {
 
 long line_of(const toml::node& n) { return static_cast<long>(n.source().begin.line); }
 
+// A key as TOML writes it: bare when it may be (A–Z, a–z, 0–9, _ and -), else in quotes, so
+// that an empty key or one with a space or a dot reads as what it is ("" = 1, "a.b" = 1).
+std::string written_key(std::string_view k) {
+  const bool bare = !k.empty() && std::all_of(k.begin(), k.end(), [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+  if (bare) return std::string(k);
+  std::string q = "\"";
+  for (char c : k) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
 TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::string prefix,
                      long line, std::initializer_list<std::string_view> allowed)
     : file_(std::move(file)), t_(&t), prefix_(std::move(prefix)), line_(line) {
@@ -55,7 +71,7 @@ TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::stri
     std::string names;
     for (std::string_view a : allowed) names += (names.empty() ? "" : ", ") + std::string(a);
     throw InputError(file_, static_cast<long>(worst->source().begin.line),
-                     field(worst->str()), "an unknown key",
+                     field(written_key(worst->str())), "an unknown key",
                      fmt::format("one of {}", names));
   }
 }
@@ -220,6 +236,18 @@ std::string syntax_problem(std::string_view description, long column) {
 }  // namespace
 
 toml::table parse_toml(const std::filesystem::path& file, const std::string& text) {
+  // Text that is not UTF-8, or holds control characters, checked here line by line: toml++
+  // names such a byte at the line before when it opens a line, in its own words.
+  long line_no = 0;
+  for (std::size_t pos = 0; pos < text.size();) {
+    std::size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) nl = text.size();
+    ++line_no;
+    if (auto bad = unwritable_text(std::string_view(text).substr(pos, nl - pos), "column"))
+      throw InputError(file, line_no, "TOML syntax", *bad,
+                       "UTF-8 text without control characters other than tab (as TOML requires)");
+    pos = nl + 1;
+  }
   try {
     return toml::parse(text, file.string());
   } catch (const toml::parse_error& e) {

@@ -92,6 +92,20 @@ TEST(ScenarioCsv, ASemicolonRowSaysItsSeparator) {
                 "expected cells separated by commas (x,z,material)");
 }
 
+// A value past the header's last name: the row may hold a stray value, or the header may have
+// lost a name ("x,z," for "x,z,material"); the message names both (found by fuzzing: it
+// blamed the row alone, "expected 2 columns").
+TEST(ScenarioCsv, AValueUnderAnUnnamedColumnNamesTheHeaderToo) {
+  TempDir dir;
+  const std::string p = (dir.path() / "p.csv").string();
+  EXPECT_EQ(csv_error(dir, "x,z,\n0,10,rock\n10,0,rock\n20,0,\n"),
+            p + ":2: row: found 3 columns (column 3 holds \"rock\"), expected 2 columns (x,z), or "
+                "a name for column 3 in the header (line 1: \"x,z,\")");
+  // A header without trailing empty cells: the row alone.
+  EXPECT_EQ(csv_error(dir, "x,z,material\n0,10,rock,1\n20,0,\n"),
+            p + ":2: row: found 4 columns (column 4 holds \"1\"), expected 3 columns (x,z,material)");
+}
+
 TEST(ScenarioCsv, ATabSeparatedRowSaysItsSeparatorAndShowsTheTabs) {
   TempDir dir;
   EXPECT_EQ(csv_error(dir, "x,z,material\n0,10,rock\n10\t0\trock\n20,0,\n"),
@@ -307,6 +321,19 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"csv_extra_column", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock,1\n20,0,\n"}}, "p.csv", 2, "row", "4 columns"},
         // Empty trailing cells are ignored (a spreadsheet's), a value in one is not.
         Case{"csv_value_beyond_empty_header_cells", {{9, kCsvProfile}}, {{"p.csv", "x,z,material,,\n0,10,rock,,\n10,0,rock,,5\n20,0,,,\n"}}, "p.csv", 3, "row", "5 columns"},
+        // Found by fuzzing (2026-11-24): a stray NUL named at its line, a file of comments alone
+        // not called empty, a header whose last name was lost named beside the row.
+        Case{"csv_nul_byte", {{9, kCsvProfile}}, {{"p.csv", std::string("x,z,material\n0,10,rock\n10,0,ro\0ck\n20,0,\n", 40)}}, "p.csv", 3, "file", "a NUL byte (code 0) at column 8"},
+        Case{"csv_comments_only", {{9, kCsvProfile}}, {{"p.csv", "# x,z,material\n# none yet\n"}}, "p.csv", 0, "header", "only comment lines (2 starting with #), no header"},
+        Case{"csv_header_name_lost", {{9, kCsvProfile}}, {{"p.csv", "x,z,\n0,10,rock\n10,0,rock\n20,0,\n"}}, "p.csv", 2, "row", "3 columns (column 3 holds \"rock\")"},
+        // One x mistyped (-5 for 25) turns the last segment back under the whole profile: named
+        // at its line, not as a profile listed the wrong way round at the first vertex.
+        Case{"csv_one_x_mistyped", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,0,rock\n20,0,rock\n-5,-5,\n"}}, "p.csv", 5, "x", "x = -5 m after x = 20 m (line 4)"},
+        Case{"toml_not_utf8_at_line_start", {{9, "\xE9" + base_lines()[8]}}, {}, "s.toml", 9, "TOML syntax", "byte 0xE9 at column 1"},
+        Case{"toml_control_character", {{2, "name = \"a\x01" "b\""}}, {}, "s.toml", 2, "TOML syntax", "control character U+0001 at column 10"},
+        Case{"unknown_empty_key", {{1, "\"\" = 1\n[scenario]"}}, {}, "s.toml", 1, "\"\"", "an unknown key"},
+        Case{"source_z_beyond_any_section", {{22, "z = 1e300"}}, {}, "s.toml", 22, "sources[0].z", "1e+300"},
+        Case{"block_volume_times_density_too_heavy", {{18, "volume = 0.5\ndensity = 1e9"}}, {}, "s.toml", 18, "blocks.table[0].volume", "0.5"},
         Case{"csv_cr_line_ends_bad_number", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\r0,10,rock\r10,zero,rock\r20,0,\r"}}, "p.csv", 3, "z", "\"zero\""},
         Case{"csv_column_and_its_unit_alias", {{9, kCsvProfile}}, {{"p.csv", "x,x_m,z,material\n0,0,10,rock\n10,10,0,rock\n"}}, "p.csv", 1, "header", "column \"x\" twice"},
         Case{"csv_non_numeric", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n0,10,rock\n10,abc,rock\n20,0,\n"}}, "p.csv", 3, "z", "\"abc\""},
@@ -401,6 +428,29 @@ TEST(ScenarioReader, AHugeValueIsShownByItsStartAndLength) {
               std::string::npos)
         << what;
   }
+}
+
+// The field and the expectation quote the input too: an unknown key of 100 000 letters, or a
+// list of names to choose from, are shortened in the message as a found value is (found by
+// fuzzing: a 2 MB rule-set path made a 2 MB message), and kept whole by field() and expected().
+TEST(ScenarioReader, AHugeKeyOrExpectationIsShownByItsStartAndLength) {
+  TempDir dir;
+  const std::string key(100000, 'k');
+  const auto scenario = dir.write("s.toml", pierre::test::base_with(6, "throws = 2\n" + key + " = 1"));
+  try {
+    (void)load_scenario(scenario, kRules);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "simulation." + key);
+    const std::string what = e.what();
+    EXPECT_LT(what.size(), 1000u) << what.size();
+    EXPECT_NE(what.find(":7: simulation." + std::string(189, 'k') + "… (100011 bytes in all): found an unknown key"),
+              std::string::npos)
+        << what.substr(0, 400);
+  }
+  const pierre::io::InputError long_expectation("f.toml", 3, "x", "1", std::string(5000, 'e'));
+  EXPECT_EQ(long_expectation.expected().size(), 5000u);
+  EXPECT_LT(std::string(long_expectation.what()).size(), 1100u);
 }
 
 }  // namespace

@@ -219,6 +219,22 @@ INSTANTIATE_TEST_SUITE_P(
 // A folder where the scenario file is expected is named as such: reading a folder as a stream
 // gives nothing, which said "found nothing, expected a [scenario] table". (A CSV given by path
 // is checked at the scenario's key: ScenarioError profile_csv_a_folder.)
+// An endless stream named as an input (found by fuzzing: /dev/zero filled the memory without a
+// word) is read up to the largest input and refused there.
+TEST(ScenarioReader, AnEndlessStreamIsReadNoFurtherThanTheLargestInput) {
+  TempDir dir;
+  const auto s = dir.write("s.toml", base_with(9, "file = \"/dev/zero\""));
+  try {
+    (void)load_scenario(s, kRules);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), std::filesystem::path("/dev/zero"));
+    EXPECT_EQ(e.field(), "file");
+    EXPECT_EQ(e.found().rfind("more than 256 MiB", 0), 0u) << e.found();
+    EXPECT_EQ(e.expected(), "a CSV file with header x,z,material of at most 256 MiB");
+  }
+}
+
 TEST(ScenarioReader, AFolderIsNotAFile) {
   TempDir dir;
   std::filesystem::create_directories(dir.path() / "s.toml");
