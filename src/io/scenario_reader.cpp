@@ -264,6 +264,21 @@ sim::SimulationSettings read_simulation(const TomlTable& top) {
   return out;
 }
 
+// Any gravity > 0 is taken (a test on another body, a round 10), but one far from the Earth's
+// is more likely a slip (98.1, 0.981): said, as the unit slips of the blocks are.
+void note_gravity(const TomlTable& top, double g, std::vector<InputNote>& notes) {
+  constexpr double kEarthLow = 9.7, kEarthHigh = 10.0;  // m/s²: 9.78 at the equator to 9.83, and 10 rounded
+  if (g >= kEarthLow && g <= kEarthHigh) return;
+  const auto s = top.subtable("simulation", {});
+  const toml::node* n = s ? s->find("gravity") : nullptr;
+  if (!n) return;
+  notes.push_back({top.file(), line_of(*n), "simulation.gravity",
+                   fmt::format("gravity {:g} m/s² is not the Earth's (9.78 to 9.83 m/s²): every "
+                               "speed and energy depends on it; check the value if the slope is "
+                               "on Earth",
+                               g)});
+}
+
 // Lines count first crossings in the main direction (the profile's vertex order): one behind
 // every source, upslope of where the blocks start, is crossed by none of them unless one bounces
 // back past it. A design at such a line has nothing to stand on: said before the run.
@@ -607,6 +622,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
     out.materials_file = rules_dir / "materials.toml";
 
   out.scenario.settings = read_simulation(top);
+  note_gravity(top, out.scenario.settings.gravity, out.notes);
   Presets presets(out.materials_file,
                   head->has("materials_file")
                       ? std::string("materials file (TOML)")

@@ -219,6 +219,20 @@ INSTANTIATE_TEST_SUITE_P(
 // A folder where the scenario file is expected is named as such: reading a folder as a stream
 // gives nothing, which said "found nothing, expected a [scenario] table". (A CSV given by path
 // is checked at the scenario's key: ScenarioError profile_csv_a_folder.)
+// A gravity far from the Earth's is taken but noted: 98.1 for 9.81 multiplies every energy.
+TEST(ScenarioReader, AGravityOffTheEarthsIsNoted) {
+  TempDir dir;
+  const auto slip = load_scenario(dir.write("s.toml", base_with(6, "throws = 2\ngravity = 98.1")), kRules);
+  ASSERT_EQ(slip.notes.size(), 1u);
+  EXPECT_EQ(slip.notes[0].line, 7);
+  EXPECT_EQ(slip.notes[0].field, "simulation.gravity");
+  EXPECT_EQ(slip.notes[0].text.rfind("gravity 98.1 m/s² is not the Earth's", 0), 0u) << slip.notes[0].text;
+  for (const char* g : {"9.81", "10.0"})
+    EXPECT_TRUE(load_scenario(dir.write("t.toml", base_with(6, std::string("throws = 2\ngravity = ") + g)), kRules)
+                    .notes.empty())
+        << g;
+}
+
 // An endless stream named as an input (found by fuzzing: /dev/zero filled the memory without a
 // word) is read up to the largest input and refused there.
 TEST(ScenarioReader, AnEndlessStreamIsReadNoFurtherThanTheLargestInput) {
