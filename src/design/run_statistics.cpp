@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <numbers>
 
 namespace pierre::design {
 namespace {
@@ -31,6 +33,10 @@ void RunSamples::add(const sim::TrajectorySummary& t) {
   runout_.push_back(t.runout());
   const auto r = static_cast<std::size_t>(t.stop_reason);
   if (r < stops_.size()) ++stops_[r];
+  if (t.steep_stop_tan > 0) {
+    ++steep_energy_stops_;
+    steepest_deg_ = std::max(steepest_deg_, std::atan(double{t.steep_stop_tan}) * 180.0 / std::numbers::pi);
+  }
 }
 
 void RunSamples::add(const sim::Crossing& c) {
@@ -98,6 +104,8 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   s.runout.max = r[3];
   for (std::size_t k = 0; k < kStopReasonCount; ++k)
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
+  s.energy_stops_on_steep_ground = samples.steep_energy_stops();
+  s.steepest_energy_stop_deg = samples.steepest_energy_stop_deg();
   return s;
 }
 
@@ -133,6 +141,21 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
                       ", not at rest; " +
                       (one ? "its stop point and runout are where it was cut off."
                            : "their stop points and runouts are where they were cut off."));
+  }
+  if (const std::uint64_t k = s.energy_stops_on_steep_ground; k > 0) {
+    // Not an error: the model (Eq 3.13) stops a block whose energy head after an impact is below
+    // c_stop·R whatever the slope. On a talus near its angle of repose blocks do stop; on a rock
+    // face they would not, and the runouts and reach counts then fall short.
+    char steepest[32];
+    std::snprintf(steepest, sizeof steepest, "%.1f", s.steepest_energy_stop_deg);
+    const bool one = k == 1;
+    notes.push_back(std::to_string(k) + (one ? " block was" : " blocks were") +
+                    " stopped by the energy criterion (Eq 3.13) on ground steeper than its "
+                    "friction angle (up to " + steepest + "°), where a block at rest would slide "
+                    "on: the model stops a block whose energy head after an impact is below "
+                    "c_stop·R whatever the slope. Check that " + (one ? "it" : "they") +
+                    " can rest there (on a talus near its angle of repose, likely; on a rock face, "
+                    "not: a smaller stop_head_factor lets blocks go on).");
   }
   return notes;
 }

@@ -556,6 +556,8 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   json stops = json::object();
   for (const auto& r : s.stop_reasons) stops[std::string(sim::to_string(r.reason))] = r.count;
   j["stop_reasons"] = stops;
+  j["energy_stops_on_steep_ground"] = s.energy_stops_on_steep_ground;
+  j["steepest_energy_stop_deg"] = s.steepest_energy_stop_deg;
   json lines = json::array();
   for (const auto& l : s.lines)
     lines.push_back({{"name", l.name},

@@ -199,7 +199,9 @@ Row Report::summary_stops(lxw_worksheet* ws, Row r) {
         number("percent", 1));
     text(ws, r++, 3, t_.get("labels", key));
   }
-  for (const auto& n : design::stop_reason_notes(d_.statistics)) text(ws, r++, 0, n, note());
+  // Over the print area's width (A:J, 196 wide), wrapped, as the class notes.
+  for (const auto& n : design::stop_reason_notes(d_.statistics))
+    paragraph(ws, r++, 0, 9, 196, n, wrapped_note());
   return r;
 }
 

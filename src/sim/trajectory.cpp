@@ -258,6 +258,9 @@ class Integrator {
     note_speed(v_, omega_);
     switch (res.result) {
       case model::ImpactResult::stopped:
+        // Said in the run's notes: tan β > tan φ, where sliding would not have stopped.
+        if (std::abs(s.d.z) > m_.surface(s.material).tan_phi * std::abs(s.d.x))
+          out_.steep_stop_tan = static_cast<float>(std::abs(s.d.z) / std::abs(s.d.x));
         return stop(StopReason::energy);
       case model::ImpactResult::sliding:
         return enter_ground(j, v_);

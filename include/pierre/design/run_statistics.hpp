@@ -47,6 +47,10 @@ class RunSamples {
   const std::vector<LineSamples>& every() const { return every_; }  // empty unless asked for
   const std::vector<double>& runout() const { return runout_; }  // m, one per trajectory
   const std::array<std::uint64_t, kStopReasonCount>& stop_reasons() const { return stops_; }
+  // Energy stops on ground steeper than its friction angle (TrajectorySummary), and the
+  // steepest such ground's slope (°).
+  std::uint64_t steep_energy_stops() const { return steep_energy_stops_; }
+  double steepest_energy_stop_deg() const { return steepest_deg_; }
   std::uint64_t trajectories() const { return runout_.size(); }
 
  private:
@@ -57,6 +61,8 @@ class RunSamples {
   int main_direction_ = 1;
   std::vector<double> runout_;
   std::array<std::uint64_t, kStopReasonCount> stops_{};
+  std::uint64_t steep_energy_stops_ = 0;
+  double steepest_deg_ = 0;
 };
 
 // count, mean, P50, P95 and max of one quantity; NaN statistics when count is 0.
@@ -92,6 +98,10 @@ struct RunStatistics {
   std::vector<LineStatistics> lines;
   RunoutStatistics runout;
   std::vector<StopReasonCount> stop_reasons;  // every reason, in enum order, zeros included
+  // Of the energy stops, those on ground steeper than its friction angle (model-2d.md §3 step 8
+  // stops a block whatever the slope).
+  std::uint64_t energy_stops_on_steep_ground = 0;
+  double steepest_energy_stop_deg = 0;  // the steepest ground of those (°)
 };
 
 RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
@@ -102,7 +112,8 @@ QuantityStatistics quantity_statistics(std::span<const double> values);
 // What the engineer must know about how the trajectories ended, one sentence each (the console
 // and the report print the same words): blocks cut off by a limit, whose stop points are not
 // where they came to rest, and blocks that left the profile, whose runouts make the runout
-// percentiles lower bounds. Empty when every block came to rest (energy or friction).
+// percentiles lower bounds; blocks the energy criterion stopped on ground steeper than its
+// friction angle. Empty when every block came to rest where it could stay.
 std::vector<std::string> stop_reason_notes(const RunStatistics& s);
 
 }  // namespace pierre::design

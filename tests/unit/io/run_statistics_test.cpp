@@ -146,4 +146,29 @@ TEST(RunStatistics, StopReasonNotesSayWhatTheCountsMean) {
       << more[1];
 }
 
+// Energy stops on ground steeper than its friction angle are counted with the steepest such
+// ground (atan of the largest tan β: 1 → 45°, √3 → 60°), and said in one note.
+TEST(RunStatistics, EnergyStopsOnSteepGroundAreCountedAndNoted) {
+  design::RunSamples s(0, 1);
+  for (const float tan_beta : {0.0f, 1.0f, 1.7320508f, 0.0f}) {
+    sim::TrajectorySummary t;
+    t.stop_reason = sim::StopReason::energy;
+    t.steep_stop_tan = tan_beta;
+    s.add(t);
+  }
+  const auto st = design::run_statistics({}, s);
+  EXPECT_EQ(st.energy_stops_on_steep_ground, 2u);
+  EXPECT_NEAR(st.steepest_energy_stop_deg, 60.0, 1e-5);
+  const auto notes = design::stop_reason_notes(st);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].rfind("2 blocks were stopped by the energy criterion (Eq 3.13) on ground "
+                           "steeper than its friction angle (up to 60.0°)",
+                           0),
+            0u)
+      << notes[0];
+  design::RunStatistics none = st;
+  none.energy_stops_on_steep_ground = 0;
+  EXPECT_TRUE(design::stop_reason_notes(none).empty());
+}
+
 }  // namespace

@@ -149,6 +149,37 @@ TEST(Trajectory, BlockInAVNotchStopsInFiniteTime) {
   }
 }
 
+// The energy criterion (Eq 3.13) stops a block whatever the slope; a stop on ground steeper
+// than its friction angle is marked with that ground's tan β, for the run's note. In a notch
+// of two 40° flanks (φ = 30°) every energy stop is on a flank; on level ground none is steep.
+TEST(Trajectory, AnEnergyStopOnGroundSteeperThanItsFrictionAngleIsMarked) {
+  const double t40 = std::tan(40 * M_PI / 180);
+  Scenario notch = test::make_scenario(test::make_profile({{0, 50 * t40}, {50, 0}, {100, 50 * t40}}),
+                                       test::make_material(15, 50, 0.5, 30), {test::make_block(1000)},
+                                       {20, 30 * t40}, 50);
+  std::size_t energy = 0;
+  for (const auto& t : run(notch, 1).trajectories) {
+    if (t.stop_reason == StopReason::energy) {
+      ++energy;
+      EXPECT_NEAR(t.steep_stop_tan, t40, 1e-6);  // a float: 7 digits
+    } else {
+      EXPECT_EQ(t.steep_stop_tan, 0.0f);
+    }
+  }
+  EXPECT_GT(energy, 0u);
+  // The same flanks at 25° < φ: no stop there is steep.
+  const double t25 = std::tan(25 * M_PI / 180);
+  Scenario gentle = test::make_scenario(test::make_profile({{0, 50 * t25}, {50, 0}, {100, 50 * t25}}),
+                                        test::make_material(15, 50, 0.5, 30), {test::make_block(1000)},
+                                        {20, 30 * t25 + 5}, 50);
+  energy = 0;
+  for (const auto& t : run(gentle, 1).trajectories) {
+    energy += t.stop_reason == StopReason::energy;
+    EXPECT_EQ(t.steep_stop_tan, 0.0f);
+  }
+  EXPECT_GT(energy, 0u);
+}
+
 // Placed on the ground (source below it) with φ = 30° on a 45° slope: a = g (sin 45 − cos 45
 // tan 30) > 0. The first impact is the launch at the maximum sliding speed (5 m/s), after sliding
 // s = v²/2a along the slope: exactly where the closed form puts it. The same in the mirror image,
