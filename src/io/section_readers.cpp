@@ -277,6 +277,10 @@ struct GroupSource {  // where a block group was written, for messages
   fs::path file;
   long line;
   std::string field;  // of the id
+  long size_line;          // of its mass or volume, which a unit note is about
+  std::string size_field;
+  long density_line;       // of its own density (its row's line when it has none)
+  std::string density_field;
 };
 
 // The expectation of a block heavier than the model's limit. Given by volume, it shows the
@@ -354,7 +358,7 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
       g.count = static_cast<unsigned>(n);
     }
     groups.push_back(std::move(g));
-    where.push_back({file, r.line, "id"});
+    where.push_back({file, r.line, "id", r.line, has_mass ? "mass" : "volume", r.line, "density"});
   }
 }
 
@@ -376,7 +380,7 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
   for (std::size_t i = 0; i < groups.size(); ++i)
     if (groups[i].density != shared && !rock(groups[i].density) && odd++ == 0) first = i;
   if (odd > 0)
-    notes.push_back({where[first].file, where[first].line, where[first].field,
+    notes.push_back({where[first].file, where[first].density_line, where[first].density_field,
                      fmt::format("block \"{}\" has a density of {:g} kg/m³{}, {}",
                                  groups[first].id, groups[first].density,
                                  odd > 1 ? fmt::format(" (and {} more rows like it)", odd - 1) : "",
@@ -387,14 +391,14 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
     if (groups[i].mass > groups[heaviest].mass) heaviest = i;
   if (!groups.empty() && groups[heaviest].mass < kLightestPlausibleBlock)
     notes.push_back(
-        {where[heaviest].file, where[heaviest].line, where[heaviest].field,
+        {where[heaviest].file, where[heaviest].size_line, where[heaviest].size_field,
          fmt::format("the heaviest block, \"{}\", weighs {:.3g} kg: a mass is in kg and a "
                      "volume in m³; a mass in tonnes or a volume in litres gives blocks 1000 "
                      "times too light, and every energy 1000 times too small",
                      groups[heaviest].id, groups[heaviest].mass)});
   if (!groups.empty() && groups[heaviest].mass > kHeaviestPlausibleBlock)
     notes.push_back(
-        {where[heaviest].file, where[heaviest].line, where[heaviest].field,
+        {where[heaviest].file, where[heaviest].size_line, where[heaviest].size_field,
          fmt::format("the heaviest block, \"{}\", weighs {:.0f} t ({:.0f} m³), beyond any "
                      "rockfall barrier: a volume is in m³ and a mass in kg; a volume in litres "
                      "gives blocks 1000 times too heavy",
@@ -447,7 +451,10 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
                 fmt::format("an integer from 1 to {}", kMaxCount));
         g.count = static_cast<unsigned>(*n);
       }
-      where.push_back({top.file(), t.has("id") ? line_of(*t.find("id")) : t.line(), t.field("id")});
+      const char* size = mass ? "mass" : "volume";
+      where.push_back({top.file(), t.has("id") ? line_of(*t.find("id")) : t.line(), t.field("id"),
+                       line_of(*t.find(size)), t.field(size),
+                       t.has("density") ? line_of(*t.find("density")) : t.line(), t.field("density")});
       groups.push_back(std::move(g));
     }
   }

@@ -184,8 +184,8 @@ TEST(InputNotes, ADensityInTonnesPerCubicMetreIsNoted) {
                          "[[blocks.table]]\nid = \"b\"\nvolume = 1.0\ndensity = 2.7\n"
                          "[[blocks.table]]\nid = \"c\""));  // and line 18's mass
   ASSERT_EQ(rows.size(), 1u);
-  EXPECT_EQ(rows[0].line, 18);
-  EXPECT_EQ(rows[0].field, "blocks.table[0].id");
+  EXPECT_EQ(rows[0].line, 20);  // at the density that holds the slip, not the row's id
+  EXPECT_EQ(rows[0].field, "blocks.table[0].density");
   EXPECT_NE(rows[0].text.find("block \"a\" has a density of 2.7 kg/m³ (and 1 more rows like "
                               "it), outside the densities of rock"),
             std::string::npos)
@@ -199,7 +199,8 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   TempDir dir;
   const auto tonnes = notes_of(dir, base_with(18, "mass = 2.5"));
   ASSERT_EQ(tonnes.size(), 1u);
-  EXPECT_EQ(tonnes[0].line, 17);  // the row (it has no id)
+  EXPECT_EQ(tonnes[0].line, 18);  // at the mass that holds the slip
+  EXPECT_EQ(tonnes[0].field, "blocks.table[0].mass");
   EXPECT_NE(tonnes[0].text.find("the heaviest block, \"B1\", weighs 2.5 kg: a mass is in kg"),
             std::string::npos)
       << tonnes[0].text;
