@@ -560,6 +560,23 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
         b.data_quality[q] = dq->required_string(q, "an answer (a string)");
       }
     }
+    // Every unanswered question at once: one at a time took a run for each.
+    std::vector<std::string> unanswered, wanted;
+    for (const auto& [q, answers] : questions)
+      if (!b.data_quality.count(q)) {
+        unanswered.push_back(q);
+        wanted.push_back(fmt::format("{} = {}", q, quoted_list(answers, " or ")));
+      }
+    if (unanswered.size() > 1) {
+      std::string list, names;
+      for (std::size_t i = 0; i < wanted.size(); ++i) {
+        list += (i ? "; " : "") + wanted[i];
+        names += (i == 0 ? "" : i + 1 == unanswered.size() ? " and " : ", ") + unanswered[i];
+      }
+      throw InputError(top.file(), dq ? dq->line() : t.line(), t.field("data_quality"),
+                       "no answer to " + names,
+                       fmt::format("an answer to each question of rule set {}: {}", rules.name, list));
+    }
     for (const auto& [q, answers] : questions) {
       const std::string expected = fmt::format("{} (asked by rule set {})", quoted_list(answers, " or "),
                                                rules.name);

@@ -212,8 +212,13 @@ INSTANTIATE_TEST_SUITE_P(
              {{"r.toml", "[rule_set]\nkind = \"barrier\"\ntitle = 3\n"}}, "r.toml", 3, "rule_set.title", "3", "string"},
         Case{"missing_answer", kHead + "data_quality = { trajectory = \"literature\", topography = \"low\" }\n", {}, "", 31,
              "barriers[0].data_quality.block_volume", "nothing", "\"surveyed\""},
-        Case{"no_data_quality", kHead, {}, "", 28, "barriers[0].data_quality.block_volume", "nothing",
-             "\"surveyed\""},
+        // Every unanswered question at once (a new user met them one run at a time).
+        Case{"no_data_quality", kHead, {}, "", 28, "barriers[0].data_quality",
+             "no answer to block_volume, topography and trajectory",
+             "block_volume = \"estimated\" or \"surveyed\"; topography = \"high\" or \"low\"; "
+             "trajectory = \"back-analysed\" or \"literature\""},
+        Case{"one_question_unanswered", kHead + "data_quality = { trajectory = \"literature\", topography = \"low\" }\n",
+             {}, "", 31, "barriers[0].data_quality.block_volume", "nothing", "\"surveyed\""},
         Case{"wrong_answer", kHead + "data_quality = { trajectory = \"guess\", topography = \"low\", block_volume = \"surveyed\" }\n", {}, "", 31,
              "barriers[0].data_quality.trajectory", "\"guess\"", "\"back-analysed\" or \"literature\""},
         Case{"unasked_question", kThesis + "data_quality = { trajectory = \"literature\" }\n", {}, "", 32,
