@@ -231,6 +231,25 @@ TEST(BarrierCheckLines, FitsFromTooFewValuesWarnInsteadOfPassing) {
   EXPECT_EQ(line(lines, "exceedance.energy").status, CheckStatus::pass);
 }
 
+// A Weibull fit its own fit line rejects is no basis to pass an exceedance line either (a new
+// user's energies of blocks from 270 to 5400 kg: fit.E p = 3.5e-13, and exceedance.energy
+// passed on that fit's tail). It WARNs with the empirical share beside it; a FAIL stays a FAIL.
+TEST(BarrierCheckLines, AnExceedanceFromARejectedFitWarnsInsteadOfPassing) {
+  auto d = base();
+  d.spec.acceptable_energy_exceedance = 0.002;  // P(E > MEL_req) = 0.001: would pass
+  d.spec.acceptable_height_exceedance = 0.01;   // P(h > h_i) = 0.02: fails
+  d.energy.weibull_ks = ks(0.01);
+  d.height.weibull_ks = ks(0.01);
+  auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "exceedance.energy").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "exceedance.energy").reason,
+            "0.1 % <= acceptable 0.2 %, but from a Weibull fit that fit.E rejects (p = 0.01); of "
+            "the simulated values themselves 0 % exceed: its tail is no basis to pass");
+  EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::fail);
+  d.energy.weibull_ks = ks(0.05);  // at the rule set's p-value: the fit stands
+  EXPECT_EQ(status(d, rules(), "exceedance.energy"), CheckStatus::pass);
+}
+
 TEST(BarrierCheckLines, SampleSizeWarnsWithTheThrowsNeeded) {
   auto d = base();
   EXPECT_EQ(status(d, rules(), "sample.size"), CheckStatus::pass);  // worst 2.5 % (E_d 30/1250 = 2.4 %)
