@@ -347,6 +347,11 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
         l.status = outside ? CheckStatus::pass : CheckStatus::fail;
         l.reason = at + " from the toe is " + (outside ? "outside" : "inside") +
                    " the danger zone: RD_gov = " + zone + " (" + row.rd_gov.how + ")" + fit_doubt;
+        // An area past the modelled floor: no block was simulated over the ground there.
+        if (value > sr.geometry.floor_length)
+          l.reason += "; the area lies past the end of the section's floor (" +
+                      quantity_text(sr.geometry.floor_length, "m") +
+                      " from the toe), on ground the section does not model: extend it";
       }
       d.checks.push_back(std::move(l));
     };

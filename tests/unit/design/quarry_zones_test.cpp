@@ -119,6 +119,24 @@ TEST(QuarryZones, WorkAreasInsideAndOutsideTheDangerZone) {
   EXPECT_TRUE(any_failure(d.checks));
 }
 
+// A work area past the end of the modelled floor passes (outside the zone) but says that the
+// ground there is not in the section (a new user's area at 80 m on a 50 m floor passed silently).
+TEST(QuarryZones, AWorkAreaPastTheFloorSaysSo) {
+  auto s = section("Face A", one_to(100));  // floor 400 m long, RD_gov 95.05 m
+  s.spec.work_areas = {{"yard", 450}, {"road", 400}};
+  const auto out = design_quarry({s}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const CheckLine* yard = find(*out.design, "Face A", "zone.yard");
+  const CheckLine* road = find(*out.design, "Face A", "zone.road");
+  ASSERT_TRUE(yard && road);
+  EXPECT_EQ(yard->status, CheckStatus::pass);
+  EXPECT_EQ(yard->reason,
+            "450.00 m from the toe is outside the danger zone: RD_gov = 95.05 m (P95 4.75 H); the "
+            "area lies past the end of the section's floor (400.00 m from the toe), on ground the "
+            "section does not model: extend it");
+  EXPECT_EQ(road->reason.find("past the end"), std::string::npos);  // at the floor's end: on it
+}
+
 TEST(QuarryZones, ConservativeTakesTheLargerOfMaximumAndLognormal) {
   auto s = section("Face A", lognormal_runouts(2000, 20, 5), conservative());
   const auto out = design_quarry({s}, 1);
