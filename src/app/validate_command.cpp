@@ -120,7 +120,8 @@ class ValidateCommand final : public Command {
           "  quarry section \"{}\"{}: {} vertices from x = {} to {} m; {} block{} in {} "
           "group{}; {} source{}; {} throw{} per block and source with seed {}{}: {} "
           "trajector{}. Crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); "
-          "floor from segment {}, {:.2f} m long. Rule set {} ({}); {} work area{}{}{}{}.\n",
+          "floor from segment {} (counted from 0, as in impacts.csv), {:.2f} m long. "
+          "Rule set {} ({}); {} work area{}{}{}{}.\n",
           q.spec.name, q.spec.group.empty() ? "" : fmt::format(" (group \"{}\")", q.spec.group),
           c.profile.vertices().size(), c.profile.x_min(), c.profile.x_max(), c.blocks.size(),
           c.blocks.size() == 1 ? "" : "s", groups, groups == 1 ? "" : "s", c.sources.size(),
