@@ -94,9 +94,9 @@ class RunCommand final : public Command {
           "summary.json with \"barriers\" and \"checks\" and report.xlsx, prints the check lines.\n"
           "A quarry scenario ([[quarries]], docs/quarry.md): every section's danger zone and its\n"
           "checks (zone.<work area>, bench.*), summary.json \"quarries\" and \"checks\".\n"
-          "Exit code 0 when every check passes (WARN does not count), 1 when one FAILs, 2 on bad input,\n"
-          "3 on an internal error or output that could not be written, 130 when interrupted (nothing\n"
-          "written).");
+          "Exit code 0 when every check passes (WARN does not count), 1 when one FAILs, 2 on bad input\n"
+          "or results that cannot be put in DIR, 3 on an internal error or when the standard output\n"
+          "cannot be written, 130 when interrupted (nothing written).");
     else
       c->footer(
           "Example:\n"
@@ -104,8 +104,9 @@ class RunCommand final : public Command {
           "writes results/vaujany/{trajectories.csv, crossings.csv, summary.json, report.xlsx}; with\n"
           "--impacts also impacts.csv. Barriers are computed and printed too; so are the danger\n"
           "zones of a quarry scenario (docs/quarry.md). Exit code 0 when it ran\n"
-          "(whatever the checks say: see `pierre check`), 2 on bad input, 3 on an internal error or\n"
-          "output that could not be written, 130 when interrupted (nothing written).");
+          "(whatever the checks say: see `pierre check`), 2 on bad input or results that cannot be\n"
+          "put in DIR, 3 on an internal error or when the standard output cannot be written, 130\n"
+          "when interrupted (nothing written).");
     return c;
   }
 
