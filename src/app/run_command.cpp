@@ -105,8 +105,8 @@ class RunCommand final : public Command {
           "--impacts also impacts.csv. Barriers are computed and printed too; so are the danger\n"
           "zones of a quarry scenario (docs/quarry.md). Exit code 0 when it ran\n"
           "(whatever the checks say: see `pierre check`), 2 on bad input or results that cannot be\n"
-          "put in DIR, 3 on an internal error or when the standard output cannot be written, 130\n"
-          "when interrupted (nothing written).");
+          "put in DIR, 3 on an internal error or when the standard output cannot be written,\n"
+          "130 when interrupted (nothing written).");
     return c;
   }
 
