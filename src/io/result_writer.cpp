@@ -320,9 +320,11 @@ ojson barrier_json(const design::BarrierDesign& d) {
   j["h_max_sim_m"] = d.h_max_sim;
   ojson ex = ojson::array();
   for (const auto& r : d.exceedance)
+    // The threshold in its unit; the probabilities as fractions (the check lines give them in %).
     ex.push_back({{"what", r.what},
                   {"threshold", r.threshold},
-                  {"unit", r.unit},
+                  {"threshold_unit", r.unit},
+                  {"probability_unit", "fraction (0 to 1)"},
                   {"simulated_weibull", r.simulated_weibull},
                   {"simulated_empirical", r.simulated_empirical},
                   {"observed_weibull", r.observed_weibull ? ojson(*r.observed_weibull) : ojson(nullptr)}});

@@ -182,7 +182,14 @@ TEST_F(Check, ExceedanceLinesAreInPercentLikeTheirReasons) {
     EXPECT_DOUBLE_EQ(c["limit"].get<double>(), 100 * acceptable) << c;
     double p = -1;
     for (const auto& row : table)
-      if (row["what"] == what) p = row["simulated_weibull"].get<double>();
+      if (row["what"] == what) {
+        p = row["simulated_weibull"].get<double>();
+        // The table's probabilities are fractions; its unit is the threshold's (a new user read
+        // "unit": "kJ" beside 3.4e-05 as the probability's).
+        EXPECT_EQ(row["probability_unit"], "fraction (0 to 1)") << row;
+        EXPECT_EQ(row["threshold_unit"], std::string(what).find("E >") != std::string::npos ? "kJ" : "m")
+            << row;
+      }
     ASSERT_GE(p, 0.0) << what << " not in the barrier's exceedance table";
     EXPECT_DOUBLE_EQ(c["value"].get<double>(), 100 * p) << c;
     // The reason's first number is the value, in %.
