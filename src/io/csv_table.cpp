@@ -200,7 +200,12 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
                                             fmt::format("{} column{}", cells.size(),
                                                         cells.size() == 1 ? "" : "s"),
                                             *sep),
-                             fmt::format("cells separated by commas ({})", expected_header));
+                             fmt::format("cells separated by commas ({}){}", expected_header,
+                                         // A European export: its decimal commas go too.
+                                         *sep == "\";\"" && text.find(',', pos) != std::string::npos
+                                             ? "; the rows' decimal commas must then become "
+                                               "points (10,5 → 10.5)"
+                                             : ""));
           throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
                            fmt::format("only the columns {}{}", join(allowed),
                                        aliases.empty() ? "" : alias_note(aliases)));

@@ -313,7 +313,8 @@ void read_lines(const TomlTable& top, sim::Scenario& sc, std::vector<InputNote>&
       t.check("name", other.name != l.name, "a name not used by another observation line");
     l.x = t.required_number("x", "a chainage x (m)");
     t.check("x", l.x >= sc.profile.x_min() && l.x <= sc.profile.x_max(),
-            "a chainage " + extent(sc.profile));
+            "a chainage " + extent(sc.profile) +
+                " (the section's own horizontal x, not the road's or railway's station)");
     note_line_behind_sources(t, sc, l, notes);
     sc.lines.push_back(std::move(l));
   }

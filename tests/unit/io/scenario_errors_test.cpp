@@ -106,6 +106,21 @@ TEST(ScenarioCsv, AValueUnderAnUnnamedColumnNamesTheHeaderToo) {
             p + ":2: row: found 4 columns (column 4 holds \"1\"), expected 3 columns (x,z,material)");
 }
 
+// A European export separates by ';' and writes decimal commas: the header's message asks for
+// both changes, so that swapping ';' for ',' alone does not lead to a second, puzzling error
+// (a new user's "found 5 columns" once the semicolons were gone).
+TEST(ScenarioCsv, ASemicolonHeaderOverDecimalCommasAsksForDecimalPointsToo) {
+  TempDir dir;
+  const std::string p = (dir.path() / "p.csv").string();
+  EXPECT_EQ(csv_error(dir, "x;z;material\n0;10,5;rock\n10;0;rock\n20;0;\n"),
+            p + ":1: header: found \"x;z;material\" (1 column: the cells are separated by \";\"), "
+                "expected cells separated by commas (x,z,material); the rows' decimal commas must "
+                "then become points (10,5 → 10.5)");
+  EXPECT_EQ(csv_error(dir, "x;z;material\n0;10;rock\n10;0;rock\n20;0;\n"),
+            p + ":1: header: found \"x;z;material\" (1 column: the cells are separated by \";\"), "
+                "expected cells separated by commas (x,z,material)");
+}
+
 TEST(ScenarioCsv, ATabSeparatedRowSaysItsSeparatorAndShowsTheTabs) {
   TempDir dir;
   EXPECT_EQ(csv_error(dir, "x,z,material\n0,10,rock\n10\t0\trock\n20,0,\n"),
