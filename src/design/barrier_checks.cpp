@@ -136,12 +136,13 @@ std::string rejected_fit(const Builder& b, const QuantityFit& q, const char* fit
          pct(empirical) + " exceed";
 }
 
-void exceedance_line(Builder& b, const char* id, const std::string& what, double p,
-                     double empirical, std::optional<double> acceptable, const QuantityFit& fit,
-                     const char* fit_id) {
+// `row`: its column of Table 4.2 (none without a design).
+void exceedance_line(Builder& b, const char* id, const std::string& what, const ExceedanceRow* row,
+                     std::optional<double> acceptable, const QuantityFit& fit, const char* fit_id) {
+  const double p = row ? row->simulated_weibull : kNaN;
   CheckLine& l = b.add(id, what, 100 * p, 100 * acceptable.value_or(kNaN), "%");
   const std::string few = too_few_values(b, fit);
-  const std::string rejected = rejected_fit(b, fit, fit_id, empirical);
+  const std::string rejected = rejected_fit(b, fit, fit_id, row ? row->simulated_empirical : kNaN);
   if (!acceptable)
     set(l, CheckStatus::not_applicable, "no acceptable probability given (" + pct(p) + ")");
   else if (std::isnan(p))
@@ -268,15 +269,13 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
         set(l, CheckStatus::fail, "height " + has + " < h_i " + needs);
     }
     elongation_line(b, c);
-    const double pE = d.exceedance.size() > 1 ? d.exceedance[1].simulated_weibull : kNaN;
-    const double ph = d.exceedance.size() > 2 ? d.exceedance[2].simulated_weibull : kNaN;
-    const double eE = d.exceedance.size() > 1 ? d.exceedance[1].simulated_empirical : kNaN;
-    const double eh = d.exceedance.size() > 2 ? d.exceedance[2].simulated_empirical : kNaN;
+    // Table 4.2's columns: P(E > SEL_req), P(E > MEL_req), P(h > h_i), ...
+    auto column = [&](std::size_t k) { return d.exceedance.size() > k ? &d.exceedance[k] : nullptr; };
     exceedance_line(b, "exceedance.energy",
-                    "P(E > MEL_req) from the Weibull fit of the simulated energies", pE, eE,
+                    "P(E > MEL_req) from the Weibull fit of the simulated energies", column(1),
                     d.spec.acceptable_energy_exceedance, d.energy, "fit.E");
     exceedance_line(b, "exceedance.height",
-                    "P(h > h_i) from the Weibull fit of the simulated passing heights", ph, eh,
+                    "P(h > h_i) from the Weibull fit of the simulated passing heights", column(2),
                     d.spec.acceptable_height_exceedance, d.height, "fit.h");
   }
   fit_line(b, "fit.v", "the speeds", d.speed);

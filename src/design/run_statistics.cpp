@@ -35,7 +35,7 @@ void RunSamples::add(const sim::TrajectorySummary& t) {
   if (r < stops_.size()) ++stops_[r];
   if (t.steep_stop_tan > 0) {
     ++steep_energy_stops_;
-    steepest_deg_ = std::max(steepest_deg_, std::atan(double{t.steep_stop_tan}) * 180.0 / std::numbers::pi);
+    steepest_tan_ = std::max(steepest_tan_, double{t.steep_stop_tan});
   }
 }
 
@@ -105,7 +105,7 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   for (std::size_t k = 0; k < kStopReasonCount; ++k)
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();
-  s.steepest_energy_stop_deg = samples.steepest_energy_stop_deg();
+  s.steepest_energy_stop_deg = std::atan(samples.steepest_energy_stop_tan()) * 180.0 / std::numbers::pi;
   return s;
 }
 

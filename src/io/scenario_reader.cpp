@@ -371,9 +371,7 @@ design::DesignBlock read_design_block(const TomlTable& t, std::vector<InputNote>
   // The blocks' own limit and unit slip (section_readers.cpp), for the block designed on.
   const double mass = b.volume * b.density;
   d->check("volume", mass <= ModelDefaults::max_block_mass,
-           fmt::format("a design block of at most {:g} kg (here {:g} m³ × density {:g} kg/m³ = "
-                       "{:g} kg; larger is a rock avalanche, beyond a lumped-mass model)",
-                       ModelDefaults::max_block_mass, b.volume, b.density, mass));
+           detail::block_mass_limit("a design block", b.volume, b.density, mass, true));
   note_density(*d, b.density, notes);
   return b;
 }

@@ -283,17 +283,6 @@ struct GroupSource {  // where a block group was written, for messages
   std::string density_field;
 };
 
-// The expectation of a block heavier than the model's limit. Given by volume, it shows the
-// density that made the mass (a density typed in t/m³ or g/cm³ times 1000 is the usual cause).
-std::string block_mass_limit(const BlockGroup& g, bool by_volume) {
-  return fmt::format("a block of at most {:g} kg ({}larger is a rock avalanche, beyond a "
-                     "lumped-mass model)",
-                     ModelDefaults::max_block_mass,
-                     by_volume ? fmt::format("here {:g} m³ × density {:g} kg/m³ = {:g} kg; ",
-                                             g.volume, g.density, g.mass)
-                               : std::string());
-}
-
 void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
                      std::vector<BlockGroup>& groups, std::vector<GroupSource>& where) {
   const std::vector<std::string> columns = {"id",        "mass",      "volume", "density",
@@ -339,7 +328,8 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
     }
     if (!(g.mass <= ModelDefaults::max_block_mass))
       throw InputError(file, r.line, has_mass ? "mass" : "volume",
-                       r.cells[has_mass ? *c_mass : *c_vol], block_mass_limit(g, !has_mass));
+                       r.cells[has_mass ? *c_mass : *c_vol],
+                       block_mass_limit("a block", g.volume, g.density, g.mass, !has_mass));
     g.shape_min = present(r, c_smin) ? t.number(r, *c_smin) : shape.min;
     g.shape_max = present(r, c_smax) ? t.number(r, *c_smax) : shape.max;
     if (!shape_ok(g.shape_min, g.shape_max))
@@ -407,6 +397,16 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
 
 }  // namespace
 
+std::string block_mass_limit(std::string_view what, double volume, double density, double mass,
+                             bool by_volume) {
+  return fmt::format("{} of at most {:g} kg ({}larger is a rock avalanche, beyond a "
+                     "lumped-mass model)",
+                     what, ModelDefaults::max_block_mass,
+                     by_volume ? fmt::format("here {:g} m³ × density {:g} kg/m³ = {:g} kg; ", volume,
+                                             density, mass)
+                               : std::string());
+}
+
 void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
                  std::vector<model::Block>& blocks, std::string_view table_path,
                  std::vector<InputNote>& notes) {
@@ -442,7 +442,7 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
         g.mass = g.volume * g.density;
       }
       t.check(mass ? "mass" : "volume", g.mass <= ModelDefaults::max_block_mass,
-              block_mass_limit(g, !mass));
+              block_mass_limit("a block", g.volume, g.density, g.mass, !mass));
       const ShapeRange s = read_shape(t).value_or(shape);
       g.shape_min = s.min;
       g.shape_max = s.max;

@@ -45,6 +45,12 @@ void read_blocks(const TomlTable& parent, std::vector<BlockGroup>& groups,
 // the wrong cause. No section comes near.
 inline constexpr double kMaxCoordinate = 1e9;
 
+// The expectation of a block (`what`: "a block", "a design block") heavier than the model's
+// limit. Given by volume, it shows the density that made the mass (a density typed in t/m³ or
+// g/cm³ times 1000 is the usual cause).
+std::string block_mass_limit(std::string_view what, double volume, double density, double mass,
+                             bool by_volume);
+
 // Densities of rock (kg/m³): from porous tuff and chalk (~1500) to the heaviest ores in a quarry
 // face (~4000). Outside, a density in t/m³ or g/cm³ (2.65) is far likelier than a rock.
 inline constexpr double kRockDensityMin = 1500.0;

@@ -9,6 +9,12 @@
 #include "pierre/design/number_text.hpp"
 
 namespace pierre::io::detail {
+namespace {
+// A note over the print area's width, A:J (16 + 20 + 34 + 2·12 + 10 + 26 + 10 + 44 + 12 = 196,
+// the widths set below), wrapped: in one cell it ran off the printed page.
+constexpr Col kNoteLast = 9;
+constexpr double kNoteWidth = 196;
+}  // namespace
 
 void Report::summary(lxw_worksheet* ws) {
   page_setup(ws);
@@ -129,10 +135,10 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
     ++r;
   }
   // How each class was chosen: on which capacity, from which table (its source).
-  // Over the print area's width (A:J, 196 wide), wrapped: it ran off the printed page.
+  // Over the print area's width (kNoteWidth).
   for (const auto& b : d_.barriers)
     if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
-      paragraph(ws, r++, 0, 9, 196, b.spec.name + ": class " + std::to_string(b.energy_class->number) +
+      paragraph(ws, r++, 0, kNoteLast, kNoteWidth, b.spec.name + ": class " + std::to_string(b.energy_class->number) +
                            (b.energy_class->open_ended ? "+" : "") + ", " + it->second +
                            (b.energy_class->open_ended
                                 ? fmt::format("; the class is open-ended: the kit must declare MEL >= "
@@ -199,9 +205,8 @@ Row Report::summary_stops(lxw_worksheet* ws, Row r) {
         number("percent", 1));
     text(ws, r++, 3, t_.get("labels", key));
   }
-  // Over the print area's width (A:J, 196 wide), wrapped, as the class notes.
   for (const auto& n : design::stop_reason_notes(d_.statistics))
-    paragraph(ws, r++, 0, 9, 196, n, wrapped_note());
+    paragraph(ws, r++, 0, kNoteLast, kNoteWidth, n, wrapped_note());
   return r;
 }
 

@@ -48,9 +48,9 @@ class RunSamples {
   const std::vector<double>& runout() const { return runout_; }  // m, one per trajectory
   const std::array<std::uint64_t, kStopReasonCount>& stop_reasons() const { return stops_; }
   // Energy stops on ground steeper than its friction angle (TrajectorySummary), and the
-  // steepest such ground's slope (°).
+  // steepest such ground's tan β.
   std::uint64_t steep_energy_stops() const { return steep_energy_stops_; }
-  double steepest_energy_stop_deg() const { return steepest_deg_; }
+  double steepest_energy_stop_tan() const { return steepest_tan_; }
   std::uint64_t trajectories() const { return runout_.size(); }
 
  private:
@@ -62,7 +62,7 @@ class RunSamples {
   std::vector<double> runout_;
   std::array<std::uint64_t, kStopReasonCount> stops_{};
   std::uint64_t steep_energy_stops_ = 0;
-  double steepest_deg_ = 0;
+  double steepest_tan_ = 0;
 };
 
 // count, mean, P50, P95 and max of one quantity; NaN statistics when count is 0.
