@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -129,7 +130,26 @@ class Presets {
   std::map<std::string, model::Material> presets_;
 };
 
-std::vector<model::Material> read_materials(const TomlTable& top, Presets& presets) {
+// The roughness is the one input that is not an angle in degrees but a tangent scale
+// (model-2d.md §1; tan θ = θ_scale · X · f_size, §3.4.1), so an angle typed into it (35) or a
+// percentage (65) passes its range check. The calibrated sets use 0.3 to 0.72, the thesis says
+// typically 0.3 to 1.5; beyond 2 the typical roughness angle (X about 0.5) is over 45°.
+constexpr double kRoughnessScaleHigh = 2.0;
+
+void note_roughness(const TomlTable& t, double scale, std::vector<InputNote>& notes) {
+  if (scale <= kRoughnessScaleHigh) return;
+  constexpr double kTypicalX = 0.5;
+  const double typical_deg = std::atan(kTypicalX * scale) * 180.0 / std::numbers::pi;
+  notes.push_back({t.file(), line_of(*t.find("roughness")), t.field("roughness"),
+                   fmt::format("roughness {:g} is a tangent scale, not an angle or a percentage: "
+                               "tan θ = roughness · X, and with X about 0.5 the typical "
+                               "roughness angle is {:.0f}° (the calibrated sets use 0.3 to 0.72, "
+                               "typically 0.3 to 1.5)",
+                               scale, typical_deg)});
+}
+
+std::vector<model::Material> read_materials(const TomlTable& top, Presets& presets,
+                                            std::vector<InputNote>& notes) {
   const auto mats = top.subtable("materials", {});
   if (!mats) top.missing("materials", "a [materials.NAME] table for each material of the profile");
   std::vector<model::Material> out;
@@ -159,6 +179,8 @@ std::vector<model::Material> read_materials(const TomlTable& top, Presets& prese
     }
     m.name = name;
     const auto set = read_material_fields(t, m);
+    if (std::find(set.begin(), set.end(), "roughness") != set.end())
+      note_roughness(t, m.roughness, notes);
     if (from_preset) {
       if (!set.empty()) {
         std::string list;
@@ -383,6 +405,55 @@ std::optional<double> positive_number(const TomlTable& t, std::string_view key,
   return v;
 }
 
+// A candidate's or a block's value far beyond its kind: most likely typed in the smaller unit
+// (mm for m, J for kJ), which passes every range check. Noted at the value, with what it is in
+// that unit. `beyond`: what the limit stands for.
+struct UnitSlip {
+  double limit;
+  const char* unit;
+  const char* small_unit;  // a thousandth of `unit`
+  std::string beyond;
+};
+
+void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
+                    const UnitSlip& u, std::vector<InputNote>& notes) {
+  if (!(v > u.limit)) return;
+  notes.push_back({t.file(), line_of(*t.find(key)), t.field(key),
+                   fmt::format("{} {:g} {} is more than {:g} {}{}: it is read in {}; if it was "
+                               "meant in {}, it is {:g} {}",
+                               what, v, u.unit, u.limit, u.unit, u.beyond, u.unit, u.small_unit,
+                               v / 1000, u.unit)});
+}
+
+// Rockfall barriers are some metres high and stretch some metres; their energies are up to
+// some thousands of kJ (ETAG 027's last class: MEL > 4 500 kJ). The limits are far beyond
+// those, to catch only a value in mm or J.
+constexpr double kTallestBarrier = 20.0;            // m
+constexpr double kLongestElongation = 30.0;         // m
+constexpr double kLargestBarrierEnergy = 30e3;      // kJ
+constexpr double kLargestFreeBoardDiameter = 10.0;  // m: a block of some 1 400 t at 2650 kg/m³
+
+void note_candidate(const TomlTable& c, const design::CandidateBarrier& k,
+                    const design::EnergyClassTable& classes, std::vector<InputNote>& notes) {
+  double largest_mel = 0;
+  for (const auto& e : classes.classes) largest_mel = std::max(largest_mel, e.mel_kJ);
+  const UnitSlip energy{kLargestBarrierEnergy, "kJ", "J",
+                        fmt::format(" ({} reaches MEL {:g} kJ)", classes.name, largest_mel)};
+  const UnitSlip length{kTallestBarrier, "m", "mm", ""};
+  const UnitSlip stretch{kLongestElongation, "m", "mm", ""};
+  if (k.mel_kJ) note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ, energy, notes);
+  // The SEL is at most the MEL: said for itself only when no MEL is given.
+  if (k.sel_kJ && !k.mel_kJ)
+    note_unit_slip(c, "sel", "the candidate's SEL", *k.sel_kJ, energy, notes);
+  if (k.height) note_unit_slip(c, "height", "the candidate's height", *k.height, length, notes);
+  if (k.elongation_mel)
+    note_unit_slip(c, "elongation_mel", "the elongation in the MEL test", *k.elongation_mel,
+                   stretch, notes);
+  if (k.elongation_sel)
+    note_unit_slip(c, "elongation_sel", "the elongation in the SEL test", *k.elongation_sel,
+                   stretch, notes);
+}
+
 design::CandidateBarrier read_candidate(const TomlTable& c, const design::EnergyClassTable& classes) {
   design::CandidateBarrier k;
   if (auto n = c.integer("energy_class")) {
@@ -425,7 +496,13 @@ design::CandidateBarrier read_candidate(const TomlTable& c, const design::Energy
   return k;
 }
 
-design::ObservedSample read_observed(const fs::path& file) {
+// Observed crossings beyond any rockfall (a column in km/h, cm or J, each a plausible slip
+// that passes the >= 0 check): noted once per column, at its first such row.
+constexpr double kFastestRockfall = 60.0;        // m/s (216 km/h)
+constexpr double kHighestPassing = 30.0;         // m
+constexpr double kLargestObservedEnergy = 30e3;  // kJ, as a barrier's (above)
+
+design::ObservedSample read_observed(const fs::path& file, std::vector<InputNote>& notes) {
   const std::vector<std::string> columns = {"speed_m_s", "height_m", "energy_kJ"};
   const CsvTable t = detail::read_csv(file, columns, "speed_m_s, height_m and/or energy_kJ", {},
                                       columns);  // a value not measured for a block: empty
@@ -435,21 +512,46 @@ design::ObservedSample read_observed(const fs::path& file) {
     const char* name;
     std::vector<double>* out;
     double scale;
+    double limit;
+    const char* unit;
+    const char* beyond;
+    const char* slip;  // the unit it was likely typed in, and the value it then has
+    double slip_factor;
   };
-  const Col cols[] = {{"speed_m_s", &o.speed, 1.0}, {"height_m", &o.height, 1.0},
-                      {"energy_kJ", &o.energy, 1000.0}};
+  const Col cols[] = {{"speed_m_s", &o.speed, 1.0, kFastestRockfall, "m/s",
+                       "far faster than blocks cross a line on a slope", "km/h", 1 / 3.6},
+                      {"height_m", &o.height, 1.0, kHighestPassing, "m",
+                       "far higher than blocks pass a barrier's line", "cm", 0.01},
+                      {"energy_kJ", &o.energy, 1000.0, kLargestObservedEnergy, "kJ",
+                       "far beyond any barrier's energy class", "J", 0.001}};
   bool any = false;
   for (const Col& c : cols) {
     const auto idx = t.column(c.name);
     if (!idx) continue;
     any = true;
+    long first_line = 0;
+    double first = 0;
+    std::size_t beyond = 0;
     for (const auto& r : t.rows) {
       if (r.cells[*idx].empty()) continue;
       const double v = t.number(r, *idx);
       if (!(v >= 0))
         throw InputError(file, r.line, c.name, r.cells[*idx], "a value >= 0");
+      if (v > c.limit && beyond++ == 0) {
+        first_line = r.line;
+        first = v;
+      }
       c.out->push_back(v * c.scale);
     }
+    if (beyond > 0)
+      notes.push_back(
+          {file, first_line, c.name,
+           fmt::format("{} {:g} {}{} is more than {:g} {}, {}: the column is read in {}; if it "
+                       "is in {}, {:g} is {:.3g} {}",
+                       c.name, first, c.unit,
+                       beyond > 1 ? fmt::format(" (and {} more rows like it)", beyond - 1) : "",
+                       c.limit, c.unit, c.beyond, c.unit, c.slip, first, first * c.slip_factor,
+                       c.unit)});
   }
   if (!any)
     throw InputError(file, t.header_line, "header", "none of the columns",
@@ -541,6 +643,11 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
 
     b.design_block = read_design_block(t, out.notes);
     b.free_board_diameter = positive_number(t, "free_board_diameter", "a diameter > 0 (m)");
+    if (b.free_board_diameter)
+      note_unit_slip(
+          t, "free_board_diameter", "the free-board diameter", *b.free_board_diameter,
+          {kLargestFreeBoardDiameter, "m", "mm", ", the diameter of a block of over 1 000 t"},
+          out.notes);
 
     // Data-quality answers: exactly the questions the rule set asks.
     const auto questions = design::data_quality_questions(rules);
@@ -587,10 +694,12 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
       if (std::find(answers.begin(), answers.end(), it->second) == answers.end()) dq->fail(q, expected);
     }
 
-    if (const auto c = t.subtable("candidate", {"energy_class", "mel", "sel", "height",
-                                                "elongation_mel", "elongation_sel",
-                                                "distance_to_object", "residual_height"}))
+    if (const auto c =
+            t.subtable("candidate", {"energy_class", "mel", "sel", "height", "elongation_mel",
+                                     "elongation_sel", "distance_to_object", "residual_height"})) {
       b.candidate = read_candidate(*c, classes);
+      note_candidate(*c, *b.candidate, classes, out.notes);
+    }
     for (const char* key : {"acceptable_energy_exceedance", "acceptable_height_exceedance"}) {
       const auto p = t.number(key);
       if (!p) continue;
@@ -605,7 +714,8 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
     if (const auto f = t.string("observed")) {
       t.check("observed", !f->empty(), "a CSV file of observed speeds, heights, energies");
       b.observed_file = *f;
-      observed = read_observed(*t.file_path("observed", "CSV file of observed crossings"));
+      observed =
+          read_observed(*t.file_path("observed", "CSV file of observed crossings"), out.notes);
     }
     out.barriers.push_back(std::move(b));
     out.barrier_rules.push_back(rules);
@@ -643,7 +753,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
                   head->has("materials_file")
                       ? std::string("materials file (TOML)")
                       : "materials file (TOML) in " + rules.named());
-  out.scenario.materials = read_materials(top, presets);
+  out.scenario.materials = read_materials(top, presets, out.notes);
   if (top.has("quarries")) {
     // A quarry scenario: every section brings its own profile, blocks and sources; the
     // top-level ones (and what stands on them) would be a second, unused meaning.

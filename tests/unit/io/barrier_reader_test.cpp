@@ -126,6 +126,66 @@ TEST(BarrierReader, ADesignBlockDensityOutsideRockIsNoted) {
   EXPECT_TRUE(notes("{ percentile = 90, density = 2700.0 }").empty());
 }
 
+// A barrier's numbers in the smaller unit (mm for m, J for kJ, km/h for m/s) pass every range
+// check and change the design a thousandfold: each noted at its value, with what it would be.
+TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
+  TempDir dir;
+  auto notes = [&](const std::string& fields) {
+    const std::string barrier =
+        "[[barriers]]\nname = \"B\"\nline = \"L\"\nrules = \"thesis-2015\"\n" + fields + "\n";
+    return io::load_scenario(dir.write("s.toml", with_barrier(barrier)), kRules).notes;
+  };
+  // The kFull barrier's values, in m and kJ: none.
+  EXPECT_TRUE(notes("free_board_diameter = 1.1\n[barriers.candidate]\nmel = 3200.0\nheight = 5.0\n"
+                    "elongation_mel = 6.0\nelongation_sel = 4.0")
+                  .empty());
+  const auto slips = notes("free_board_diameter = 1100.0\n[barriers.candidate]\nmel = 3.2e6\n"
+                           "height = 5000.0\nelongation_mel = 6000.0\nelongation_sel = 4000.0");
+  ASSERT_EQ(slips.size(), 5u);
+  EXPECT_EQ(slips[0].line, 32);
+  EXPECT_EQ(slips[0].field, "barriers[0].free_board_diameter");
+  EXPECT_EQ(slips[0].text,
+            "the free-board diameter 1100 m is more than 10 m, the diameter of a block of over "
+            "1 000 t: it is read in m; if it was meant in mm, it is 1.1 m");
+  EXPECT_EQ(slips[1].field, "barriers[0].candidate.mel");
+  EXPECT_EQ(slips[1].line, 34);
+  EXPECT_EQ(slips[1].text,
+            "the candidate's MEL 3.2e+06 kJ is more than 30000 kJ (etag027-classes reaches MEL "
+            "4500 kJ): it is read in kJ; if it was meant in J, it is 3200 kJ");
+  EXPECT_EQ(slips[2].field, "barriers[0].candidate.height");
+  EXPECT_NE(slips[2].text.find("if it was meant in mm, it is 5 m"), std::string::npos) << slips[2].text;
+  EXPECT_EQ(slips[3].field, "barriers[0].candidate.elongation_mel");
+  EXPECT_EQ(slips[4].field, "barriers[0].candidate.elongation_sel");
+  // The limits themselves are taken as they are; an SEL alone is judged as the MEL would be.
+  EXPECT_TRUE(notes("free_board_diameter = 10.0\n[barriers.candidate]\nmel = 30000.0\nheight = 20.0\n"
+                    "elongation_mel = 30.0")
+                  .empty());
+  const auto sel = notes("[barriers.candidate]\nsel = 1e6");
+  ASSERT_EQ(sel.size(), 1u);
+  EXPECT_EQ(sel[0].field, "barriers[0].candidate.sel");
+}
+
+TEST(BarrierReader, ObservedColumnsInTheSmallerUnitAreNoted) {
+  TempDir dir;
+  const auto obs = dir.write("obs.csv",
+                             "speed_m_s,height_m,energy_kJ\n54.0,1.2,300\n72.0,150,410\n90.0,2.0,4.1e5\n");
+  const std::string barrier =
+      "[[barriers]]\nname = \"B\"\nline = \"L\"\nrules = \"thesis-2015\"\nobserved = \"obs.csv\"\n";
+  const auto notes = io::load_scenario(dir.write("s.toml", with_barrier(barrier)), kRules).notes;
+  ASSERT_EQ(notes.size(), 3u);
+  EXPECT_EQ(notes[0].file, obs);
+  EXPECT_EQ(notes[0].line, 3);  // 54 km/h is 15 m/s, a speed a block has: not noted
+  EXPECT_EQ(notes[0].field, "speed_m_s");
+  EXPECT_EQ(notes[0].text,
+            "speed_m_s 72 m/s (and 1 more rows like it) is more than 60 m/s, far faster than "
+            "blocks cross a line on a slope: the column is read in m/s; if it is in km/h, 72 is "
+            "20 m/s");
+  EXPECT_EQ(notes[1].line, 3);
+  EXPECT_NE(notes[1].text.find("if it is in cm, 150 is 1.5 m"), std::string::npos) << notes[1].text;
+  EXPECT_EQ(notes[2].line, 4);
+  EXPECT_NE(notes[2].text.find("if it is in J, 410000 is 410 kJ"), std::string::npos) << notes[2].text;
+}
+
 TEST(BarrierReader, NoBarriersNoVectors) {
   TempDir dir;
   const auto l = io::load_scenario(dir.write("s.toml", test::base()), kRules);

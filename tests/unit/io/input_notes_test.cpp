@@ -217,6 +217,32 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 1e6")).empty());
 }
 
+// The roughness is a tangent scale, the one input that is not in degrees: an angle (35) or a
+// percentage (65) typed into it passes its range check.
+TEST(InputNotes, ARoughnessLikeAnAngleIsNoted) {
+  TempDir dir;
+  const fs::path s = dir.path() / "s.toml";
+  const auto notes = notes_of(dir, base_with(14, "roughness = 35.0"));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].message(),
+            s.string() + ":14: materials.rock.roughness: roughness 35 is a tangent scale, not an "
+                         "angle or a percentage: tan θ = roughness · X, and with X about 0.5 the "
+                         "typical roughness angle is 87° (the calibrated sets use 0.3 to 0.72, "
+                         "typically 0.3 to 1.5)");
+  EXPECT_NE(notes_of(dir, base_with(14, "roughness = 2.5"))[0].text.find("angle is 51°"),
+            std::string::npos);  // atan(1.25)
+  EXPECT_TRUE(notes_of(dir, base_with(14, "roughness = 2.0")).empty());
+  // Over a preset too: where the value is written.
+  auto lines = pierre::test::base_lines();
+  lines.at(11) = "preset = \"talus\"";  // line 12
+  lines.at(13) = "roughness = 65.0";      // line 14
+  std::string over_preset;
+  for (const auto& l : lines) over_preset += l + "\n";
+  const auto over = notes_of(dir, over_preset);
+  ASSERT_EQ(over.size(), 1u);
+  EXPECT_EQ(over[0].line, 14);
+}
+
 // Lines count crossings in the vertex order, away from the sources: one upslope of every source
 // is crossed by no block (a design there has nothing to stand on), said at its x.
 TEST(InputNotes, ALineBehindEverySourceIsNoted) {
