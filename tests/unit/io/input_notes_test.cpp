@@ -148,14 +148,11 @@ TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
       << deep[0].text;
   const std::string tall = "points = [[0.0, 400.0, \"rock\"], [10.0, 0.0, \"rock\"], [200.0, 0.0, \"\"]]";
   auto scenario = [&](const std::string& source) {
-    auto lines = pierre::test::base_lines();
-    lines.at(8) = tall;
-    lines.at(20) = source;
-    lines.at(21) = "z = " + std::string(source == "x = 100.0" ? "350.0" : "420.0");
-    lines.at(25) = "x = 180.0";  // the line ahead of the source (behind it is noted too)
-    std::string text;
-    for (const auto& l : lines) text += l + "\n";
-    return text;
+    return base_with({{9, tall},
+                      {21, source},
+                      {22, "z = " + std::string(source == "x = 100.0" ? "350.0" : "420.0")},
+                      // the line ahead of the source (behind it is noted too)
+                      {26, "x = 180.0"}});
   };
   EXPECT_TRUE(notes_of(dir, scenario("x = 100.0")).empty());  // 350 m: less than 400 m
   const auto n = notes_of(dir, scenario("x = 150.0"));         // 420 m: more
@@ -233,12 +230,7 @@ TEST(InputNotes, ARoughnessLikeAnAngleIsNoted) {
             std::string::npos);  // atan(1.25)
   EXPECT_TRUE(notes_of(dir, base_with(14, "roughness = 2.0")).empty());
   // Over a preset too: where the value is written.
-  auto lines = pierre::test::base_lines();
-  lines.at(11) = "preset = \"talus\"";  // line 12
-  lines.at(13) = "roughness = 65.0";      // line 14
-  std::string over_preset;
-  for (const auto& l : lines) over_preset += l + "\n";
-  const auto over = notes_of(dir, over_preset);
+  const auto over = notes_of(dir, base_with({{12, "preset = \"talus\""}, {14, "roughness = 65.0"}}));
   ASSERT_EQ(over.size(), 1u);
   EXPECT_EQ(over[0].line, 14);
 }
@@ -258,12 +250,8 @@ TEST(InputNotes, ALineBehindEverySourceIsNoted) {
                          "x, or the order of the profile's vertices");
   EXPECT_TRUE(notes_of(dir, base_with(26, "x = 1.0")).empty());  // at the source: not behind it
   // Behind one source but ahead of another: that one's blocks reach it.
-  auto lines = pierre::test::base_lines();
-  lines.at(22) = "[[sources]]\nx = 0.2\nz = 11.0\n";  // line 23
-  lines.at(25) = "x = 0.5";                              // line 26
-  std::string two;
-  for (const auto& l : lines) two += l + "\n";
-  EXPECT_TRUE(notes_of(dir, two).empty());
+  EXPECT_TRUE(notes_of(dir, base_with({{23, "[[sources]]\nx = 0.2\nz = 11.0\n"}, {26, "x = 0.5"}}))
+                  .empty());
 }
 
 // A quarry section's profile and sources are read by the same readers: its notes are the

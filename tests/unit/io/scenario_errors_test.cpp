@@ -31,13 +31,7 @@ struct Case {
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
-std::string scenario_text(const Case& c) {
-  auto lines = base_lines();
-  for (const auto& [n, text] : c.replace) lines.at(static_cast<std::size_t>(n - 1)) = text;
-  std::string s;
-  for (const auto& l : lines) s += l + "\n";
-  return s;
-}
+std::string scenario_text(const Case& c) { return pierre::test::base_with(c.replace); }
 
 class ScenarioError : public ::testing::TestWithParam<Case> {};
 
@@ -228,12 +222,9 @@ TEST(ScenarioFiles, AMissingFileSaysWhereARelativePathIsLookedFor) {
   TempDir dir;
   const std::string absolute = (dir.path() / "nowhere" / "p.csv").string();
   for (const std::string& name : {std::string("p.csv"), absolute}) {
-    auto lines = base_lines();
-    lines.at(8) = "file = \"" + name + "\"";
-    std::string text;
-    for (const auto& l : lines) text += l + "\n";
     try {
-      (void)load_scenario(dir.write("s.toml", text), kRules);
+      (void)load_scenario(dir.write("s.toml", pierre::test::base_with(9, "file = \"" + name + "\"")),
+                          kRules);
       FAIL() << "no InputError for " << name;
     } catch (const InputError& e) {
       EXPECT_EQ(e.field(), "profile.file");

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pierre::test {
@@ -76,14 +77,16 @@ inline std::vector<std::string> base_lines() {
   };
 }
 
-// The base scenario with line `n` (1-based) replaced by `text` (which may hold several lines).
-inline std::string base_with(int n, const std::string& text) {
+// The base scenario with each line n (1-based) replaced by its text (which may hold several
+// lines).
+inline std::string base_with(const std::vector<std::pair<int, std::string>>& changes) {
   auto lines = base_lines();
-  lines.at(static_cast<std::size_t>(n - 1)) = text;
+  for (const auto& [n, text] : changes) lines.at(static_cast<std::size_t>(n - 1)) = text;
   std::string s;
   for (const auto& l : lines) s += l + "\n";
   return s;
 }
+inline std::string base_with(int n, const std::string& text) { return base_with({{n, text}}); }
 
 inline std::string base() { return base_with(3, ""); }
 
