@@ -85,7 +85,7 @@ std::optional<double> positive_number(const TomlTable& t, std::string_view key,
   return v;
 }
 
-// A candidate's or a block's value far beyond its kind: most likely typed in the smaller unit
+// A barrier's value far beyond its kind: most likely typed in the smaller unit
 // (mm for m, J for kJ), which passes every range check. Noted at the value, with what it is in
 // that unit. `beyond`: what the limit stands for.
 struct UnitSlip {
@@ -115,10 +115,13 @@ constexpr double kLargestFreeBoardDiameter = 10.0;  // m: a block of some 1 400 
 
 void note_candidate(const TomlTable& c, const design::CandidateBarrier& k,
                     const design::EnergyClassTable& classes, std::vector<InputNote>& notes) {
-  double largest_mel = 0;
-  for (const auto& e : classes.classes) largest_mel = std::max(largest_mel, e.mel_kJ);
+  const design::EnergyClass* top = nullptr;
+  for (const auto& e : classes.classes)
+    if (!top || e.mel_kJ >= top->mel_kJ) top = &e;  // the last of equals: the open-ended one
   const UnitSlip energy{kLargestBarrierEnergy, "kJ", "J",
-                        fmt::format(" ({} reaches MEL {:g} kJ)", classes.name, largest_mel)};
+                        top ? fmt::format(" (the largest class of {}: MEL {}{:g} kJ)", classes.name,
+                                          top->open_ended ? "> " : "", top->mel_kJ)
+                            : ""};
   const UnitSlip length{kTallestBarrier, "m", "mm", ""};
   const UnitSlip stretch{kLongestElongation, "m", "mm", ""};
   if (k.mel_kJ) note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ, energy, notes);

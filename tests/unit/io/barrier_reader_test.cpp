@@ -150,8 +150,8 @@ TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
   EXPECT_EQ(slips[1].field, "barriers[0].candidate.mel");
   EXPECT_EQ(slips[1].line, 34);
   EXPECT_EQ(slips[1].text,
-            "the candidate's MEL 3.2e+06 kJ is more than 30000 kJ (etag027-classes reaches MEL "
-            "4500 kJ): it is read in kJ; if it was meant in J, it is 3200 kJ");
+            "the candidate's MEL 3.2e+06 kJ is more than 30000 kJ (the largest class of "
+            "etag027-classes: MEL > 4500 kJ): it is read in kJ; if it was meant in J, it is 3200 kJ");
   EXPECT_EQ(slips[2].field, "barriers[0].candidate.height");
   EXPECT_NE(slips[2].text.find("if it was meant in mm, it is 5 m"), std::string::npos) << slips[2].text;
   EXPECT_EQ(slips[3].field, "barriers[0].candidate.elongation_mel");
