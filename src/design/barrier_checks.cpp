@@ -136,9 +136,21 @@ std::string rejected_fit(const Builder& b, const QuantityFit& q, const char* fit
          pct(empirical) + " exceed";
 }
 
-// `row`: its column of Table 4.2 (none without a design).
+// The candidate's own capacity (its MEL, its height) where the spec's probability is taken at
+// the required one (MEL_req, h_i): `name` ("MEL"), its value, its unit and its capacity line.
+struct OwnCapacity {
+  const char* name;
+  double value;
+  const char* unit;
+  const char* line;
+};
+
+// `row`: its column of Table 4.2 (none without a design). The line judges P(X > required), as
+// design-checks.md §1 fixes it, whatever the candidate; a candidate below the requirement is
+// exceeded more often: the reason adds how often, and a PASS becomes a WARN.
 void exceedance_line(Builder& b, const char* id, const std::string& what, const ExceedanceRow* row,
-                     std::optional<double> acceptable, const QuantityFit& fit, const char* fit_id) {
+                     std::optional<double> acceptable, const QuantityFit& fit, const char* fit_id,
+                     const OwnCapacity& own) {
   const double p = row ? row->simulated_weibull : kNaN;
   CheckLine& l = b.add(id, what, 100 * p, 100 * acceptable.value_or(kNaN), "%");
   const std::string few = too_few_values(b, fit);
@@ -158,6 +170,15 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, const 
     set(l, CheckStatus::pass, pct(p) + " <= acceptable " + pct(*acceptable));
   else
     set(l, CheckStatus::fail, pct(p) + " > acceptable " + pct(*acceptable));
+  if (row && own.value < row->threshold) {
+    // Not a PASS beside the FAIL of the candidate's own capacity line: the line still judges
+    // the spec's value, and says what it does not cover.
+    if (l.status == CheckStatus::pass) l.status = CheckStatus::warn;
+    l.reason += "; but the candidate's own " + std::string(own.name) + " " + num(own.value) +
+                " " + own.unit + " is below the required " + num(row->threshold) + " " +
+                own.unit + " (" + own.line + ") and is exceeded with " +
+                pct(weibull_exceedance(fit, own.value));
+  }
 }
 
 void fit_line(Builder& b, const char* id, const char* quantity, const QuantityFit& q) {
@@ -273,10 +294,12 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
     auto column = [&](std::size_t k) { return d.exceedance.size() > k ? &d.exceedance[k] : nullptr; };
     exceedance_line(b, "exceedance.energy",
                     "P(E > MEL_req) from the Weibull fit of the simulated energies", column(1),
-                    d.spec.acceptable_energy_exceedance, d.energy, "fit.E");
+                    d.spec.acceptable_energy_exceedance, d.energy, "fit.E",
+                    {"MEL", d.candidate_mel_kJ, "kJ", "energy.mel"});
     exceedance_line(b, "exceedance.height",
                     "P(h > h_i) from the Weibull fit of the simulated passing heights", column(2),
-                    d.spec.acceptable_height_exceedance, d.height, "fit.h");
+                    d.spec.acceptable_height_exceedance, d.height, "fit.h",
+                    {"height", c.height.value_or(kNaN), "m", "height.interception"});
   }
   fit_line(b, "fit.v", "the speeds", d.speed);
   fit_line(b, "fit.h", "the passing heights", d.height);

@@ -91,6 +91,10 @@ Characteristic characteristic_value(const QuantityFit& fit, std::span<const doub
   return c;
 }
 
+double weibull_exceedance(const QuantityFit& q, double x) {
+  return weibull_survival(q.weibull, q.point_mass, x);
+}
+
 std::vector<ExceedanceRow> exceedance_rows(const ExceedanceInputs& in) {
   struct Spec {
     const char* what;

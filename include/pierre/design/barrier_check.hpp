@@ -169,6 +169,9 @@ struct ExceedanceInputs {
   std::optional<stats::WeibullFit> observed_energy, observed_height;    // kJ, m
 };
 std::vector<ExceedanceRow> exceedance_rows(const ExceedanceInputs& in);
+// P(X > x) from q's Weibull fit, or its point mass (QuantityFit::point_mass); NaN without
+// either. x in q's unit (kJ, m).
+double weibull_exceedance(const QuantityFit& q, double x);
 
 // The check lines of a computed design (the table of design-checks.md §1). With a candidate:
 // energy.mel, energy.sel, height.interception, elongation, exceedance.energy,

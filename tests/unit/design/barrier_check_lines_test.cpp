@@ -187,6 +187,40 @@ TEST(BarrierCheckLines, ExceedancePassFailAndNotApplicable) {
   EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::fail);
 }
 
+// The exceedance lines judge P(X > MEL_req) and P(h > h_i), as design-checks.md §1 fixes them,
+// whatever the candidate; a candidate below the requirement (which its capacity line FAILs) is
+// exceeded more often: the reason says how often, from the same Weibull fit, and the line WARNs
+// instead of passing beside that FAIL. A candidate at or above the requirement adds nothing.
+TEST(BarrierCheckLines, ACandidateBelowTheRequirementHasItsOwnExceedanceInTheReason) {
+  auto d = base();
+  d.spec.acceptable_energy_exceedance = 0.002;  // P(E > MEL_req) = 0.001: passes
+  d.spec.acceptable_height_exceedance = 0.05;   // P(h > h_i) = 0.02: passes
+  d.energy.weibull = stats::WeibullFit{2, 1000, 400, 0};  // kJ
+  d.height.weibull = stats::WeibullFit{2, 2, 400, 0};     // m
+  auto lines = design::barrier_check_lines(d, rules());   // MEL 2000 >= 1500, 4.5 >= 4.0 m
+  EXPECT_EQ(line(lines, "exceedance.energy").reason, "0.1 % <= acceptable 0.2 %");
+  EXPECT_EQ(line(lines, "exceedance.height").reason, "2 % <= acceptable 5 %");
+  d.candidate_mel_kJ = 1200;
+  d.spec.candidate->height = 3.5;
+  lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::fail);
+  EXPECT_EQ(line(lines, "height.interception").status, CheckStatus::fail);
+  // S(x) = exp(-(x/λ)^k): exp(-1.2²) = 0.2369, exp(-1.75²) = 0.04677.
+  const auto& e = line(lines, "exceedance.energy");
+  EXPECT_EQ(e.status, CheckStatus::warn);
+  EXPECT_DOUBLE_EQ(e.value, 100 * 0.001);  // the spec's value is still P(E > MEL_req)
+  EXPECT_EQ(e.reason, "0.1 % <= acceptable 0.2 %; but the candidate's own MEL 1200 kJ is below "
+                      "the required 1500 kJ (energy.mel) and is exceeded with 23.7 %");
+  EXPECT_NEAR(std::exp(-1.44), 0.237, 5e-4);
+  EXPECT_EQ(line(lines, "exceedance.height").reason,
+            "2 % <= acceptable 5 %; but the candidate's own height 3.5 m is below the required "
+            "4 m (height.interception) and is exceeded with 4.68 %");
+  // A FAIL stays a FAIL, with the same addition.
+  d.spec.acceptable_height_exceedance = 0.01;
+  EXPECT_EQ(status(d, rules(), "exceedance.height"), CheckStatus::fail);
+  EXPECT_NEAR(std::exp(-1.75 * 1.75), 0.0468, 5e-5);
+}
+
 TEST(BarrierCheckLines, FitLinesWarnBelowTheirPValue) {
   auto d = base();
   EXPECT_EQ(status(d, rules(), "fit.v"), CheckStatus::pass);
