@@ -135,7 +135,7 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
       : quarry_sections == 1 ? "; RD from the toe below"
                              : "";
   auto metres = [](double v) { return design::number_cell(v, design::NumberKind::length); };
-  fmt::print(out, "Runout from the release point (m{}):   P50 {}   P95 {}   P99 {}   max {}\n",
+  fmt::print(out, "Horizontal runout from the release point (m{}):   P50 {}   P95 {}   P99 {}   max {}\n",
              pooled, metres(s.runout.p50), metres(s.runout.p95), metres(s.runout.p99),
              metres(s.runout.max));
   fmt::print(out, "Stop reasons:");

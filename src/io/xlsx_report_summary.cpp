@@ -4,6 +4,7 @@
 #include "xlsx_report_writer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "pierre/design/number_text.hpp"
@@ -147,6 +148,30 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
                                               design::number_text(b.SEL_req_kJ, 4))
                                 : std::string()),
            wrapped_note());
+  // The kit each candidate barrier checks, and its verdict from its own check lines: the table
+  // above gives what is required, not what is offered.
+  for (const auto& b : d_.barriers) {
+    if (!b.spec.candidate) continue;
+    const design::CandidateBarrier& c = *b.spec.candidate;
+    std::string kit;
+    auto add = [&](const std::string& part) { kit += (kit.empty() ? "" : ", ") + part; };
+    if (c.energy_class) add("class " + std::to_string(*c.energy_class));
+    if (!std::isnan(b.candidate_mel_kJ)) add("MEL " + design::number_text(b.candidate_mel_kJ, 6) + " kJ");
+    if (!std::isnan(b.candidate_sel_kJ)) add("SEL " + design::number_text(b.candidate_sel_kJ, 6) + " kJ");
+    if (c.height) add(fmt::format("height {:.2f} m", *c.height));
+    std::string fails, warns;
+    for (const auto& l : d_.checks) {
+      if (l.subject != b.spec.name) continue;
+      if (l.status == design::CheckStatus::fail) fails += (fails.empty() ? "" : ", ") + l.id;
+      if (l.status == design::CheckStatus::warn) warns += (warns.empty() ? "" : ", ") + l.id;
+    }
+    std::string s = t_.get("labels", fails.empty() ? "candidate_passes" : "candidate_fails");
+    s = replace_all(replace_all(s, "{barrier}", b.spec.name), "{candidate}", kit);
+    s = replace_all(s, "{lines}", fails);
+    s = replace_all(s, "{warns}",
+                    warns.empty() ? "" : replace_all(t_.get("labels", "candidate_warns"), "{lines}", warns));
+    paragraph(ws, r++, 0, kNoteLast, kNoteWidth, s, wrapped_note());
+  }
   return r;
 }
 

@@ -60,7 +60,7 @@ TEST_F(QuarryCli, WorkAreasOutsideTheZonesExitZero) {
                         "max", "RD_gov", "ID_gov", "Checks", "zone.crusher", "zone.office"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
   // The runout from the release point pools both sections: not their RD, and said so.
-  EXPECT_NE(r.out.find("Runout from the release point (m, 2 sections pooled; RD from the toe below)"),
+  EXPECT_NE(r.out.find("Horizontal runout from the release point (m, 2 sections pooled; RD from the toe below)"),
             std::string::npos) << r.out;
   const auto j = summary(out);
   EXPECT_EQ(j["checks_failed"], false);

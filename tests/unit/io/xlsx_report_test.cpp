@@ -669,6 +669,35 @@ TEST(XlsxReport, ACapacityTheRulesDoNotDesignOnIsInformation) {
   EXPECT_EQ(cell(sum, *b, 8)->text, "1,066.9") << dump(sum, *b);
 }
 
+// The Summary's barrier table gives what is required; under it each candidate barrier names the
+// kit it checks and its verdict from its own check lines (a reviewer found the class-6 kit only
+// on the Inputs sheet, and the table the same whether it passed or failed).
+TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  f->data.barriers.push_back(f->data.barriers.at(0));
+  f->data.barriers.back().spec.name = "Screen B";
+  f->data.checks = {line("Screen A", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass),
+                    line("Screen A", "sample.size", 6.7, 5, "%", design::CheckStatus::warn),
+                    line("Screen B", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass),
+                    line("Screen B", "height.interception", 3.5, 4.02, "m", design::CheckStatus::fail),
+                    line("Screen B", "elongation", 5, 9, "m", design::CheckStatus::fail)};
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::vector<std::string> said;
+  for (const auto& row : sheets.at("Summary"))
+    for (const auto& c : row)
+      if (c.text.find(": the candidate (") != std::string::npos) said.push_back(c.text);
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_EQ(said[0], "Screen A: the candidate (class 6, MEL 3000 kJ, SEL 1000 kJ, height 3.50 m): "
+                     "no check line FAILs; WARN sample.size.");
+  EXPECT_EQ(said[1], "Screen B: the candidate (class 6, MEL 3000 kJ, SEL 1000 kJ, height 3.50 m) "
+                     "FAILS height.interception, elongation.");
+}
+
 // Inputs, a barrier's inputs that the procedure resolved or defaulted: the design block's volume
 // and density by a rule (`largest`), D_f by default, MEL and SEL from the candidate's class. Each
 // shows the value used and where it comes from; they were blank, which a client cannot tell
