@@ -131,9 +131,20 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
   d.how["h_d"] = "h_k · γh";
   d.how["h_i"] = "h_d + f";
   d.how["h_max_sim"] = "the largest simulated passing height";
-  const std::string needed = rules.design_on == DesignOn::mel   ? "MEL_req (the rule set designs on MEL; SEL_req is for information)"
-                            : rules.design_on == DesignOn::sel ? "SEL_req (the rule set designs on SEL; MEL_req is for information)"
-                                                               : "MEL_req and SEL_req";
+  std::string needed = rules.design_on == DesignOn::mel   ? "MEL_req (the rule set designs on MEL; SEL_req is for information)"
+                      : rules.design_on == DesignOn::sel ? "SEL_req (the rule set designs on SEL; MEL_req is for information)"
+                                                         : "MEL_req and SEL_req";
+  // Designing on both, one of them often sets the class alone (at Vaujany the SEL: class 7
+  // where the MEL needs class 5), a cost step the client asks about: said.
+  if (rules.design_on == DesignOn::both && d.energy_class && !d.energy_class->open_ended) {
+    const auto on_mel = select_energy_class(classes, DesignOn::mel, d.MEL_req_kJ, d.SEL_req_kJ);
+    const auto on_sel = select_energy_class(classes, DesignOn::sel, d.MEL_req_kJ, d.SEL_req_kJ);
+    const int chosen = d.energy_class->number;
+    if (on_mel && on_sel && on_mel->number < chosen && on_sel->number == chosen)
+      needed += " (SEL_req governs: MEL_req alone needs class " + std::to_string(on_mel->number) + ")";
+    else if (on_mel && on_sel && on_sel->number < chosen && on_mel->number == chosen)
+      needed += " (MEL_req governs: SEL_req alone needs class " + std::to_string(on_sel->number) + ")";
+  }
   // The table by its title for the reader, and by the name a scenario gives it.
   const std::string table = classes.title.empty() ? classes.name : classes.title + " (" + classes.name + ")";
   d.how["energy_class"] = "the smallest class of the " + table + " meeting " + needed +

@@ -116,15 +116,45 @@ TEST(BarrierProcedure, EachDesignQuantitySaysWhereItComesFrom) {
   EXPECT_EQ(d.how.at("free_board"), "f = max(0 m, 0.5 · D_f) (thesis-2015)");
   EXPECT_EQ(d.how.at("volume"), "the design block, given");
   EXPECT_EQ(d.how.at("free_board_diameter"), "given");
+  // Designing on both: SEL_req in (1000, 1500] kJ needs class 7 (SEL 1500), MEL_req in
+  // (1500, 2000] kJ class 5 (MEL 2000): the SEL sets the class, and the text says so.
+  ASSERT_GT(d.SEL_req_kJ, 1000);
+  ASSERT_LE(d.SEL_req_kJ, 1500);
+  ASSERT_GT(d.MEL_req_kJ, 1500);
+  ASSERT_LE(d.MEL_req_kJ, 2000);
+  EXPECT_EQ(d.energy_class->number, 7);
   EXPECT_EQ(d.how.at("energy_class"),
-            "the smallest class of the etag027-classes meeting MEL_req and SEL_req; ETAG 027 (2008) Table 2.3");
+            "the smallest class of the etag027-classes meeting MEL_req and SEL_req (SEL_req governs: "
+            "MEL_req alone needs class 5); ETAG 027 (2008) Table 2.3");
   classes.title = "ETAG 027 energy classes";  // as read from a file: the title, then the name
   const auto titled = design::design_barrier(spec(), rules, classes, sample(), std::nullopt, 100.0, 1);
   ASSERT_TRUE(titled.design) << titled.error;
   EXPECT_EQ(titled.design->how.at("energy_class"),
             "the smallest class of the ETAG 027 energy classes (etag027-classes) meeting MEL_req "
-            "and SEL_req; ETAG 027 (2008) Table 2.3");
+            "and SEL_req (SEL_req governs: MEL_req alone needs class 5); ETAG 027 (2008) Table 2.3");
   EXPECT_EQ(titled.design->classes_title, "ETAG 027 energy classes");
+  {
+    // The MEL setting the class: E_d = SEL_req above (γE,SEL = 1); with γE,MEL = 2.5 the MEL_req
+    // is in (3000, 4500] kJ (class 7), with γE,SEL = 0.5 the SEL_req in (660, 1000] (class 6).
+    auto heavy = rules;
+    heavy.gamma_E_MEL = 2.5;
+    heavy.gamma_E_SEL = 0.5;
+    const auto m = design::design_barrier(spec(), heavy, classes, sample(), std::nullopt, 100.0, 1);
+    ASSERT_TRUE(m.design) << m.error;
+    ASSERT_GT(m.design->MEL_req_kJ, 3000);
+    ASSERT_LE(m.design->MEL_req_kJ, 4500);
+    ASSERT_GT(m.design->SEL_req_kJ, 660);
+    ASSERT_LE(m.design->SEL_req_kJ, 1000);
+    EXPECT_NE(m.design->how.at("energy_class").find(
+                  "meeting MEL_req and SEL_req (MEL_req governs: SEL_req alone needs class 6)"),
+              std::string::npos)
+        << m.design->how.at("energy_class");
+    // Both needing the same class: nothing to say.
+    heavy.gamma_E_SEL = 1.0;  // SEL_req in (1000, 1500]: class 7 as well
+    const auto both = design::design_barrier(spec(), heavy, classes, sample(), std::nullopt, 100.0, 1);
+    ASSERT_TRUE(both.design) << both.error;
+    EXPECT_EQ(both.design->how.at("energy_class").find("governs"), std::string::npos);
+  }
   // A factor made of parts cites its parts.
   auto pr = test::peila_ronco_2009();
   pr.gamma_F.parts[0].source = "Peila & Ronco (2009): trajectory";
