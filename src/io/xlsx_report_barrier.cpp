@@ -8,6 +8,7 @@
 #include <cmath>
 #include <span>
 
+#include "pierre/design/number_text.hpp"
 #include "pierre/stats/lognormal_fit.hpp"
 #include "pierre/stats/percentile.hpp"
 #include "pierre/stats/weibull_fit.hpp"
@@ -81,6 +82,10 @@ struct Report::BarrierChartData {
   double lo, hi;
   bool columns;  // the sample has columns to draw
 };
+
+// A note over the tables' width: column A (34) and B:I (8 × 14).
+constexpr Col kBarrierNoteLast = 8;
+constexpr double kBarrierNoteWidth = 34 + 8 * 14;
 
 void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::BarrierDesign& b) {
   page_setup(ws);
@@ -185,6 +190,8 @@ Row Report::barrier_statistics(lxw_worksheet* ws, Row r, const design::BarrierDe
   for (const auto& q : qs)
     if (q.fit && !q.fit->error.empty())
       text(ws, r++, 0, fmt::format("{}: {}", h("statistics", q.key), q.fit->error), note());
+  paragraph(ws, r++, 0, kBarrierNoteLast, kBarrierNoteWidth, t_.get("labels", "passing_height_note"),
+            wrapped_note());
   return r;
 }
 
@@ -257,7 +264,14 @@ Row Report::barrier_design_values(lxw_worksheet* ws, Row r, const design::Barrie
     num(ws, r, 7, b.energy_class->number, number(b.energy_class->open_ended ? "open_class" : "count"));
   else
     text(ws, r, 7, t_.get("labels", "none"));
-  return r + 1;
+  ++r;
+  if (b.rotational_energy.count > 0)
+    paragraph(ws, r++, 0, kBarrierNoteLast, kBarrierNoteWidth,
+              replace_all(replace_all(t_.get("labels", "translational_energy_note"), "{mean}",
+                                      design::number_text(b.rotational_energy.mean, 4)),
+                          "{max}", design::number_text(b.rotational_energy.max, 4)),
+              wrapped_note());
+  return r;
 }
 
 // The factors and design quantities, with how each was obtained.

@@ -698,6 +698,37 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
                      "FAILS height.interception, elongation.");
 }
 
+// A barrier's sheet says what the passing height is (the centre of a point mass: a reviewer could
+// not check h_i = h_d + f without it) and that E_d leaves out the rotation, with the rotational
+// energy at the line (the fixture's: mean 28 kJ, max 70 kJ).
+TEST(XlsxReport, ABarrierSheetDefinesThePassingHeightAndSaysEdIsTranslational) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Sheet& bar = sheets.at("Screen A");
+  auto starting = [&](const std::string& prefix) -> std::optional<std::size_t> {
+    for (std::size_t i = 0; i < bar.size(); ++i)
+      if (!bar[i].empty() && bar[i][0].text.rfind(prefix, 0) == 0) return i;
+    return std::nullopt;
+  };
+  const auto height = starting("Passing height: the vertical distance from the ground");
+  ASSERT_TRUE(height);
+  const auto stats = starting("Statistics of the first crossings");
+  const auto boot = starting("Bootstrap confidence intervals");
+  ASSERT_TRUE(stats && boot);
+  EXPECT_GT(*height, *stats);  // under the statistics
+  EXPECT_LT(*height, *boot);
+  const auto ed = starting("E_d = ½ m_d v_d² is translational");
+  ASSERT_TRUE(ed);
+  EXPECT_NE(cell(bar, *ed, 0)->text.find("(mean 28 kJ, max 70 kJ, in the statistics above)"),
+            std::string::npos)
+      << cell(bar, *ed, 0)->text;
+}
+
 // Inputs, a barrier's inputs that the procedure resolved or defaulted: the design block's volume
 // and density by a rule (`largest`), D_f by default, MEL and SEL from the candidate's class. Each
 // shows the value used and where it comes from; they were blank, which a client cannot tell
