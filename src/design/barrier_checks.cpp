@@ -51,9 +51,17 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
   CheckLine& l = b.add(id, std::string("candidate ") + name + " against the required " + name +
                                " (γE · E_d)",
                        declared, required, "kJ");
-  if (!needed)
-    set(l, CheckStatus::not_applicable,
-        std::string("the rule set designs on ") + to_string(b.r.design_on) + ", not " + name);
+  if (!needed) {
+    // Not a requirement, but a kit whose capacity is below it is one the design event exceeds
+    // (a service-level overload): said, for information.
+    std::string why = std::string("the rule set designs on ") + to_string(b.r.design_on) + ", not " + name;
+    if (!std::isnan(declared) && !at_least(declared, required)) {
+      const auto [has, needs] = compared_texts(declared, required, "kJ");
+      why += std::string(" (for information: the candidate's ") + name + " " + has + " is below " +
+             name + "_req " + needs + ")";
+    }
+    set(l, CheckStatus::not_applicable, why);
+  }
   else if (std::isnan(declared)) {
     const std::string missing = std::string("the candidate declares no ") + name + " (give " +
                                 (std::string(name) == "MEL" ? "mel" : "sel") +

@@ -116,6 +116,13 @@ TEST(BarrierCheckLines, EnergySelPassFailAndNotApplicable) {
   auto mel_rules = rules();
   mel_rules.design_on = design::DesignOn::mel;
   EXPECT_EQ(status(d, mel_rules, "energy.sel"), CheckStatus::not_applicable);
+  // Not a requirement then, but a SEL below SEL_req is said, for information.
+  EXPECT_EQ(line(design::barrier_check_lines(d, mel_rules), "energy.sel").reason,
+            "the rule set designs on MEL, not SEL (for information: the candidate's SEL 1000.0 kJ "
+            "is below SEL_req 1250.0 kJ)");
+  d.candidate_sel_kJ = 1300;
+  EXPECT_EQ(line(design::barrier_check_lines(d, mel_rules), "energy.sel").reason,
+            "the rule set designs on MEL, not SEL");
   d.candidate_sel_kJ = std::nan("");  // declares no SEL (nor any other capacity): not compared
   EXPECT_EQ(status(d, rules(), "energy.sel"), CheckStatus::warn);
 }
