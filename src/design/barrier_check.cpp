@@ -361,9 +361,18 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
     }
     if (c.mel_kJ) d.candidate_mel_kJ = *c.mel_kJ;
     if (c.sel_kJ) d.candidate_sel_kJ = *c.sel_kJ;
-    if (c.residual_height && c.height && classes.residual_height)
-      d.residual_height_category =
-          residual_height_category(*classes.residual_height, *c.residual_height, *c.height);
+    if (c.residual_height && c.height && classes.residual_height) {
+      const ResidualHeightCategories& cat = *classes.residual_height;
+      d.residual_height_category = residual_height_category(cat, *c.residual_height, *c.height);
+      // Its basis: the candidate's height stands for the nominal height (the kit's declared one
+      // is not an input).
+      d.how["residual_height_category"] =
+          "residual height " + number_text(*c.residual_height) + " m / the candidate's height " +
+          number_text(*c.height) + " m (taken as the nominal height) = " +
+          number_text(100 * *c.residual_height / *c.height, 3) + " %: A from " +
+          number_text(100 * cat.a_min) + " %, B above " + number_text(100 * cat.b_min) +
+          " %, else C (" + classes.name + ")";
+    }
   }
 
   describe_derivations(d, rules, classes);

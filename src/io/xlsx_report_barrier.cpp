@@ -319,7 +319,10 @@ Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesig
   if (std::isfinite(b.candidate_sel_kJ)) fr("candidate_sel", b.candidate_sel_kJ, "energy", "kJ", "");
   if (!b.residual_height_category.empty()) {
     text(ws, r, 0, h("factors", "residual_height_category"), bold());
-    text(ws, r++, 1, b.residual_height_category);
+    text(ws, r, 1, b.residual_height_category);
+    if (const auto it = b.how.find("residual_height_category"); it != b.how.end())
+      paragraph(ws, r, 3, 8, 6 * 14, it->second, wrap());
+    ++r;
   }
   return r;
 }

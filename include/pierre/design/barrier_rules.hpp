@@ -51,7 +51,7 @@ struct EnergyClass {
   bool open_ended = false;
 };
 // Residual height categories (ETAG 027): the residual height after the MEL test as a share of
-// the nominal height; A when >= a_min, B when >= b_min (and below a_min), else C.
+// the nominal height; A when >= a_min, B when > b_min (and below a_min), else C (<= b_min).
 struct ResidualHeightCategories {
   double a_min = 0.5, b_min = 0.3;
   std::string source;

@@ -362,6 +362,10 @@ TEST(BarrierProcedure, CandidateCapacitiesFromClassOrDeclared) {
   EXPECT_DOUBLE_EQ(out.design->candidate_mel_kJ, 3000);
   EXPECT_DOUBLE_EQ(out.design->candidate_sel_kJ, 1000);
   EXPECT_EQ(out.design->residual_height_category, "B");  // 2.5 / 6 = 42 %
+  // Its basis, for the report: the shares and the bounds of the class table.
+  EXPECT_EQ(out.design->how.at("residual_height_category"),
+            "residual height 2.5 m / the candidate's height 6 m (taken as the nominal height) = "
+            "41.7 %: A from 50 %, B above 30 %, else C (etag027-classes)");
   EXPECT_EQ(out.design->checks.size(), 11u);
   b.candidate->mel_kJ = 3300;  // a declared MEL overrides the class's
   out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
