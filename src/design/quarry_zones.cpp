@@ -325,7 +325,18 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
                   num(row.rd.ks->p_value, 3) + " < " + num(rules.fit_p_value) +
                   "), against a simulated maximum of " + num(row.rd.max_h * H) +
                   (std::isfinite(row.rd.max_h) ? " m" : "");
-    auto zone_line = [&](const std::string& id, const std::string& what, double value) {
+    // The share of the section's blocks that stop beyond `at` (m from the toe; censored ones,
+    // +inf, beyond anything): what a work area inside the zone is exposed to.
+    auto share_beyond = [&](double at) {
+      const std::vector<double>& rd = sr.distances.rd;
+      const auto n = std::count_if(rd.begin(), rd.end(), [&](double x) { return x > at; });
+      return rd.empty() ? std::string()
+                        : "; " + num(100.0 * static_cast<double>(n) / static_cast<double>(rd.size()), 3) +
+                              " % of the section's " + std::to_string(rd.size()) +
+                              " simulated blocks stop beyond " + quantity_text(at, "m");
+    };
+    auto zone_line = [&](const std::string& id, const std::string& what, double value,
+                         bool work_area) {
       CheckLine l = line(subject, id, rules);
       l.what = what;
       l.value = value;
@@ -346,7 +357,8 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
         const bool outside = at_least(value, sr.danger_zone);
         l.status = outside ? CheckStatus::pass : CheckStatus::fail;
         l.reason = at + " from the toe is " + (outside ? "outside" : "inside") +
-                   " the danger zone: RD_gov = " + zone + " (" + row.rd_gov.how + ")" + fit_doubt;
+                   " the danger zone: RD_gov = " + zone + " (" + row.rd_gov.how + ")" + fit_doubt +
+                   (work_area ? share_beyond(value) : std::string());
         // An area past the modelled floor: no block was simulated over the ground there.
         if (value > sr.geometry.floor_length)
           l.reason += "; the area lies past the end of the section's floor (" +
@@ -356,11 +368,11 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
       d.checks.push_back(std::move(l));
     };
     for (const WorkArea& a : sr.spec.work_areas)
-      zone_line("zone." + a.name, "distance of work area \"" + a.name + "\" from the toe vs the danger zone RD_gov", a.distance);
+      zone_line("zone." + a.name, "distance of work area \"" + a.name + "\" from the toe vs the danger zone RD_gov", a.distance, true);
     if (std::isinf(sr.danger_zone) && sr.spec.work_areas.empty()) {
       // RD_p beyond the profile FAILs its check (design-checks.md §2): without a work area
       // this is the line that carries it.
-      zone_line("zone.extent", "the danger zone RD_gov vs the section's floor length", sr.geometry.floor_length);
+      zone_line("zone.extent", "the danger zone RD_gov vs the section's floor length", sr.geometry.floor_length, false);
     } else if (sr.danger_zone_beyond_profile() && std::isfinite(sr.danger_zone)) {
       // A finite zone longer than the floor the section models (a fit's extrapolation, or a
       // group's pooled zone on a section with a shorter floor): its end was not simulated.

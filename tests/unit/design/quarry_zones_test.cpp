@@ -112,10 +112,13 @@ TEST(QuarryZones, WorkAreasInsideAndOutsideTheDangerZone) {
   EXPECT_DOUBLE_EQ(road->value, 50);
   EXPECT_DOUBLE_EQ(road->limit, 95.05);
   EXPECT_EQ(road->unit, "m");
-  // The reason in the decimals of the value and limit cells.
-  EXPECT_EQ(road->reason, "50.00 m from the toe is inside the danger zone: RD_gov = 95.05 m (P95 4.75 H)");
+  // The reason in the decimals of the value and limit cells, with the share of the blocks that
+  // stop beyond the area: of the runouts 1..100 m, 51..100 lie beyond 50 m, none beyond 120 m.
+  EXPECT_EQ(road->reason, "50.00 m from the toe is inside the danger zone: RD_gov = 95.05 m (P95 4.75 H); "
+                          "50 % of the section's 100 simulated blocks stop beyond 50.00 m");
   EXPECT_EQ(crusher->reason,
-            "120.00 m from the toe is outside the danger zone: RD_gov = 95.05 m (P95 4.75 H)");
+            "120.00 m from the toe is outside the danger zone: RD_gov = 95.05 m (P95 4.75 H); "
+            "0 % of the section's 100 simulated blocks stop beyond 120.00 m");
   EXPECT_TRUE(any_failure(d.checks));
 }
 
@@ -131,7 +134,8 @@ TEST(QuarryZones, AWorkAreaPastTheFloorSaysSo) {
   ASSERT_TRUE(yard && road);
   EXPECT_EQ(yard->status, CheckStatus::pass);
   EXPECT_EQ(yard->reason,
-            "450.00 m from the toe is outside the danger zone: RD_gov = 95.05 m (P95 4.75 H); the "
+            "450.00 m from the toe is outside the danger zone: RD_gov = 95.05 m (P95 4.75 H); 0 % "
+            "of the section's 100 simulated blocks stop beyond 450.00 m; the "
             "area lies past the end of the section's floor (400.00 m from the toe), on ground the "
             "section does not model: extend it");
   EXPECT_EQ(road->reason.find("past the end"), std::string::npos);  // at the floor's end: on it
