@@ -96,7 +96,9 @@ void Report::crossings(lxw_worksheet* ws) {
   page_setup(ws);
   const bool by_section = !d_.crossing_sections.empty();
   const Col c0 = by_section ? 1 : 0;
-  widths(ws, 0, 14 + c0, 11, {{0, by_section ? 16 : 11}, {1 + c0, 16}, {3 + c0, 14}});
+  // "Translational" and "Rotational" whole in their headings (a narrower column broke the word).
+  widths(ws, 0, 14 + c0, 11,
+         {{0, by_section ? 16 : 11}, {1 + c0, 16}, {3 + c0, 14}, {11 + c0, 14}, {12 + c0, 12}});
   const std::size_t shown = std::min(d_.crossings.size(), t_.crossing_rows);
   const std::uint64_t total = std::max<std::uint64_t>(d_.total_crossings, d_.crossings.size());
   const Row head = data_sheet_head(

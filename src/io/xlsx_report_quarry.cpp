@@ -137,7 +137,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
   for (std::size_t i : row.sections)
     if (i < q.sections.size()) secs.push_back(&q.sections[i]);
   page_setup(ws);
-  width(ws, 0, 0, 30);
+  width(ws, 0, 0, 38);  // "ID, first-impact distance from the toe" whole
   width(ws, 1, 13, 14);  // as a barrier sheet: the check table's merged columns fit its text
   text(ws, 0, 0, replace_all(t_.get("titles", "quarry"), "{name}", row.name), title());
   check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
