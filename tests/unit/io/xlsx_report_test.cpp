@@ -924,6 +924,35 @@ TEST(XlsxReport, ColumnWidthEntriesDoNotOverlap) {
 // A long note stays inside the printed page: merged over the print area's columns (Summary A:J;
 // a barrier sheet's "how it was obtained" D:I), wrapped, its row as high as its lines. In one
 // cell, the energy class's note and the partial factors' derivations ran off the page.
+// A wrapped cell's row is as tall as its text wraps word by word: the rule of a quarry's
+// bench.retention line, 56 characters in the Summary's Rule column (26 wide, about 30 characters
+// a line), wraps to three lines ("quarry-thesis-2015 docs/quarry.md" does not fit one), not the
+// two its characters alone gave, which clipped "retention)".
+TEST(XlsxReport, AWrappedRowIsAsTallAsItsWordsWrap) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture();
+  design::CheckLine l = line("Preg 2", "bench.retention", 57.2, 90, "%", design::CheckStatus::fail);
+  l.what = "short";
+  l.reason = "short";
+  l.rule = "quarry-thesis-2015 docs/quarry.md (catch-bench retention)";
+  f->data.checks = {l};
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const std::string strings = zip_entry(xlsx, "xl/sharedStrings.xml", dir.path());
+  long index = 0, found = -1;
+  for (std::size_t k = strings.find("<si>"); k != std::string::npos; k = strings.find("<si>", k + 1), ++index)
+    if (strings.compare(k + 4, 4 + l.rule.size(), "<t>" + l.rule + "<") == 0) found = index;
+  ASSERT_GE(found, 0);
+  const std::string x = zip_entry(xlsx, "xl/worksheets/sheet1.xml", dir.path());
+  const std::size_t v = x.find("<v>" + std::to_string(found) + "</v>");
+  ASSERT_NE(v, std::string::npos);
+  const std::size_t row = x.rfind("<row ", v);
+  const std::size_t ht = x.find("ht=\"", row);
+  ASSERT_LT(ht, x.find('>', row)) << "no height of its own";
+  EXPECT_GE(std::stod(x.substr(ht + 4)), 3 * 15.0);
+}
+
 TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
   PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
