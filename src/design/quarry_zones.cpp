@@ -357,8 +357,17 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
         const bool outside = at_least(value, sr.danger_zone);
         l.status = outside ? CheckStatus::pass : CheckStatus::fail;
         l.reason = at + " from the toe is " + (outside ? "outside" : "inside") +
-                   " the danger zone: RD_gov = " + zone + " (" + row.rd_gov.how + ")" + fit_doubt +
-                   (work_area ? share_beyond(value) : std::string());
+                   " the danger zone: RD_gov = " + zone + " (" + row.rd_gov.how + ")" + fit_doubt;
+        // Outside the zone, but not outside its bootstrap interval: the margin is within the
+        // sampling uncertainty the sample.size line gives, so the PASS is not one to rely on.
+        const double upper = row.rd_interval ? row.rd_interval->upper * H : kNaN;
+        if (work_area && outside && std::isfinite(upper) && value < upper) {
+          l.status = CheckStatus::warn;
+          l.reason += ", but within its " + num(100 * row.rd_interval->confidence) +
+                      " % bootstrap interval (up to " + quantity_text(upper, "m") +
+                      "): the margin is within the sampling uncertainty; more throws settle it";
+        }
+        if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.
         if (value > sr.geometry.floor_length)
           l.reason += "; the area lies past the end of the section's floor (" +

@@ -122,6 +122,33 @@ TEST(QuarryZones, WorkAreasInsideAndOutsideTheDangerZone) {
   EXPECT_TRUE(any_failure(d.checks));
 }
 
+// A work area outside the zone but inside its bootstrap interval: the margin is within the
+// sampling uncertainty, so the line WARNs instead of passing; one beyond the interval passes.
+TEST(QuarryZones, AWorkAreaWithinTheZonesIntervalWarns) {
+  auto probe = section("Face A", one_to(100));
+  const auto first = design_quarry({probe}, 1);
+  ASSERT_TRUE(first.design) << first.error;
+  const auto& ci = first.design->rows[0].rd_interval;
+  ASSERT_TRUE(ci);
+  const double zone = first.design->sections[0].danger_zone, upper = ci->upper * 20;  // H = 20 m
+  ASSERT_GT(upper, zone + 0.2);  // P95 of 1..100 resampled: the interval reaches past 95.05 m
+  auto s = section("Face A", one_to(100));
+  s.spec.work_areas = {{"near", 0.5 * (zone + upper)}, {"far", upper + 0.1}};
+  const auto out = design_quarry({s}, 1);  // the same seed: the same interval
+  ASSERT_TRUE(out.design) << out.error;
+  const CheckLine* near = find(*out.design, "Face A", "zone.near");
+  const CheckLine* far = find(*out.design, "Face A", "zone.far");
+  ASSERT_TRUE(near && far);
+  EXPECT_EQ(near->status, CheckStatus::warn);
+  EXPECT_NE(near->reason.find("is outside the danger zone: RD_gov = 95.05 m (P95 4.75 H), but within "
+                              "its 90 % bootstrap interval (up to "),
+            std::string::npos)
+      << near->reason;
+  EXPECT_EQ(far->status, CheckStatus::pass);
+  EXPECT_EQ(far->reason.find("bootstrap interval"), std::string::npos) << far->reason;
+  EXPECT_FALSE(any_failure(out.design->checks));
+}
+
 // A work area past the end of the modelled floor passes (outside the zone) but says that the
 // ground there is not in the section (a new user's area at 80 m on a 50 m floor passed silently).
 TEST(QuarryZones, AWorkAreaPastTheFloorSaysSo) {
