@@ -46,8 +46,20 @@ void set(CheckLine& l, CheckStatus s, std::string reason) {
 // none is checked on its height alone, and the line WARNs that its capacity was not compared
 // (an N/A would read, in a pipeline, like a check that does not apply); one that gives a capacity
 // but not the one the rule set designs on cannot pass that check.
+// A PASS whose margin lies within the requirement's bootstrap interval (upper bound `upper`,
+// NaN when there is none) is not one to rely on: a WARN that says so (the sample.size line
+// gives the interval's width).
+void within_interval(CheckLine& l, double value, double upper, const char* unit,
+                     double confidence) {
+  if (l.status != CheckStatus::pass || !std::isfinite(upper) || !(value < upper)) return;
+  l.status = CheckStatus::warn;
+  l.reason += ", but within the requirement's " + num(100 * confidence) +
+              " % bootstrap interval (up to " + quantity_text(upper, unit) +
+              "): the margin is within the sampling uncertainty; more throws settle it";
+}
+
 void capacity_line(Builder& b, const char* id, const char* name, bool needed, double declared,
-                   double required, bool declares_energy) {
+                   double required, bool declares_energy, double upper, double confidence) {
   CheckLine& l = b.add(id, std::string("candidate ") + name + " against the required " + name +
                                " (γE · E_d)",
                        declared, required, "kJ");
@@ -80,6 +92,7 @@ void capacity_line(Builder& b, const char* id, const char* name, bool needed, do
     const bool pass = at_least(declared, required);
     set(l, pass ? CheckStatus::pass : CheckStatus::fail,
         std::string("candidate ") + name + " " + has + (pass ? " >= " : " < ") + "required " + needs);
+    within_interval(l, declared, upper, "kJ", confidence);
   }
 }
 
@@ -279,10 +292,13 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
   if (d.spec.candidate) {
     const CandidateBarrier& c = *d.spec.candidate;
     const bool declares_energy = c.energy_class || c.mel_kJ || c.sel_kJ;
+    // The requirements' upper bounds: E_d's interval scaled as E_d is (γE · E_d), and h_i's.
+    const double e_upper = d.E_d_interval ? d.E_d_interval->upper : kNaN;
+    const double e_conf = d.E_d_interval ? d.E_d_interval->confidence : kNaN;
     capacity_line(b, "energy.mel", "MEL", needs_mel(rules.design_on), d.candidate_mel_kJ,
-                  d.MEL_req_kJ, declares_energy);
+                  d.MEL_req_kJ, declares_energy, d.gamma_E_MEL * e_upper, e_conf);
     capacity_line(b, "energy.sel", "SEL", needs_sel(rules.design_on), d.candidate_sel_kJ,
-                  d.SEL_req_kJ, declares_energy);
+                  d.SEL_req_kJ, declares_energy, d.gamma_E_SEL * e_upper, e_conf);
     {
       const double value = c.height.value_or(kNaN);
       CheckLine& l = b.add("height.interception",
@@ -296,6 +312,8 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
         set(l, CheckStatus::pass, "height " + has + " >= h_i " + needs);
       else
         set(l, CheckStatus::fail, "height " + has + " < h_i " + needs);
+      if (d.h_i_interval)
+        within_interval(l, value, d.h_i_interval->upper, "m", d.h_i_interval->confidence);
     }
     elongation_line(b, c);
     // Table 4.2's columns: P(E > SEL_req), P(E > MEL_req), P(h > h_i), ...

@@ -127,6 +127,32 @@ TEST(BarrierCheckLines, EnergySelPassFailAndNotApplicable) {
   EXPECT_EQ(status(d, rules(), "energy.sel"), CheckStatus::warn);
 }
 
+// A candidate above the requirement but inside its bootstrap interval: the margin is within the
+// sampling uncertainty, so the line WARNs instead of passing; a FAIL stays a FAIL.
+TEST(BarrierCheckLines, AMarginWithinTheRequirementsIntervalWarns) {
+  auto d = base();  // MEL 2000 against MEL_req 1500 = 1.2 · E_d 1250; height 4.5 against h_i 4.0
+  d.gamma_E_MEL = 1.2;
+  d.gamma_E_SEL = 1.0;
+  EXPECT_EQ(status(d, rules(), "energy.mel"), CheckStatus::pass);  // E_d up to 1280: MEL_req 1536
+  EXPECT_EQ(status(d, rules(), "height.interception"), CheckStatus::pass);  // h_i up to 4.06
+  d.E_d_interval = ci(1250, 500);  // up to 1750 kJ: MEL_req up to 2100 kJ, above the MEL 2000
+  d.h_i_interval = ci(4.0, 0.6);   // up to 4.6 m, above the height 4.5 m
+  const auto lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "energy.mel").reason,
+            "candidate MEL 2000.0 kJ >= required 1500.0 kJ, but within the requirement's 90 % "
+            "bootstrap interval (up to 2100.0 kJ): the margin is within the sampling uncertainty; "
+            "more throws settle it");
+  EXPECT_EQ(line(lines, "height.interception").status, CheckStatus::warn);
+  EXPECT_NE(line(lines, "height.interception").reason.find("(up to 4.60 m)"), std::string::npos)
+      << line(lines, "height.interception").reason;
+  // SEL_req = 1.0 · E_d: 1250 up to 1750 kJ, the SEL 1300 within it: a WARN as well.
+  EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::warn);
+  auto failing = d;
+  failing.candidate_mel_kJ = 1400;
+  EXPECT_EQ(status(failing, rules(), "energy.mel"), CheckStatus::fail);
+}
+
 // A candidate without a height: the check applies but cannot be made, so it WARNs (printed with
 // its reason) rather than reading N/A; it does not fail `check`.
 TEST(BarrierCheckLines, InterceptionHeightPassFailAndWarnWithoutAHeight) {
