@@ -261,10 +261,10 @@ void Report::summary_checks(lxw_worksheet* ws, Row r) {
   if (!failing.empty())
     text(ws, r++, 0, replace_all(t_.get("labels", "failing"), "{lines}", failing), bold());
   const Row head = r;
-  r = check_table(ws, r, lines, true);
+  if (!lines.empty()) r = check_table(ws, r, lines, true);  // no headings over nothing
   check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : 9),
         "worksheet_print_area");
-  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+  if (!lines.empty()) check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
 }
 
 }  // namespace pierre::io::detail

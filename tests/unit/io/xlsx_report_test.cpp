@@ -953,6 +953,23 @@ TEST(XlsxReport, AWrappedRowIsAsTallAsItsWordsWrap) {
   EXPECT_GE(std::stod(x.substr(ht + 4)), 3 * 15.0);
 }
 
+// A run without barriers or quarries: the Summary says there are no checks, without a check
+// table's headings over nothing (a reviewer found them under the sentence).
+TEST(XlsxReport, NoChecksNoCheckTable) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  auto f = make_fixture();
+  f->data.barriers.clear();
+  f->data.checks.clear();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Sheet& sum = sheets.at("Summary");
+  EXPECT_TRUE(find_row(sum, 0, "No design checks: the scenario has no [[barriers]] and no [[quarries]]."));
+  EXPECT_FALSE(find_row(sum, 0, "Subject"));
+}
+
 TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
   PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
