@@ -390,7 +390,7 @@ void Report::barrier_charts(lxw_worksheet* ws, const std::string& sheet, Row r,
     const BarrierChartData cd = barrier_chart_data(ws, data_row, plots[p]);
     data_row = std::max<Row>(cd.outline_end, cd.curves_last + 1) + 1;
     const Row at = chart_row + static_cast<Row>(p) * rows_per_chart;
-    barrier_histogram_chart(ws, sheet, {at, 0}, plots[p], cd, b.spec.name);
+    barrier_histogram_chart(ws, sheet, {at, 0}, plots[p], cd, b.spec.line);  // the line sampled
     // Right of the histogram: column A (34) + 3 columns of 14 ≈ 620 px at 7 px/char + padding.
     barrier_cdf_chart(ws, sheet, {at, 5}, plots[p], cd, b.spec.name);
   }

@@ -970,6 +970,22 @@ TEST(XlsxReport, NoChecksNoCheckTable) {
   EXPECT_FALSE(find_row(sum, 0, "Subject"));
 }
 
+// A barrier's histograms are of the sample at its observation line, and their titles name the
+// line ("Speed at Screen 1"), not the barrier ("Speed at Screen A" read as the barrier's speed).
+TEST(XlsxReport, BarrierHistogramsNameTheLineTheySample) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  std::string titles;
+  for (const auto& n : zip_list(xlsx, dir.path()))
+    if (n.rfind("xl/charts/chart", 0) == 0) titles += zip_entry(xlsx, n, dir.path());
+  for (const char* t : {"Speed at Screen 1<", "Passing height at Screen 1<", "Translational energy at Screen 1<"})
+    EXPECT_NE(titles.find(t), std::string::npos) << t;
+  EXPECT_EQ(titles.find("at Screen A<"), std::string::npos);
+}
+
 TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
   PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
