@@ -14,6 +14,24 @@
 namespace pierre::app {
 namespace {
 
+// The blocks' masses and densities, "1500 to 3500 kg, density 2650 kg/m³": the numbers a unit
+// slip shows in (t for kg, t/m³ for kg/m³) before a long run.
+std::string block_ranges(const std::vector<model::Block>& blocks) {
+  if (blocks.empty()) return "no blocks";
+  double m_lo = blocks.front().mass, m_hi = m_lo, d_lo = blocks.front().density, d_hi = d_lo;
+  for (const auto& b : blocks) {
+    m_lo = std::min(m_lo, b.mass);
+    m_hi = std::max(m_hi, b.mass);
+    d_lo = std::min(d_lo, b.density);
+    d_hi = std::max(d_hi, b.density);
+  }
+  auto range = [](double lo, double hi, const char* unit) {
+    return lo == hi ? fmt::format("{} {}", design::number_text(lo), unit)
+                    : fmt::format("{} to {} {}", design::number_text(lo), design::number_text(hi), unit);
+  };
+  return range(m_lo, m_hi, "kg") + ", density " + range(d_lo, d_hi, "kg/m³");
+}
+
 class ValidateCommand final : public Command {
  public:
   CLI::App* add_to(CLI::App& parent) override {
@@ -49,21 +67,9 @@ class ValidateCommand final : public Command {
                design::number_text(s.profile.z_max()));
     fmt::print("  {} material{}:\n", s.materials.size(), s.materials.size() == 1 ? "" : "s");
     for (const auto& m : s.materials) fmt::print("    {}: {}\n", m.name, m.source);
-    double m_lo = s.blocks.front().mass, m_hi = m_lo, d_lo = s.blocks.front().density, d_hi = d_lo;
-    for (const auto& b : s.blocks) {
-      m_lo = std::min(m_lo, b.mass);
-      m_hi = std::max(m_hi, b.mass);
-      d_lo = std::min(d_lo, b.density);
-      d_hi = std::max(d_hi, b.density);
-    }
-    auto range = [](double lo, double hi, const char* unit) {
-      return lo == hi ? fmt::format("{} {}", design::number_text(lo), unit)
-                      : fmt::format("{} to {} {}", design::number_text(lo), design::number_text(hi), unit);
-    };
-    fmt::print("  {} block{} from {} row{}: {}, density {}\n", s.blocks.size(),
-               s.blocks.size() == 1 ? "" : "s", l.block_groups.size(),
-               l.block_groups.size() == 1 ? "" : "s", range(m_lo, m_hi, "kg"),
-               range(d_lo, d_hi, "kg/m³"));
+    fmt::print("  {} block{} from {} row{}: {}\n", s.blocks.size(), s.blocks.size() == 1 ? "" : "s",
+               l.block_groups.size(), l.block_groups.size() == 1 ? "" : "s",
+               block_ranges(s.blocks));
     fmt::print("  {} source{}:", s.sources.size(), s.sources.size() == 1 ? "" : "s");
     for (std::size_t i = 0; i < s.sources.size(); ++i)
       fmt::print("{} \"{}\" at x = {} m, z = {} m", i ? "," : "", s.sources[i].name,
@@ -118,13 +124,14 @@ class ValidateCommand final : public Command {
       std::size_t groups = q.block_groups.size();
       fmt::print(
           "  quarry section \"{}\"{}: {} vertices from x = {} to {} m; {} block{} in {} "
-          "group{}; {} source{}; {} throw{} per block and source with seed {}{}: {} "
+          "group{} ({}); {} source{}; {} throw{} per block and source with seed {}{}: {} "
           "trajector{}. Crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); "
           "floor from segment {} (counted from 0, as in impacts.csv), {:.2f} m long. "
           "Rule set {} ({}); {} work area{}{}{}{}.\n",
           q.spec.name, q.spec.group.empty() ? "" : fmt::format(" (group \"{}\")", q.spec.group),
           c.profile.vertices().size(), c.profile.x_min(), c.profile.x_max(), c.blocks.size(),
-          c.blocks.size() == 1 ? "" : "s", groups, groups == 1 ? "" : "s", c.sources.size(),
+          c.blocks.size() == 1 ? "" : "s", groups, groups == 1 ? "" : "s", block_ranges(c.blocks),
+          c.sources.size(),
           c.sources.size() == 1 ? "" : "s", c.settings.throws, c.settings.throws == 1 ? "" : "s",
           c.settings.seed, q.seed_given ? " (given)" : "", c.trajectory_count(),
           c.trajectory_count() == 1 ? "y" : "ies", g.crest.x,

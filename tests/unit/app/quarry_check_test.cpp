@@ -363,6 +363,11 @@ TEST_F(QuarryCli, ValidateListsTheSections) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("a quarry scenario of 2 sections"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("quarry section \"North\": 4 vertices"), std::string::npos) << r.out;
+  // The blocks' masses and density, where a unit slip would show (pass.toml's rows: A 500 kg,
+  // B 2000 kg at 2650 kg/m³; C 1000 kg).
+  EXPECT_NE(r.out.find("2 blocks in 2 groups (500 to 2000 kg, density 2650 kg/m³)"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("1 block in 1 group (1000 kg, density 2650 kg/m³)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("toe x = 20.00 m (found)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("toe x = 22.00 m (given)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("H = 20.00 m (found)"), std::string::npos) << r.out;
