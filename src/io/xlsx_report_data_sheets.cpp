@@ -17,12 +17,14 @@ Row Report::cap_note(lxw_worksheet* ws, Row r, std::size_t shown, std::uint64_t 
 }
 
 // The top of a data sheet: its title, the cap note and the heading row (in a quarry run the
-// section column first), frozen and repeated on every printed page; returns the heading's row.
+// section column first), frozen and repeated on every printed page; returns the heading's row
+// (left empty when there are no rows).
 Row Report::data_sheet_head(lxw_worksheet* ws, std::string_view key, Col c0, std::size_t shown,
                             std::uint64_t total, const char* csv,
                             std::initializer_list<std::string_view> keys) {
   text(ws, 0, 0, t_.get("titles", key), title());
   const Row head = cap_note(ws, 1, shown, total, csv);
+  if (shown == 0) return head;  // the note says there are none: no headings over nothing
   if (c0 > 0) headings(ws, head, 0, key, {"section"}, 45);
   headings(ws, head, c0, key, keys, 45);
   worksheet_freeze_panes(ws, head + 1, 1 + c0);
