@@ -57,6 +57,7 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
                      bool all_crossings) {
   io::RunInfo info;
   info.scenario_name = loaded.scenario.name;
+  info.document = loaded.document;
   info.scenario_file = loaded.file;
   info.materials_file = loaded.materials_file;
   info.seed = loaded.scenario.settings.seed;

@@ -52,7 +52,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "quarry_zones", "quarry_statistics", "quarry_fits", "quarry_exceedance",
                  "quarry_governing", "stop_reasons", "quarry_profile", "quarry_inputs",
                  "profile_lines", "profile_plain"};
-  s["labels"] = {"project",       "description", "scenario_file", "date",        "version",
+  s["labels"] = {"project",       "description", "reference", "revision", "prepared_by",
+                 "checked_by", "revision_in_header", "scenario_file", "date",        "version",
                  "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
                  "materials_file", "rules",      "crossings",     "not_reached", "design_block",
                  "bootstrap_seed", "none",     "calculated",    "observed",    "rd",
@@ -432,7 +433,7 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
   }
   {
     const TomlTable t = required_table(top, "page");
-    reject_unknown(t, {"landscape", "paper", "footer"});
+    reject_unknown(t, {"landscape", "paper", "footer", "header"});
     const auto l = t.boolean("landscape");
     if (!l) t.missing("landscape", "true or false");
     tpl.landscape = *l;
@@ -447,6 +448,18 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
             upper.find("&G") == std::string::npos && upper.find("&[PICTURE]") == std::string::npos,
             "a footer without picture codes (&G, &[Picture]): the report puts no image in it");
     tpl.text["page"]["footer"] = footer;
+    // The header, with {project} and {document} (the reference, revision and date): optional,
+    // so that a layout copied before it existed keeps working.
+    const std::string header = t.string("header").value_or("&L{project}&R{document}");
+    t.check("header", header.size() <= 50,
+            "a header of at most 50 characters (Excel allows 255, with the project's name and "
+            "the document's reference put in, up to 100 each)");
+    upper = header;
+    for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    t.check("header",
+            upper.find("&G") == std::string::npos && upper.find("&[PICTURE]") == std::string::npos,
+            "a header without picture codes (&G, &[Picture]): the report puts no image in it");
+    tpl.text["page"]["header"] = header;
   }
   {
     const TomlTable t = required_table(top, "charts");

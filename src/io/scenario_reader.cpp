@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -350,11 +351,20 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
                       {"scenario", "simulation", "profile", "materials", "blocks", "sources",
                        "observation_lines", "barriers", "quarries"});
 
-  const auto head = top.subtable("scenario", {"name", "description", "materials_file"});
+  const auto head = top.subtable("scenario", {"name", "description", "materials_file", "reference",
+                                              "revision", "prepared_by", "checked_by"});
   if (!head) top.missing("scenario", "a [scenario] table with a name");
   out.scenario.name = head->required_string("name", "a name for the scenario");
   head->check("name", !out.scenario.name.empty(), "a non-empty name");
   out.description = head->string("description").value_or("");
+  for (auto [key, field] : {std::pair{"reference", &out.document.reference},
+                            {"revision", &out.document.revision},
+                            {"prepared_by", &out.document.prepared_by},
+                            {"checked_by", &out.document.checked_by}}) {
+    *field = head->string(key).value_or("");
+    // On every printed page's header, which Excel limits to 255 characters in all.
+    head->check(key, field->size() <= 80, "a text of at most 80 characters (it heads every printed page)");
+  }
   if (auto mf = head->file_path("materials_file", "materials file (TOML)"))
     out.materials_file = *mf;
   else

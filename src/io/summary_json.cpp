@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -315,6 +316,11 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["scenario"] = {{"name", info.scenario_name},
                    {"file", info.scenario_file.string()},
                    {"materials_file", info.materials_file.string()}};
+  for (auto [key, value] : {std::pair{"reference", &info.document.reference},
+                            {"revision", &info.document.revision},
+                            {"prepared_by", &info.document.prepared_by},
+                            {"checked_by", &info.document.checked_by}})
+    if (!value->empty()) j["scenario"][key] = *value;
   j["seed"] = info.seed;
   j["throws"] = info.throws;
   j["command_line_overrides"] = info.overrides;  // [] when the file's values ran

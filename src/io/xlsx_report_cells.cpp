@@ -258,6 +258,32 @@ void Report::page_setup(lxw_worksheet* ws) {
   worksheet_fit_to_pages(ws, 1, 0);
   worksheet_set_margins(ws, 0.5, 0.5, 0.6, 0.6);
   check(worksheet_set_footer(ws, t_.get("page", "footer").c_str()), "worksheet_set_footer");
+  check(worksheet_set_header(ws, page_header().c_str()), "worksheet_set_header");
+}
+
+// The template's header with the project and the document control put in (an & of theirs
+// doubled: a single one is a code to Excel), within Excel's 255 characters: the template's 50
+// and 50 characters of each, 100 with every & doubled.
+std::string Report::page_header() const {
+  auto plain = [](std::string s, std::size_t most) {
+    if (s.size() > most) {
+      s.resize(most);
+      while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80) s.pop_back();
+      if (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0xC0) s.pop_back();
+      s += "…";
+    }
+    return replace_all(s, "&", "&&");
+  };
+  const LoadedScenario* sc = d_.scenario;
+  std::string doc;
+  auto add = [&](const std::string& part) { doc += (doc.empty() ? "" : "  ·  ") + part; };
+  if (sc && !sc->document.reference.empty()) add(sc->document.reference);
+  if (sc && !sc->document.revision.empty())
+    add(replace_all(t_.get("labels", "revision_in_header"), "{revision}", sc->document.revision));
+  add(d_.date);
+  std::string h = replace_all(t_.get("page", "header"), "{project}",
+                              plain(sc ? sc->scenario.name : std::string(), 50));
+  return replace_all(h, "{document}", plain(doc, 50));
 }
 
 void Report::status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c) {

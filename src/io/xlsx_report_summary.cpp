@@ -51,6 +51,15 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
     label("description");
     text(ws, r++, 2, sc->description);
   }
+  if (sc)
+    for (auto [key, value] : {std::pair{"reference", &sc->document.reference},
+                              {"revision", &sc->document.revision},
+                              {"prepared_by", &sc->document.prepared_by},
+                              {"checked_by", &sc->document.checked_by}})
+      if (!value->empty()) {
+        label(key);
+        text(ws, r++, 2, *value);
+      }
   if (sc) {
     label("scenario_file");
     text(ws, r++, 2, sc->file.string());

@@ -182,6 +182,7 @@ class Report {
   void fit_row(lxw_worksheet* ws, Row r,
                std::initializer_list<std::pair<const std::string*, double>> cells);
   void page_setup(lxw_worksheet* ws);
+  std::string page_header() const;
   void status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c);
 
   // -- charts (xlsx_report_charts.cpp)

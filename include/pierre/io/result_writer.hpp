@@ -37,6 +37,7 @@
 #include "pierre/design/check_line.hpp"
 #include "pierre/design/quarry_zones.hpp"
 #include "pierre/design/run_statistics.hpp"
+#include "pierre/io/document_control.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/sim/runner.hpp"
 #include "pierre/sim/scenario.hpp"
@@ -89,6 +90,7 @@ class ResultFiles final : public sim::ResultSink {
 // What summary.json says about the run besides the statistics.
 struct RunInfo {
   std::string scenario_name;
+  DocumentControl document;  // as given in [scenario]; the keys not given are left out
   std::filesystem::path scenario_file;
   std::filesystem::path materials_file;
   std::uint64_t seed = 0;

@@ -12,6 +12,7 @@
 #include "pierre/design/barrier_check.hpp"
 #include "pierre/design/barrier_rules.hpp"
 #include "pierre/io/block_group.hpp"
+#include "pierre/io/document_control.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/io/quarry_reader.hpp"
 #include "pierre/io/rules_folder.hpp"
@@ -25,6 +26,7 @@ struct LoadedScenario {
   std::filesystem::path file;        // the scenario file as given
   std::string text;                  // its text, echoed in reports
   std::string description;
+  DocumentControl document;
   std::vector<BlockGroup> block_groups;
   std::filesystem::path materials_file;  // where the presets came from
   // What the command line set instead of the file (--seed, --throws), each with the file's

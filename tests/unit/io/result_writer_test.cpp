@@ -224,9 +224,16 @@ TEST(SummaryJson, CarriesRunInfoAndStatistics) {
   info.throws = 2;
   info.trajectories = 2;
   info.threads = 3;
+  info.document.reference = "P-17";
+  info.document.checked_by = "B. Checker";
   const auto j = nlohmann::json::parse(io::summary_json(info, stats));
   EXPECT_EQ(j["pierre_version"], PIERRE_VERSION);
   EXPECT_EQ(j["scenario"]["name"], "w");
+  // The document control given, and only that.
+  EXPECT_EQ(j["scenario"]["reference"], "P-17");
+  EXPECT_EQ(j["scenario"]["checked_by"], "B. Checker");
+  EXPECT_FALSE(j["scenario"].contains("revision"));
+  EXPECT_FALSE(j["scenario"].contains("prepared_by"));
   EXPECT_EQ(j["seed"], 7);
   EXPECT_EQ(j["trajectories"], 2);
   EXPECT_EQ(j["threads"], 3);

@@ -47,6 +47,33 @@ TEST(ScenarioReader, BaseScenarioWithDefaults) {
   EXPECT_NE(l.text.find("[simulation]"), std::string::npos);
 }
 
+// Document control in [scenario], each optional: read as written; longer than a page header
+// holds, an error at its line.
+TEST(ScenarioReader, DocumentControlIsReadWhereGiven) {
+  TempDir dir;
+  const auto none = load_scenario(dir.write("s.toml", pierre::test::base()), kRules);
+  EXPECT_TRUE(none.document.reference.empty() && none.document.revision.empty() &&
+              none.document.prepared_by.empty() && none.document.checked_by.empty());
+  const auto l = load_scenario(
+      dir.write("s.toml", pierre::test::base_with(3, "reference = \"P-17 & Co\"\nrevision = \"B\"\n"
+                                                     "prepared_by = \"A. Engineer\"\nchecked_by = \"B. Checker\"")),
+      kRules);
+  EXPECT_EQ(l.document.reference, "P-17 & Co");
+  EXPECT_EQ(l.document.revision, "B");
+  EXPECT_EQ(l.document.prepared_by, "A. Engineer");
+  EXPECT_EQ(l.document.checked_by, "B. Checker");
+  try {
+    (void)load_scenario(dir.write("s.toml", pierre::test::base_with(3, "reference = \"" +
+                                                                          std::string(81, 'x') + "\"")),
+                        kRules);
+    FAIL() << "an 81-character reference was taken";
+  } catch (const pierre::io::InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(e.field(), "scenario.reference");
+    EXPECT_NE(e.expected().find("at most 80 characters"), std::string::npos) << e.expected();
+  }
+}
+
 TEST(ScenarioReader, IntegerAcceptedWhereFloatExpected) {
   TempDir dir;
   const auto l = load_scenario(dir.write("s.toml", base_with(14, "roughness = 1")), kRules);

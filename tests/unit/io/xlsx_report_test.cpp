@@ -986,6 +986,31 @@ TEST(XlsxReport, BarrierHistogramsNameTheLineTheySample) {
   EXPECT_EQ(titles.find("at Screen A<"), std::string::npos);
 }
 
+// Every printed page is headed by the project and the document control (reference, revision)
+// with the report's date, an & of theirs doubled (a single one is a code to Excel); the Summary
+// lists the document control given.
+TEST(XlsxReport, EveryPageIsHeadedByTheProjectAndTheDocument) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture();
+  f->scenario.document = {"P-17 & Co", "B", "A. Engineer", ""};
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  int sheets = 0;
+  const std::string want = "<oddHeader>&amp;L" + f->scenario.scenario.name +
+                           "&amp;RP-17 &amp;&amp; Co  ·  rev. B  ·  2024-05-17</oddHeader>";
+  for (const auto& n : zip_list(xlsx, dir.path())) {
+    if (n.rfind("xl/worksheets/sheet", 0) != 0) continue;
+    ++sheets;
+    EXPECT_NE(zip_entry(xlsx, n, dir.path()).find(want), std::string::npos) << n;
+  }
+  EXPECT_GE(sheets, 5);
+  const std::string strings = zip_entry(xlsx, "xl/sharedStrings.xml", dir.path());
+  for (const char* t : {"<t>Reference</t>", "<t>Revision</t>", "<t>Prepared by</t>", "<t>A. Engineer</t>"})
+    EXPECT_NE(strings.find(t), std::string::npos) << t;
+  EXPECT_EQ(strings.find("<t>Checked by</t>"), std::string::npos);  // not given: not listed
+}
+
 TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
   PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
