@@ -42,10 +42,6 @@ void set(CheckLine& l, CheckStatus s, std::string reason) {
   l.reason = std::move(reason);
 }
 
-// `declares_energy`: the candidate gives some capacity (a class, a MEL or a SEL). One that gives
-// none is checked on its height alone, and the line WARNs that its capacity was not compared
-// (an N/A would read, in a pipeline, like a check that does not apply); one that gives a capacity
-// but not the one the rule set designs on cannot pass that check.
 // A PASS whose margin lies within the requirement's bootstrap interval (upper bound `upper`,
 // NaN when there is none) is not one to rely on: a WARN that says so (the sample.size line
 // gives the interval's width).
@@ -58,6 +54,11 @@ void within_interval(CheckLine& l, double value, double upper, const char* unit,
               "): the margin is within the sampling uncertainty; more throws settle it";
 }
 
+// `declares_energy`: the candidate gives some capacity (a class, a MEL or a SEL). One that gives
+// none is checked on its height alone, and the line WARNs that its capacity was not compared
+// (an N/A would read, in a pipeline, like a check that does not apply); one that gives a capacity
+// but not the one the rule set designs on cannot pass that check. `upper`, `confidence`: the
+// requirement's bootstrap interval (within_interval).
 void capacity_line(Builder& b, const char* id, const char* name, bool needed, double declared,
                    double required, bool declares_energy, double upper, double confidence) {
   CheckLine& l = b.add(id, std::string("candidate ") + name + " against the required " + name +
