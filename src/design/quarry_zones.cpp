@@ -367,6 +367,19 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
                       " % bootstrap interval (up to " + quantity_text(upper, "m") +
                       "): the margin is within the sampling uncertainty; more throws settle it";
         }
+        // A group's pooled zone can fall short of one section's own percentile (Pauliberg A:
+        // 12.43 m pooled against its own 12.46 m): an area between the two is outside the zone
+        // the rule gives, but inside the one this face gives alone.
+        if (work_area && row.pooled && outside) {
+          const double own = censored_percentile(sr.distances.rd, sr.distances.censor_distance,
+                                                 rules.percentile);
+          if (value < own) {
+            l.status = CheckStatus::warn;
+            l.reason += ", but inside this section's own P" + num(rules.percentile) + " (" +
+                        (std::isfinite(own) ? quantity_text(own, "m") : std::string("beyond the profile")) +
+                        "; the zone is the group's, pooled)";
+          }
+        }
         if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.
         if (value > sr.geometry.floor_length)

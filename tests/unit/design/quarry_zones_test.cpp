@@ -149,6 +149,30 @@ TEST(QuarryZones, AWorkAreaWithinTheZonesIntervalWarns) {
   EXPECT_FALSE(any_failure(out.design->checks));
 }
 
+// A group's pooled zone can fall short of one section's own percentile: an area between the two
+// WARNs. Runouts 1..100 m and 1..50 m under two 20 m faces pool to 150 values of k/20 H; their
+// P95 (type 7, position 141.55 of 0..149: k = 92 and 93) is 92.55 m, while the first face's own
+// P95 is 95.05 m.
+TEST(QuarryZones, AnAreaInsideItsSectionsOwnPercentileButOutsideThePooledZoneWarns) {
+  auto a = section("Face A", one_to(100));
+  auto b = section("Face B", one_to(50));
+  a.spec.group = b.spec.group = "AB";
+  a.spec.work_areas = {{"shed", 94}, {"yard", 150}};
+  const auto out = design_quarry({a, b}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  EXPECT_NEAR(out.design->sections[0].danger_zone, 92.55, 1e-9);
+  const CheckLine* shed = find(*out.design, "Face A", "zone.shed");
+  const CheckLine* yard = find(*out.design, "Face A", "zone.yard");
+  ASSERT_TRUE(shed && yard);
+  EXPECT_EQ(shed->status, CheckStatus::warn);
+  EXPECT_NE(shed->reason.find("but inside this section's own P95 (95.05 m; the zone is the "
+                              "group's, pooled)"),
+            std::string::npos)
+      << shed->reason;
+  EXPECT_EQ(yard->status, CheckStatus::pass);
+  EXPECT_EQ(yard->reason.find("own P95"), std::string::npos) << yard->reason;
+}
+
 // A work area past the end of the modelled floor passes (outside the zone) but says that the
 // ground there is not in the section (a new user's area at 80 m on a 50 m floor passed silently).
 TEST(QuarryZones, AWorkAreaPastTheFloorSaysSo) {
