@@ -144,6 +144,8 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
       needed += " (SEL_req governs: MEL_req alone needs class " + std::to_string(on_mel->number) + ")";
     else if (on_mel && on_sel && on_sel->number < chosen && on_mel->number == chosen)
       needed += " (MEL_req governs: SEL_req alone needs class " + std::to_string(on_sel->number) + ")";
+    else if (on_mel && on_sel && on_mel->number == chosen && on_sel->number == chosen)
+      needed += " (each alone needs class " + std::to_string(chosen) + ")";
   }
   // The table by its title for the reader, and by the name a scenario gives it.
   const std::string table = classes.title.empty() ? classes.name : classes.title + " (" + classes.name + ")";

@@ -194,11 +194,13 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, const 
     set(l, CheckStatus::fail, pct(p) + " > acceptable " + pct(*acceptable));
   if (row && own.value < row->threshold) {
     // Not a PASS beside the FAIL of the candidate's own capacity line: the line still judges
-    // the spec's value, and says what it does not cover.
+    // the spec's value, and says what it does not cover (in the capacity line's numbers).
+    const bool failed = l.status == CheckStatus::fail;
     if (l.status == CheckStatus::pass) l.status = CheckStatus::warn;
-    l.reason += "; but the candidate's own " + std::string(own.name) + " " + num(own.value) +
-                " " + own.unit + " is below the required " + num(row->threshold) + " " +
-                own.unit + " (" + own.line + ") and is exceeded with " +
+    const auto [has, needs] = compared_texts(own.value, row->threshold, own.unit);
+    l.reason += std::string(failed ? "; and" : "; but") + " the candidate's own " + own.name +
+                " " + has + " is below the required " + needs + " (" + own.line +
+                ") and is exceeded " + (failed ? "still more often, with " : "with ") +
                 pct(weibull_exceedance(fit, own.value));
   }
 }

@@ -361,24 +361,30 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
         // Outside the zone, but not outside its bootstrap interval: the margin is within the
         // sampling uncertainty the sample.size line gives, so the PASS is not one to rely on.
         const double upper = row.rd_interval ? row.rd_interval->upper * H : kNaN;
-        if (work_area && outside && std::isfinite(upper) && value < upper) {
-          l.status = CheckStatus::warn;
-          l.reason += ", but within its " + num(100 * row.rd_interval->confidence) +
-                      " % bootstrap interval (up to " + quantity_text(upper, "m") +
-                      "): the margin is within the sampling uncertainty; more throws settle it";
-        }
+        const bool in_interval = work_area && outside && std::isfinite(upper) && value < upper;
         // A group's pooled zone can fall short of one section's own percentile (Pauliberg A:
         // 12.43 m pooled against its own 12.46 m): an area between the two is outside the zone
         // the rule gives, but inside the one this face gives alone.
-        if (work_area && row.pooled && outside) {
-          const double own = censored_percentile(sr.distances.rd, sr.distances.censor_distance,
-                                                 rules.percentile);
-          if (value < own) {
-            l.status = CheckStatus::warn;
-            l.reason += ", but inside this section's own P" + num(rules.percentile) + " (" +
-                        (std::isfinite(own) ? quantity_text(own, "m") : std::string("beyond the profile")) +
-                        "; the zone is the group's, pooled)";
-          }
+        const double own = work_area && row.pooled && outside
+                               ? censored_percentile(sr.distances.rd, sr.distances.censor_distance,
+                                                     rules.percentile)
+                               : kNaN;
+        const bool in_own = value < own;  // false for NaN
+        if (in_interval || in_own) {
+          l.status = CheckStatus::warn;
+          std::string why;
+          if (in_interval)
+            why = "within its " + num(100 * row.rd_interval->confidence) +
+                  " % bootstrap interval (up to " + quantity_text(upper, "m") + ")";
+          if (in_own)
+            why += std::string(why.empty() ? "" : " and ") + "inside this section's own P" +
+                   num(rules.percentile) + " (" +
+                   (std::isfinite(own) ? quantity_text(own, "m") : std::string("beyond the profile")) +
+                   "; the zone is the group's, pooled)";
+          l.reason += ", but " + why +
+                      (in_interval ? ": the margin is within the sampling uncertainty; more "
+                                     "throws settle it"
+                                   : "");
         }
         if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.

@@ -95,14 +95,19 @@ struct UnitSlip {
   std::string beyond;
 };
 
+// A number as typed, without an exponent below 10^15 (3000000, not 3e+06; 1.1).
+std::string typed(double v) {
+  return std::abs(v) < 1e15 && v == std::floor(v) ? fmt::format("{:.0f}", v) : fmt::format("{:g}", v);
+}
+
 void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
                     const UnitSlip& u, std::vector<InputNote>& notes) {
   if (!(v > u.limit)) return;
   notes.push_back({t.file(), line_of(*t.find(key)), t.field(key),
-                   fmt::format("{} {:g} {} is more than {:g} {}{}: it is read in {}; if it was "
-                               "meant in {}, it is {:g} {}",
-                               what, v, u.unit, u.limit, u.unit, u.beyond, u.unit, u.small_unit,
-                               v / 1000, u.unit)});
+                   fmt::format("{} {} {} is more than {} {}{}: it is read in {}; if it was "
+                               "meant in {}, it is {} {}",
+                               what, typed(v), u.unit, typed(u.limit), u.unit, u.beyond, u.unit,
+                               u.small_unit, typed(v / 1000), u.unit)});
 }
 
 // Rockfall barriers are some metres high and stretch some metres; their energies are up to
@@ -118,16 +123,19 @@ void note_candidate(const TomlTable& c, const design::CandidateBarrier& k,
   const design::EnergyClass* top = nullptr;
   for (const auto& e : classes.classes)
     if (!top || e.mel_kJ >= top->mel_kJ) top = &e;  // the last of equals: the open-ended one
-  const UnitSlip energy{kLargestBarrierEnergy, "kJ", "J",
-                        top ? fmt::format(" (the largest class of {}: MEL {}{:g} kJ)", classes.name,
-                                          top->open_ended ? "> " : "", top->mel_kJ)
-                            : ""};
+  // The largest class's own capacity of the same kind, MEL beside a MEL, SEL beside a SEL.
+  auto energy = [&](const char* name, double top_value) {
+    return UnitSlip{kLargestBarrierEnergy, "kJ", "J",
+                    top ? fmt::format(" (the largest class of {}: {} {}{} kJ)", classes.name, name,
+                                      top->open_ended ? "> " : "", typed(top_value))
+                        : ""};
+  };
   const UnitSlip length{kTallestBarrier, "m", "mm", ""};
   const UnitSlip stretch{kLongestElongation, "m", "mm", ""};
-  if (k.mel_kJ) note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ, energy, notes);
-  // The SEL is at most the MEL: said for itself only when no MEL is given.
-  if (k.sel_kJ && !k.mel_kJ)
-    note_unit_slip(c, "sel", "the candidate's SEL", *k.sel_kJ, energy, notes);
+  if (k.mel_kJ)
+    note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ, energy("MEL", top ? top->mel_kJ : 0), notes);
+  if (k.sel_kJ)
+    note_unit_slip(c, "sel", "the candidate's SEL", *k.sel_kJ, energy("SEL", top ? top->sel_kJ : 0), notes);
   if (k.height) note_unit_slip(c, "height", "the candidate's height", *k.height, length, notes);
   if (k.elongation_mel)
     note_unit_slip(c, "elongation_mel", "the elongation in the MEL test", *k.elongation_mel,
@@ -229,12 +237,12 @@ design::ObservedSample read_observed(const fs::path& file, std::vector<InputNote
     if (beyond > 0)
       notes.push_back(
           {file, first_line, c.name,
-           fmt::format("{} {:g} {}{} is more than {:g} {}, {}: the column is read in {}; if it "
-                       "is in {}, {:g} is {:.3g} {}",
-                       c.name, first, c.unit,
+           fmt::format("{} {} {}{} is more than {} {}, {}: the column is read in {}; if it "
+                       "is in {}, {} is {:.3g} {}",
+                       c.name, typed(first), c.unit,
                        beyond > 1 ? fmt::format(" (and {} more rows like it)", beyond - 1) : "",
-                       c.limit, c.unit, c.beyond, c.unit, c.slip, first, first * c.slip_factor,
-                       c.unit)});
+                       typed(c.limit), c.unit, c.beyond, c.unit, c.slip, typed(first),
+                       first * c.slip_factor, c.unit)});
   }
   if (!any)
     throw InputError(file, t.header_line, "header", "none of the columns",

@@ -86,11 +86,15 @@ ojson barrier_json(const design::BarrierDesign& d) {
   j["E_d_interval_kJ"] = interval_json(d.E_d_interval);
   j["MEL_req_kJ"] = d.MEL_req_kJ;
   j["SEL_req_kJ"] = d.SEL_req_kJ;
-  if (d.energy_class)
+  if (d.energy_class) {
     j["energy_class"] = {{"class", d.energy_class->number},
                          {"SEL_kJ", d.energy_class->sel_kJ},
                          {"MEL_kJ", d.energy_class->mel_kJ},
                          {"open_ended", d.energy_class->open_ended}};
+    // How it was chosen, as the report says it (which requirement governs, the table's source).
+    if (const auto it = d.how.find("energy_class"); it != d.how.end())
+      j["energy_class"]["how"] = it->second;
+  }
   else
     j["energy_class"] = nullptr;
   j["free_board_m"] = d.free_board;

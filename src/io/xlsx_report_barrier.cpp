@@ -267,9 +267,10 @@ Row Report::barrier_design_values(lxw_worksheet* ws, Row r, const design::Barrie
   ++r;
   if (b.rotational_energy.count > 0)
     paragraph(ws, r++, 0, kBarrierNoteLast, kBarrierNoteWidth,
+              // In the statistics table's decimals (energies to 0.1 kJ).
               replace_all(replace_all(t_.get("labels", "translational_energy_note"), "{mean}",
-                                      design::number_text(b.rotational_energy.mean, 4)),
-                          "{max}", design::number_text(b.rotational_energy.max, 4)),
+                                      fmt::format("{:.1f}", b.rotational_energy.mean)),
+                          "{max}", fmt::format("{:.1f}", b.rotational_energy.max)),
               wrapped_note());
   return r;
 }

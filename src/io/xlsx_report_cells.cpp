@@ -120,6 +120,14 @@ lxw_format* Report::wrap() {
   });
 }
 
+lxw_format* Report::bold_wrap() {
+  return cached("bold_wrap", [&](lxw_format* f) {
+    format_set_bold(f);
+    format_set_text_wrap(f);
+    format_set_align(f, LXW_ALIGN_VERTICAL_TOP);
+  });
+}
+
 lxw_format* Report::indented() {
   return cached("indented", [&](lxw_format* f) {
     format_set_indent(f, 1);
@@ -261,29 +269,37 @@ void Report::page_setup(lxw_worksheet* ws) {
   check(worksheet_set_header(ws, page_header().c_str()), "worksheet_set_header");
 }
 
-// The template's header with the project and the document control put in (an & of theirs
-// doubled: a single one is a code to Excel), within Excel's 255 characters: the template's 50
-// and 50 characters of each, 100 with every & doubled.
+// The template's header with the project and the document control put in: the date always,
+// the project, reference and revision cut (by characters) where they would take the header
+// past Excel's 255 characters, an & of theirs doubled (a single one is a code to Excel).
 std::string Report::page_header() const {
-  auto plain = [](std::string s, std::size_t most) {
-    if (s.size() > most) {
-      s.resize(most);
-      while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80) s.pop_back();
-      if (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0xC0) s.pop_back();
-      s += "…";
-    }
-    return replace_all(s, "&", "&&");
+  auto cut = [](const std::string& s, std::size_t most) {  // at most `most` characters
+    std::size_t chars = 0, i = 0;
+    for (; i < s.size(); ++i)
+      if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80 && chars++ == most) break;
+    return i < s.size() ? s.substr(0, i) + "…" : s;
   };
   const LoadedScenario* sc = d_.scenario;
-  std::string doc;
-  auto add = [&](const std::string& part) { doc += (doc.empty() ? "" : "  ·  ") + part; };
-  if (sc && !sc->document.reference.empty()) add(sc->document.reference);
-  if (sc && !sc->document.revision.empty())
-    add(replace_all(t_.get("labels", "revision_in_header"), "{revision}", sc->document.revision));
-  add(d_.date);
-  std::string h = replace_all(t_.get("page", "header"), "{project}",
-                              plain(sc ? sc->scenario.name : std::string(), 50));
-  return replace_all(h, "{document}", plain(doc, 50));
+  const std::string project = sc ? sc->scenario.name : std::string();
+  const std::string reference = sc ? sc->document.reference : std::string();
+  const std::string revision = sc ? sc->document.revision : std::string();
+  auto build = [&](std::size_t most) {
+    std::string doc;
+    auto add = [&](const std::string& part) { doc += (doc.empty() ? "" : "  ·  ") + part; };
+    if (!reference.empty()) add(replace_all(cut(reference, most), "&", "&&"));
+    if (!revision.empty())
+      add(replace_all(replace_all(t_.get("labels", "revision_in_header"), "{revision}",
+                                  cut(revision, most)),
+                      "&", "&&"));
+    add(d_.date);
+    return replace_all(replace_all(t_.get("page", "header"), "{project}",
+                                   replace_all(cut(project, most), "&", "&&")),
+                       "{document}", doc);
+  };
+  std::size_t most = 80;  // the inputs' own limit: whole, unless the header outgrows Excel's
+  std::string h = build(most);
+  while (h.size() > 255 && most > 8) h = build(most -= 8);
+  return h;
 }
 
 void Report::status_colours(lxw_worksheet* ws, Row r0, Row r1, Col c) {

@@ -84,8 +84,19 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
     for (const auto& o : sc->overrides) text(ws, r++, 2, o);
   }
   if (sc && !sc->notes.empty()) {  // likely mistakes the readers noted: the client sees them too
-    label("input_notes");
-    for (const auto& n : sc->notes) text(ws, r++, 2, n.message());
+    // The label over A:B and each note over C to the print width, both wrapped (a note ran
+    // off the printed page, the label was cut).
+    const std::string head = t_.get("labels", "input_notes");
+    merged(ws, r, 0, 1, head, bold_wrap());
+    for (const auto& n : sc->notes) {
+      const std::string m = n.message();
+      merged(ws, r, 2, kNoteLast, m, wrapped_note());
+      if (&n == &sc->notes.front())
+        fit_row(ws, r, {{&head, 36}, {&m, kNoteWidth - 36}});
+      else
+        fit_row(ws, r, {{&m, kNoteWidth - 36}});
+      ++r;
+    }
   }
   label("trajectories");
   num(ws, r++, 2,
@@ -228,7 +239,7 @@ Row Report::summary_stops(lxw_worksheet* ws, Row r) {
   std::uint64_t total = 0;
   for (const auto& s : stops) total += s.count;
   r = table_title(ws, r, "stop_reasons");
-  headings(ws, r++, 0, "stop_reasons", {"reason", "count", "share", "meaning"}, 20);
+  headings(ws, r++, 0, "stop_reasons", {"reason", "count", "share", "meaning"}, 30);  // two lines
   for (const auto& s : stops) {
     const std::string_view name = sim::to_string(s.reason);
     std::string key = "stop_" + std::string(name);

@@ -97,6 +97,7 @@ class Report {
   lxw_format* wrapped_note();  // note(), wrapped in its cell, at the top
   lxw_format* bold();
   lxw_format* wrap();
+  lxw_format* bold_wrap();  // bold(), wrapped in its cell, at the top
   lxw_format* centred();
   lxw_format* top();
   lxw_format* indented();

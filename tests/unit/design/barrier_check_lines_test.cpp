@@ -242,15 +242,19 @@ TEST(BarrierCheckLines, ACandidateBelowTheRequirementHasItsOwnExceedanceInTheRea
   const auto& e = line(lines, "exceedance.energy");
   EXPECT_EQ(e.status, CheckStatus::warn);
   EXPECT_DOUBLE_EQ(e.value, 100 * 0.001);  // the spec's value is still P(E > MEL_req)
-  EXPECT_EQ(e.reason, "0.1 % <= acceptable 0.2 %; but the candidate's own MEL 1200 kJ is below "
-                      "the required 1500 kJ (energy.mel) and is exceeded with 23.7 %");
+  EXPECT_EQ(e.reason, "0.1 % <= acceptable 0.2 %; but the candidate's own MEL 1200.0 kJ is below "
+                      "the required 1500.0 kJ (energy.mel) and is exceeded with 23.7 %");
   EXPECT_NEAR(std::exp(-1.44), 0.237, 5e-4);
   EXPECT_EQ(line(lines, "exceedance.height").reason,
-            "2 % <= acceptable 5 %; but the candidate's own height 3.5 m is below the required "
-            "4 m (height.interception) and is exceeded with 4.68 %");
-  // A FAIL stays a FAIL, with the same addition.
+            "2 % <= acceptable 5 %; but the candidate's own height 3.50 m is below the required "
+            "4.00 m (height.interception) and is exceeded with 4.68 %");
+  // A FAIL stays a FAIL, and the addition says the candidate fares worse still.
   d.spec.acceptable_height_exceedance = 0.01;
-  EXPECT_EQ(status(d, rules(), "exceedance.height"), CheckStatus::fail);
+  lines = design::barrier_check_lines(d, rules());
+  EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::fail);
+  EXPECT_EQ(line(lines, "exceedance.height").reason,
+            "2 % > acceptable 1 %; and the candidate's own height 3.50 m is below the required "
+            "4.00 m (height.interception) and is exceeded still more often, with 4.68 %");
   EXPECT_NEAR(std::exp(-1.75 * 1.75), 0.0468, 5e-5);
 }
 

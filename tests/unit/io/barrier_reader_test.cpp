@@ -150,7 +150,7 @@ TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
   EXPECT_EQ(slips[1].field, "barriers[0].candidate.mel");
   EXPECT_EQ(slips[1].line, 34);
   EXPECT_EQ(slips[1].text,
-            "the candidate's MEL 3.2e+06 kJ is more than 30000 kJ (the largest class of "
+            "the candidate's MEL 3200000 kJ is more than 30000 kJ (the largest class of "
             "etag027-classes: MEL > 4500 kJ): it is read in kJ; if it was meant in J, it is 3200 kJ");
   EXPECT_EQ(slips[2].field, "barriers[0].candidate.height");
   EXPECT_NE(slips[2].text.find("if it was meant in mm, it is 5 m"), std::string::npos) << slips[2].text;
@@ -163,6 +163,10 @@ TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
   const auto sel = notes("[barriers.candidate]\nsel = 1e6");
   ASSERT_EQ(sel.size(), 1u);
   EXPECT_EQ(sel[0].field, "barriers[0].candidate.sel");
+  // Beside a SEL, the largest class's SEL; both in J, both noted (the SEL was left to the next run).
+  EXPECT_NE(sel[0].text.find("(the largest class of etag027-classes: SEL > 1500 kJ)"), std::string::npos)
+      << sel[0].text;
+  EXPECT_EQ(notes("[barriers.candidate]\nmel = 45000.0\nsel = 35000.0").size(), 2u);
 }
 
 TEST(BarrierReader, ObservedColumnsInTheSmallerUnitAreNoted) {

@@ -682,7 +682,8 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
                     line("Screen A", "sample.size", 6.7, 5, "%", design::CheckStatus::warn),
                     line("Screen B", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass),
                     line("Screen B", "height.interception", 3.5, 4.02, "m", design::CheckStatus::fail),
-                    line("Screen B", "elongation", 5, 9, "m", design::CheckStatus::fail)};
+                    line("Screen B", "elongation", 5, 9, "m", design::CheckStatus::fail),
+                    line("Screen B", "sample.size", 6.7, 5, "%", design::CheckStatus::warn)};
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
@@ -695,7 +696,7 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
   EXPECT_EQ(said[0], "Screen A: the candidate (class 6, MEL 3000 kJ, SEL 1000 kJ, height 3.50 m): "
                      "no check line FAILs; WARN sample.size.");
   EXPECT_EQ(said[1], "Screen B: the candidate (class 6, MEL 3000 kJ, SEL 1000 kJ, height 3.50 m) "
-                     "FAILS height.interception, elongation.");
+                     "FAILS height.interception, elongation; WARN sample.size.");
 }
 
 // A barrier's sheet says what the passing height is (the centre of a point mass: a reviewer could
@@ -724,7 +725,7 @@ TEST(XlsxReport, ABarrierSheetDefinesThePassingHeightAndSaysEdIsTranslational) {
   EXPECT_LT(*height, *boot);
   const auto ed = starting("E_d = ½ m_d v_d² is translational");
   ASSERT_TRUE(ed);
-  EXPECT_NE(cell(bar, *ed, 0)->text.find("(mean 28 kJ, max 70 kJ, in the statistics above)"),
+  EXPECT_NE(cell(bar, *ed, 0)->text.find("(mean 28.0 kJ, max 70.0 kJ, in the statistics above)"),
             std::string::npos)
       << cell(bar, *ed, 0)->text;
 }
@@ -1009,6 +1010,21 @@ TEST(XlsxReport, EveryPageIsHeadedByTheProjectAndTheDocument) {
   for (const char* t : {"<t>Reference</t>", "<t>Revision</t>", "<t>Prepared by</t>", "<t>A. Engineer</t>"})
     EXPECT_NE(strings.find(t), std::string::npos) << t;
   EXPECT_EQ(strings.find("<t>Checked by</t>"), std::string::npos);  // not given: not listed
+
+  // Long values are cut, never the date or the revision, within Excel's 255 characters (an
+  // 80-character reference lost both: the whole text was cut at 50 bytes).
+  f->scenario.scenario.name = std::string(150, 'P');
+  f->scenario.document = {std::string(40, '&') + std::string(40, 'R'), "B", "", ""};
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const std::string x = zip_entry(xlsx, "xl/worksheets/sheet1.xml", dir.path());
+  const std::size_t a = x.find("<oddHeader>"), b = x.find("</oddHeader>");
+  ASSERT_NE(a, std::string::npos);
+  std::string header = x.substr(a + 11, b - a - 11);
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"&amp;", "&"}, {"&lt;", "<"}})
+    for (std::size_t k; (k = header.find(from)) != std::string::npos;) header.replace(k, from.size(), to);
+  EXPECT_LE(header.size(), 255u) << header;
+  EXPECT_NE(header.find("rev. B  ·  2024-05-17"), std::string::npos) << header;
+  EXPECT_NE(header.find("&&&&"), std::string::npos) << header;  // the reference's &s, doubled
 }
 
 TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
