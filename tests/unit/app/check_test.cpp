@@ -236,6 +236,12 @@ TEST_F(Check, DesignWithoutCandidateHasOnlyAdvisoryLines) {
   EXPECT_EQ(b["mode"], "design");
   EXPECT_EQ(b["rules"]["name"], "peila-ronco-2009");  // the default
   EXPECT_TRUE(b["energy_class"]["class"].is_number_integer());
+  // How it was chosen, as the report says: on MEL (peila-ronco-2009 designs on MEL).
+  EXPECT_EQ(b["energy_class"]["how"].get<std::string>().rfind("the smallest class of the ", 0), 0u)
+      << b["energy_class"]["how"];
+  EXPECT_NE(b["energy_class"]["how"].get<std::string>().find("meeting MEL_req (the rule set designs on MEL"),
+            std::string::npos)
+      << b["energy_class"]["how"];
   EXPECT_NEAR(b["gamma_F"]["value"].get<double>(), 1.10 * 1.10, 1e-12);
 }
 
