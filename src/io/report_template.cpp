@@ -64,7 +64,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "quarry_average_note", "resolved", "defaulted", "from_class",
                  "open_class_capacity", "input_notes", "quarry_all", "quarry_all_note", "travel_time",
                  "travel_time_value", "runout_quarry_note", "failing", "candidate_passes",
-                 "candidate_fails", "candidate_warns", "passing_height_note",
+                 "candidate_fails", "candidate_warns", "verify_note", "passing_height_note",
                  "translational_energy_note"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",

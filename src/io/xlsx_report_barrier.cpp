@@ -356,6 +356,11 @@ Row Report::barrier_checks(lxw_worksheet* ws, Row r, const design::BarrierDesign
     r = table_title(ws, r, "barrier_checks");
     // id in A (wide), what in B.. would be cut: keep Summary's columns minus the subject.
     r = check_table(ws, r, b.checks, false);
+    if (std::any_of(b.checks.begin(), b.checks.end(), [](const design::CheckLine& l) {
+          return l.rule.find("(verify)") != std::string::npos;
+        }))
+      paragraph(ws, r++, 0, kBarrierNoteLast, kBarrierNoteWidth,
+                t_.get("labels", "verify_note"), wrapped_note());
   }
   if (!b.notes.empty()) {
     r = table_title(ws, r, "notes");

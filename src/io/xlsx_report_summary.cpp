@@ -282,6 +282,10 @@ void Report::summary_checks(lxw_worksheet* ws, Row r) {
     text(ws, r++, 0, replace_all(t_.get("labels", "failing"), "{lines}", failing), bold());
   const Row head = r;
   if (!lines.empty()) r = check_table(ws, r, lines, true);  // no headings over nothing
+  if (std::any_of(lines.begin(), lines.end(), [](const design::CheckLine& l) {
+        return l.rule.find("(verify)") != std::string::npos;
+      }))
+    paragraph(ws, r++, 0, kNoteLast, kNoteWidth, t_.get("labels", "verify_note"), wrapped_note());
   check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : 9),
         "worksheet_print_area");
   if (!lines.empty()) check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");

@@ -1027,6 +1027,35 @@ TEST(XlsxReport, EveryPageIsHeadedByTheProjectAndTheDocument) {
   EXPECT_NE(header.find("&&&&"), std::string::npos) << header;  // the reference's &s, doubled
 }
 
+// A check whose rule the rule set marks "(verify)" (design-checks.md: read from a secondary
+// source) is explained under the check table, for a client who meets the mark; a table
+// without one has no such note.
+TEST(XlsxReport, AVerifyMarkIsExplainedUnderTheChecks) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  const std::string note = "<t>(verify): the rule set marks this value as read from a secondary source";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  EXPECT_EQ(zip_entry(xlsx, "xl/sharedStrings.xml", dir.path()).find(note), std::string::npos);
+  design::CheckLine l = line("Screen A", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass);
+  l.rule = "peila-ronco-2009 §3 (MEL_req = γE,MEL · ½ m_d v_d²) (verify)";
+  f->data.checks.push_back(l);
+  f->data.barriers.at(0).checks = {l};
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const std::string strings = zip_entry(xlsx, "xl/sharedStrings.xml", dir.path());
+  const std::size_t at = strings.find(note);
+  ASSERT_NE(at, std::string::npos);
+  // Under the Summary's table and under the barrier sheet's: the one shared string (its index:
+  // the <si> entries before it) in both sheets.
+  long index = -1;
+  for (std::size_t p = strings.find("<si>"); p < at; p = strings.find("<si>", p + 1)) ++index;
+  ASSERT_GE(index, 0);
+  const std::string v = "<v>" + std::to_string(index) + "</v>";
+  EXPECT_NE(zip_entry(xlsx, "xl/worksheets/sheet1.xml", dir.path()).find(v), std::string::npos);
+  EXPECT_NE(zip_entry(xlsx, "xl/worksheets/sheet2.xml", dir.path()).find(v), std::string::npos);
+}
+
 TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
   PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
