@@ -49,9 +49,8 @@ void within_interval(CheckLine& l, double value, double upper, const char* unit,
                      double confidence) {
   if (l.status != CheckStatus::pass || !std::isfinite(upper) || !(value < upper)) return;
   l.status = CheckStatus::warn;
-  l.reason += ", but within the requirement's " + num(100 * confidence) +
-              " % bootstrap interval (up to " + quantity_text(upper, unit) +
-              "): the margin is within the sampling uncertainty; more throws settle it";
+  l.reason += ", but " + within_interval_text("the requirement's", confidence, quantity_text(upper, unit)) +
+              std::string(kWithinUncertainty);
 }
 
 // `declares_energy`: the candidate gives some capacity (a class, a MEL or a SEL). One that gives

@@ -374,17 +374,13 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
           l.status = CheckStatus::warn;
           std::string why;
           if (in_interval)
-            why = "within its " + num(100 * row.rd_interval->confidence) +
-                  " % bootstrap interval (up to " + quantity_text(upper, "m") + ")";
+            why = within_interval_text("its", row.rd_interval->confidence, quantity_text(upper, "m"));
           if (in_own)
             why += std::string(why.empty() ? "" : " and ") + "inside this section's own P" +
                    num(rules.percentile) + " (" +
                    (std::isfinite(own) ? quantity_text(own, "m") : std::string("beyond the profile")) +
                    "; the zone is the group's, pooled)";
-          l.reason += ", but " + why +
-                      (in_interval ? ": the margin is within the sampling uncertainty; more "
-                                     "throws settle it"
-                                   : "");
+          l.reason += ", but " + why + std::string(in_interval ? kWithinUncertainty : "");
         }
         if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "csv_table.hpp"
+#include "pierre/design/number_text.hpp"
 #include "pierre/io/rule_set_reader.hpp"
 #include "rule_kind.hpp"
 #include "section_readers.hpp"
@@ -95,10 +96,8 @@ struct UnitSlip {
   std::string beyond;
 };
 
-// A number as typed, without an exponent below 10^15 (3000000, not 3e+06; 1.1).
-std::string typed(double v) {
-  return std::abs(v) < 1e15 && v == std::floor(v) ? fmt::format("{:.0f}", v) : fmt::format("{:g}", v);
-}
+// A number as typed: 15 significant digits, no exponent below 10^15 (3000000, not 3e+06; 1.1).
+std::string typed(double v) { return design::number_text(v, 15); }
 
 void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
                     const UnitSlip& u, std::vector<InputNote>& notes) {

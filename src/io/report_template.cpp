@@ -438,27 +438,26 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
     if (!l) t.missing("landscape", "true or false");
     tpl.landscape = *l;
     tpl.paper = static_cast<int>(required_integer(t, "paper", 0, 118));
-    const std::string footer = t.required_string("footer", "a string: the page footer");
-    // Excel's limit, and no picture codes: pierre gives the footer no image, and libxlsxwriter
+    // No picture codes in the footer or header: pierre gives them no image, and libxlsxwriter
     // fails (or worse) on a &G without one.
+    auto no_picture_codes = [&](const char* key, const std::string& text) {
+      std::string upper = text;
+      for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+      t.check(key, upper.find("&G") == std::string::npos && upper.find("&[PICTURE]") == std::string::npos,
+              fmt::format("a {} without picture codes (&G, &[Picture]): the report puts no image in it",
+                          key));
+    };
+    const std::string footer = t.required_string("footer", "a string: the page footer");
     t.check("footer", footer.size() <= 255, "a footer of at most 255 characters (Excel's limit)");
-    std::string upper = footer;
-    for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    t.check("footer",
-            upper.find("&G") == std::string::npos && upper.find("&[PICTURE]") == std::string::npos,
-            "a footer without picture codes (&G, &[Picture]): the report puts no image in it");
+    no_picture_codes("footer", footer);
     tpl.text["page"]["footer"] = footer;
     // The header, with {project} and {document} (the reference, revision and date): optional,
     // so that a layout copied before it existed keeps working.
     const std::string header = t.string("header").value_or("&L{project}&R{document}");
     t.check("header", header.size() <= 50,
-            "a header of at most 50 characters (Excel allows 255, with the project's name and "
-            "the document's reference put in, up to 100 each)");
-    upper = header;
-    for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    t.check("header",
-            upper.find("&G") == std::string::npos && upper.find("&[PICTURE]") == std::string::npos,
-            "a header without picture codes (&G, &[Picture]): the report puts no image in it");
+            "a header of at most 50 characters (Excel allows 255 in all, and the project's name "
+            "and the document's reference and revision are put in)");
+    no_picture_codes("header", header);
     tpl.text["page"]["header"] = header;
   }
   {

@@ -357,10 +357,7 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
   out.scenario.name = head->required_string("name", "a name for the scenario");
   head->check("name", !out.scenario.name.empty(), "a non-empty name");
   out.description = head->string("description").value_or("");
-  for (auto [key, field] : {std::pair{"reference", &out.document.reference},
-                            {"revision", &out.document.revision},
-                            {"prepared_by", &out.document.prepared_by},
-                            {"checked_by", &out.document.checked_by}}) {
+  for (auto [key, field] : out.document.fields()) {
     *field = head->string(key).value_or("");
     // On every printed page's header, which Excel limits to 255 characters in all.
     head->check(key, field->size() <= 80, "a text of at most 80 characters (it heads every printed page)");

@@ -320,10 +320,7 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["scenario"] = {{"name", info.scenario_name},
                    {"file", info.scenario_file.string()},
                    {"materials_file", info.materials_file.string()}};
-  for (auto [key, value] : {std::pair{"reference", &info.document.reference},
-                            {"revision", &info.document.revision},
-                            {"prepared_by", &info.document.prepared_by},
-                            {"checked_by", &info.document.checked_by}})
+  for (auto [key, value] : info.document.fields())
     if (!value->empty()) j["scenario"][key] = *value;
   j["seed"] = info.seed;
   j["throws"] = info.throws;

@@ -274,10 +274,8 @@ void Report::page_setup(lxw_worksheet* ws) {
 // past Excel's 255 characters, an & of theirs doubled (a single one is a code to Excel).
 std::string Report::page_header() const {
   auto cut = [](const std::string& s, std::size_t most) {  // at most `most` characters
-    std::size_t chars = 0, i = 0;
-    for (; i < s.size(); ++i)
-      if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80 && chars++ == most) break;
-    return i < s.size() ? s.substr(0, i) + "…" : s;
+    std::string p = utf8_prefix(s, most);
+    return p.size() < s.size() ? p + "…" : p;
   };
   const LoadedScenario* sc = d_.scenario;
   const std::string project = sc ? sc->scenario.name : std::string();

@@ -52,10 +52,7 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
     text(ws, r++, 2, sc->description);
   }
   if (sc)
-    for (auto [key, value] : {std::pair{"reference", &sc->document.reference},
-                              {"revision", &sc->document.revision},
-                              {"prepared_by", &sc->document.prepared_by},
-                              {"checked_by", &sc->document.checked_by}})
+    for (auto [key, value] : sc->document.fields())
       if (!value->empty()) {
         label(key);
         text(ws, r++, 2, *value);

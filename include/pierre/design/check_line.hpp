@@ -54,4 +54,11 @@ SampleNeeded sample_needed(double trajectories, std::uint32_t throws, double rel
 // throws are not known.
 std::string throws_needed_text(const SampleNeeded& needed);
 
+// A PASS whose margin lies inside the bootstrap interval of what it is judged against, barriers'
+// capacities and quarries' zones alike: "within <whose> 90 % bootstrap interval (up to
+// <upper>)", and what follows from it.
+std::string within_interval_text(std::string_view whose, double confidence, const std::string& upper);
+inline constexpr std::string_view kWithinUncertainty =
+    ": the margin is within the sampling uncertainty; more throws settle it";
+
 }  // namespace pierre::design
