@@ -35,6 +35,22 @@ int lost_stdout() {
   return pierre::app::kExitInternal;
 }
 
+
+// The first argument that is a long option of some command written with a single dash
+// ("-out", "-seed=3"), or "" when there is none.
+std::string single_dash_long_option(int argc, char** argv, const std::vector<CLI::App*>& apps) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--") break;
+    if (a.size() < 3 || a[0] != '-' || a[1] == '-') continue;
+    const std::string name = a.substr(1, a.find('=') - 1);
+    for (const CLI::App* c : apps)
+      for (const CLI::Option* o : c->get_options())
+        for (const std::string& l : o->get_lnames())
+          if (l == name) return a;
+  }
+  return {};
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,6 +79,15 @@ int main(int argc, char** argv) {
     std::vector<CLI::App*> subs;
     for (auto& c : commands) subs.push_back(c->add_to(app));
 
+    // A long option typed with one dash ("-out x") would be read by CLI11 as short options
+    // with a value ("-o ut"), and the run would go quietly to ./ut: refuse it and name it.
+    std::vector<CLI::App*> apps = subs;
+    apps.push_back(&app);
+    if (const std::string word = single_dash_long_option(argc, argv, apps); !word.empty()) {
+      std::fprintf(stderr, "pierre: found %s, expected -%s: long options take two dashes (pierre --help)\n",
+                   word.c_str(), word.c_str());
+      return kExitInput;
+    }
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version

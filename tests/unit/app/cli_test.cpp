@@ -414,6 +414,16 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_NE(pierre("validate " + kScenario + " foo").err.find(
                 "pierre validate: found foo, expected no more arguments"),
             std::string::npos);
+  // A long option typed with one dash is refused by name: CLI11 would read "-out" as "-o ut"
+  // and put the results in ./ut without a word.
+  const Result one_dash = pierre("run " + kScenario + " -out --threads 1 --quiet");
+  EXPECT_EQ(one_dash.code, 2) << one_dash.err;
+  EXPECT_NE(one_dash.err.find("found -out, expected --out: long options take two dashes"),
+            std::string::npos)
+      << one_dash.err;
+  EXPECT_FALSE(fs::exists("ut"));
+  EXPECT_EQ(pierre("run " + kScenario + " --out " + q(dir_ / "x") + " -seed=3").code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
   // A misspelt command is named, with the commands there are.
   EXPECT_NE(pierre("chek " + kScenario).err.find("chek: not a command; expected run, check or validate"),
             std::string::npos);
