@@ -591,10 +591,12 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
         {top.file(), source_at[i].first, source_at[i].second,
          fmt::format("the ground under source \"{}\" (x = {} m) falls towards the profile's "
                      "first vertex, so its blocks travel against the vertex order, in which {}. "
-                     "List the profile's vertices from the source end",
+                     "List the profile's vertices from the source end, with x mirrored to rise "
+                     "downhill (x' = {} - x, for the sources and observation lines too)",
                      s.name, s.position.x,
                      table_path.empty() ? "observation lines count first crossings"
-                                        : "the section's distances from the toe are measured")});
+                                        : "the section's distances from the toe are measured",
+                     sc.profile.x_min() + sc.profile.x_max())});
   }
 }
 

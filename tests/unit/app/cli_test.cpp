@@ -240,7 +240,9 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
       "Note: " + (dir_ / "s.toml").string() +
       ":13: sources[0]: the ground under source \"crest\" (x = 199 m) falls towards the "
       "profile's first vertex, so its blocks travel against the vertex order, in which "
-      "observation lines count first crossings. List the profile's vertices from the source end\n";
+      "observation lines count first crossings. List the profile's vertices from the source end, "
+      "with x mirrored to rise downhill (x' = 200 - x, for the sources and observation lines "
+      "too)\n";
   const Result v = pierre("validate " + q(dir_ / "s.toml"));
   EXPECT_EQ(v.code, 0) << v.err;
   EXPECT_NE(v.out.find(note), std::string::npos) << v.out;
