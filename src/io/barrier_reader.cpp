@@ -194,7 +194,10 @@ constexpr double kLargestObservedEnergy = 30e3;  // kJ, as a barrier's (above)
 
 design::ObservedSample read_observed(const fs::path& file, std::vector<InputNote>& notes) {
   const std::vector<std::string> columns = {"speed_m_s", "height_m", "energy_kJ"};
-  const CsvTable t = detail::read_csv(file, columns, "speed_m_s, height_m and/or energy_kJ", {},
+  // Speed and height may go without their unit (m/s, m, as the profile's x and z do); an energy
+  // may not: J or kJ is the slip that matters.
+  const CsvTable t = detail::read_csv(file, columns, "speed_m_s, height_m and/or energy_kJ",
+                                      {{"speed", "speed_m_s"}, {"height", "height_m"}},
                                       columns);  // a value not measured for a block: empty
   design::ObservedSample o;
   o.file = file.string();

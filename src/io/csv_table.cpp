@@ -1,6 +1,7 @@
 #include "csv_table.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -60,6 +61,49 @@ std::vector<std::string> split(std::string_view line) {
     i = comma + 1;
   }
   return cells;
+}
+
+// Spreadsheets capitalise headings ("X", "Volume"): a column's name is matched without case.
+bool same_name(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+bool is_number(std::string_view s) {
+  if (!s.empty() && (s.front() == '+' || s.front() == '-')) s.remove_prefix(1);
+  double v = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  return !s.empty() && ec == std::errc{} && ptr == s.data() + s.size();
+}
+
+bool is_digits(std::string_view s) {
+  if (!s.empty() && s.front() == '-') s.remove_prefix(1);
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The input tables' columns that hold names; every other column holds numbers.
+bool text_column(std::string_view name) { return name == "material" || name == "id"; }
+
+// Whether a row too wide for its header fits it once whole numbers side by side are read as
+// one number with a decimal comma ("16,5,0,floor" → 16.5, 0, floor): a number under every
+// column that takes one. Pairs from `from` on are tried, each way (rows are short).
+bool fits_with_decimal_commas(const std::vector<std::string>& cells,
+                              const std::vector<std::string>& header, std::size_t from = 0) {
+  if (cells.size() == header.size()) {
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (!text_column(header[i]) && !cells[i].empty() && !is_number(cells[i])) return false;
+    return true;
+  }
+  for (std::size_t i = from; cells.size() > header.size() && i + 1 < cells.size(); ++i) {
+    if (!is_digits(cells[i]) || !is_digits(cells[i + 1]) || cells[i + 1].front() == '-') continue;
+    std::vector<std::string> merged = cells;
+    merged[i] += "." + merged[i + 1];
+    merged.erase(merged.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    if (fits_with_decimal_commas(merged, header, i + 1)) return true;
+  }
+  return false;
 }
 
 std::string join(const std::vector<std::string>& v) {
@@ -191,7 +235,14 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
           throw InputError(file, line_no, "header", *bad, std::string(kWritableText));
         // The unit in the name, as pierre's own CSVs write it ("x_m", "mass_kg").
         for (const auto& [alias, name] : aliases)
-          if (h == alias) h = name;
+          if (same_name(h, alias)) h = name;
+        for (const std::string& name : allowed)
+          if (same_name(h, name)) h = name;
+        // A file that starts with its data: the first row is taken for the header.
+        if (is_number(h) && std::find(allowed.begin(), allowed.end(), h) == allowed.end())
+          throw InputError(file, line_no, "header",
+                           fmt::format("a row of values (\"{}\") where the header belongs", line),
+                           fmt::format("a header line {} above the data rows", expected_header));
         if (std::find(allowed.begin(), allowed.end(), h) == allowed.end()) {
           const auto sep = other_separator(line);
           if (sep && h.find_first_of(";\t") != std::string::npos)
@@ -254,8 +305,11 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
       throw InputError(file, line_no, "row",
                        fmt::format("{} columns (column {} holds \"{}\")", cells.size(), k + 1,
                                    cells[k]),
-                       fmt::format("{} column{} ({}){}", t.header.size(),
-                                   t.header.size() == 1 ? "" : "s", join(t.header), unnamed));
+                       fmt::format("{} column{} ({}){}{}", t.header.size(),
+                                   t.header.size() == 1 ? "" : "s", join(t.header), unnamed,
+                                   fits_with_decimal_commas(cells, t.header)
+                                       ? "; a decimal comma? numbers take a point (16.5, not 16,5)"
+                                       : ""));
     }
     for (std::size_t c = 0; c < cells.size(); ++c)
       if (auto bad = unwritable_text(cells[c]))

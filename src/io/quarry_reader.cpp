@@ -230,7 +230,8 @@ void read_summary(const TomlTable& obs, std::string_view key, design::ObservedDi
 
 void read_observed_csv(const fs::path& file, design::QuarryObserved& o) {
   const std::vector<std::string> columns = {"first_impact", "runout"};
-  const CsvTable t = detail::read_csv(file, columns, "first_impact and/or runout (m)", {},
+  const CsvTable t = detail::read_csv(file, columns, "first_impact and/or runout (m)",
+                                      {{"first_impact_m", "first_impact"}, {"runout_m", "runout"}},
                                       columns);  // a distance not measured for a block: empty
   const auto c_id = t.column("first_impact"), c_rd = t.column("runout");
   if (!c_id && !c_rd)

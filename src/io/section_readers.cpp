@@ -162,7 +162,14 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
                        fmt::format("\"{}\"", v.material),
                        v.material.empty() && !last
                            ? fmt::format("a material for the segment that starts here ({})", names)
-                           : fmt::format("a material defined in [materials] ({})", names));
+                           : fmt::format("a material defined in [materials] ({}){}", names,
+                                         // "60,-0,5": z = -0,5 with a decimal comma.
+                                         has_file && !v.material.empty() &&
+                                                 std::all_of(v.material.begin(), v.material.end(),
+                                                             [](char c) { return c >= '0' && c <= '9'; })
+                                             ? "; a decimal comma in z? numbers take a point "
+                                               "(-0.5, not -0,5)"
+                                             : ""));
     if (!last) mat_index.push_back(static_cast<int>(it - mats.begin()));
   }
   std::vector<geometry::ProfileIssue> issues;

@@ -254,9 +254,21 @@ toml::table parse_toml(const std::filesystem::path& file, const std::string& tex
     std::string expected = "valid TOML (https://toml.io)";
     // The one syntax error a reader of our docs is led into: rows ([[a.b.rows]]) or a sub-table
     // added to a table written inline (`b = { … }`), which TOML closes where it ends.
-    if (e.description().find("existing inline table") != std::string_view::npos)
+    const std::string_view what = e.description();
+    if (what.find("existing inline table") != std::string_view::npos)
       expected += "; an inline table `name = { … }` cannot take rows or sub-tables later: write it "
                   "as a table, `[name]` with its keys on the lines below";
+    if (const std::string ext = file.extension().string(); ext == ".csv" || ext == ".CSV") {
+      // A profile or block table given where the scenario belongs.
+      expected += "; this is a CSV file: give the scenario (.toml) that names it";
+    } else if (what.find("expected a comment or whitespace, saw ','") != std::string_view::npos) {
+      // A value cut short by a comma: most often a decimal comma (a European keyboard).
+      expected += "; a decimal comma? TOML numbers take a point (0.5, not 0,5); several values "
+                  "are an array, [1.0, 2.0]";
+    } else if (what.find("unescaped control characters") != std::string_view::npos) {
+      // toml++ reads past a string's missing closing quote to the end of the line.
+      expected += "; a string not closed on its line? every \"…\" needs its closing quote";
+    }
     throw InputError(file, static_cast<long>(e.source().begin.line), "TOML syntax",
                      syntax_problem(e.description(), static_cast<long>(e.source().begin.column)),
                      expected);

@@ -93,6 +93,18 @@ TEST(BarrierReader, ReadsEveryField) {
   EXPECT_FALSE(l.barrier_observed[1]);
 }
 
+// The observed columns as a spreadsheet heads them: speed and height without their unit, any
+// case. The values are the same as under the canonical header.
+TEST(BarrierReader, ObservedColumnsMayGoWithoutUnitOrCase) {
+  TempDir dir;
+  dir.write("obs.csv", "Speed,HEIGHT,Energy_KJ\n10.5,1.2,300\n,2.0,\n12.0,,410.5\n");
+  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(kFull)), kRules);
+  ASSERT_TRUE(l.barrier_observed[0]);
+  EXPECT_EQ(l.barrier_observed[0]->speed, (std::vector<double>{10.5, 12.0}));
+  EXPECT_EQ(l.barrier_observed[0]->height, (std::vector<double>{1.2, 2.0}));
+  EXPECT_EQ(l.barrier_observed[0]->energy, (std::vector<double>{300e3, 410.5e3}));  // J
+}
+
 TEST(BarrierReader, DefaultRuleSetIsPeilaRonco) {
   TempDir dir;
   const auto l = io::load_scenario(dir.write("s.toml", with_barrier(R"([[barriers]]
@@ -323,8 +335,11 @@ INSTANTIATE_TEST_SUITE_P(
              "barriers[0].acceptable_energy_exceedance", "0.01", "candidate"},
         Case{"observed_missing", kThesis + "observed = \"none.csv\"\n", {}, "", 32, "barriers[0].observed",
              "\"none.csv\" (no such file", "readable CSV file of observed crossings"},
-        Case{"observed_column", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "speed,height\n1,2\n"}}, "o.csv", 1,
-             "header", "speed", "speed_m_s"},
+        Case{"observed_column", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "velocity,height\n1,2\n"}}, "o.csv", 1,
+             "header", "velocity", "speed_m_s"},
+        // an energy keeps its unit in its name: J or kJ is the slip that matters
+        Case{"observed_energy_unit", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "speed,energy\n1,2\n"}}, "o.csv", 1,
+             "header", "\"energy\"", "energy_kJ"},
         Case{"observed_value", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "speed_m_s,height_m\n10,1\n-3,2\n"}}, "o.csv", 3,
              "speed_m_s", "-3", ">= 0"},
         Case{"observed_text", kThesis + "observed = \"o.csv\"\n", {{"o.csv", "energy_kJ\n10\nabc\n"}}, "o.csv", 3,

@@ -74,6 +74,35 @@ std::string csv_error(TempDir& dir, const std::string& csv, const std::string& f
   return "no InputError";
 }
 
+// A decimal comma in a comma-separated file splits a number in two: one column too many, or a
+// material that is a number. Both messages ask whether it is one; a real extra column does not.
+TEST(ScenarioCsv, ADecimalCommaIsAskedAbout) {
+  TempDir dir;
+  const std::string p = (dir.path() / "p.csv").string();
+  EXPECT_EQ(csv_error(dir, "x,z,material\n0,10,rock\n16,5,0,rock\n20,0,\n"),
+            p + ":3: row: found 4 columns (column 4 holds \"rock\"), expected 3 columns "
+                "(x,z,material); a decimal comma? numbers take a point (16.5, not 16,5)");
+  EXPECT_EQ(csv_error(dir, "x,z,material\n0,10,rock\n10,0,rock,rock\n20,0,\n"),
+            p + ":3: row: found 4 columns (column 4 holds \"rock\"), expected 3 columns "
+                "(x,z,material)");
+  EXPECT_EQ(csv_error(dir, "x,z,material\n0,10,rock\n20,-0,5\n"),
+            p + ":3: material: found \"5\", expected a material defined in [materials] (rock); "
+                "a decimal comma in z? numbers take a point (-0.5, not -0,5)");
+}
+
+// A file that starts with its numbers has no header: said so, not "found column \"0\"".
+// Headings are matched without case, as spreadsheets capitalise them.
+TEST(ScenarioCsv, AMissingHeaderIsSaidAndCaseIsIgnored) {
+  TempDir dir;
+  const std::string p = (dir.path() / "p.csv").string();
+  EXPECT_EQ(csv_error(dir, "0,10,rock\n10,0,rock\n20,0,\n"),
+            p + ":1: header: found a row of values (\"0,10,rock\") where the header belongs, "
+                "expected a header line x,z,material above the data rows");
+  EXPECT_EQ(csv_error(dir, "X,Z_M,Material\n0,10,rock\n10,0,rock\n20,1,\n"), "no InputError");
+  const auto l = load_scenario(dir.path() / "s.toml", kRules);  // the scenario csv_error wrote
+  EXPECT_DOUBLE_EQ(l.scenario.profile.vertices()[2].z, 1.0);
+}
+
 TEST(ScenarioCsv, ASemicolonRowSaysItsSeparator) {
   TempDir dir;
   const std::string p = (dir.path() / "p.csv").string();
@@ -179,6 +208,38 @@ TEST(ScenarioSyntax, RowsAfterAnInlineTableSayToWriteATable) {
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.expected(), "valid TOML (https://toml.io)");
+  }
+}
+
+// The two slips toml++ describes in its own terms get a hint in ours: a decimal comma cuts a
+// number short ("saw ','"), and a string without its closing quote runs into the line's end.
+TEST(ScenarioSyntax, ADecimalCommaAndAnUnclosedStringAreHinted) {
+  TempDir dir;
+  struct Slip {
+    std::string line, hint;
+  };
+  const Slip cases[] = {
+      {"throws = 2,5", "a decimal comma? TOML numbers take a point (0.5, not 0,5)"},
+      {"throws = \"2", "a string not closed on its line? every \"…\" needs its closing quote"},
+  };
+  for (const Slip& c : cases) {
+    try {
+      (void)load_scenario(dir.write("s.toml", pierre::test::base_with(6, c.line)), kRules);
+      FAIL() << "no InputError for " << c.line;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 6);
+      EXPECT_EQ(e.field(), "TOML syntax");
+      EXPECT_EQ(e.expected().rfind("valid TOML (https://toml.io); ", 0), 0u) << e.expected();
+      EXPECT_NE(e.expected().find(c.hint), std::string::npos) << e.expected();
+    }
+  }
+  // A profile table given where the scenario belongs is named for what it is.
+  try {
+    (void)load_scenario(dir.write("p.csv", "x,z,material\n0,1,rock\n"), kRules);
+    FAIL() << "no InputError for a CSV";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.expected(), "valid TOML (https://toml.io); this is a CSV file: give the scenario "
+                            "(.toml) that names it");
   }
 }
 
