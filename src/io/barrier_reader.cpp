@@ -31,10 +31,8 @@ using model::ModelDefaults;
 void note_density(const TomlTable& d, double density, std::vector<InputNote>& notes) {
   if (density >= detail::kRockDensityMin && density <= detail::kRockDensityMax) return;
   notes.push_back({d.file(), line_of(*d.find("density")), d.field("density"),
-                   fmt::format("the design block's density {:g} kg/m³ is outside the densities of "
-                               "rock ({:g} to {:g} kg/m³): a density is in kg/m³, and 2.65 (t/m³ "
-                               "or g/cm³) makes its energy 1000 times too small",
-                               density, detail::kRockDensityMin, detail::kRockDensityMax)});
+                   fmt::format("the design block's density {:g} kg/m³ is {}", density,
+                               detail::density_slip(density, "an energy 1000 times too small"))});
 }
 
 design::DesignBlock read_design_block(const TomlTable& t, std::vector<InputNote>& notes) {

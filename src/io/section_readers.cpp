@@ -3,6 +3,7 @@
 #include "section_readers.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -365,14 +366,12 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
 void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<BlockGroup>& groups,
                           const std::vector<GroupSource>& where, std::vector<InputNote>& notes) {
   auto rock = [](double d) { return d >= kRockDensityMin && d <= kRockDensityMax; };
-  const std::string why = fmt::format(
-      "outside the densities of rock ({:g} to {:g} kg/m³). A density is in kg/m³: 2.65 (t/m³ "
-      "or g/cm³) gives blocks 1000 times too light, and every energy 1000 times too small",
-      kRockDensityMin, kRockDensityMax);
+  constexpr std::string_view effect = "blocks 1000 times too light, and every energy 1000 times too small";
   const std::size_t before = notes.size();
   if (b.has("density") && !rock(shared))
     notes.push_back({b.file(), line_of(*b.find("density")), b.field("density"),
-                     fmt::format("the block density {:g} kg/m³ is {}", shared, why)});
+                     fmt::format("the block density {:g} kg/m³ is {}", shared,
+                                 density_slip(shared, effect))});
   std::size_t odd = 0, first = 0;
   for (std::size_t i = 0; i < groups.size(); ++i)
     if (groups[i].density != shared && !rock(groups[i].density) && odd++ == 0) first = i;
@@ -381,7 +380,7 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
                      fmt::format("block \"{}\" has a density of {:g} kg/m³{}, {}",
                                  groups[first].id, groups[first].density,
                                  odd > 1 ? fmt::format(" (and {} more rows like it)", odd - 1) : "",
-                                 why)});
+                                 density_slip(groups[first].density, effect))});
   if (notes.size() > before) return;  // light blocks of a light density: said already
   std::size_t heaviest = 0;
   for (std::size_t i = 1; i < groups.size(); ++i)
@@ -393,16 +392,48 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
                      "volume in m³; a mass in tonnes or a volume in litres gives blocks 1000 "
                      "times too light, and every energy 1000 times too small",
                      groups[heaviest].id, groups[heaviest].mass)});
+  // One row given by its mass in tonnes among rows given by volume: the heaviest is a real
+  // block, so the test above is silent, but this row weighs a thousandth of what was meant.
+  auto by_mass = [&](std::size_t i) { return where[i].size_field.ends_with("mass"); };
+  double lightest_by_volume = std::numeric_limits<double>::infinity(), heaviest_by_volume = 0;
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    if (!by_mass(i)) {
+      lightest_by_volume = std::min(lightest_by_volume, groups[i].mass);
+      heaviest_by_volume = std::max(heaviest_by_volume, groups[i].mass);
+    }
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    const double m = groups[i].mass;
+    if (!by_mass(i) || !(m < lightest_by_volume / 30) || m * 1000 < lightest_by_volume / 3 ||
+        m * 1000 > heaviest_by_volume * 3)
+      continue;
+    notes.push_back(
+        {where[i].file, where[i].size_line, where[i].size_field,
+         fmt::format("block \"{}\" is given by its mass, {:g} kg, among rows given by volume that "
+                     "weigh {:.0f} to {:.0f} kg: a mass is in kg; if it is in tonnes, it is {:.0f} kg",
+                     groups[i].id, m, lightest_by_volume, heaviest_by_volume, m * 1000)});
+    break;  // the first such row: the others are likely the same slip
+  }
   if (!groups.empty() && groups[heaviest].mass > kHeaviestPlausibleBlock)
     notes.push_back(
         {where[heaviest].file, where[heaviest].size_line, where[heaviest].size_field,
-         fmt::format("the heaviest block, \"{}\", weighs {:.0f} t ({:.0f} m³), beyond any "
-                     "rockfall barrier: a volume is in m³ and a mass in kg; a volume in litres "
-                     "gives blocks 1000 times too heavy",
+         fmt::format("the heaviest block, \"{}\", weighs {:.0f} t ({:.0f} m³), more than "
+                     "rockfall blocks weigh (up to some hundreds of tonnes): a volume is in m³ "
+                     "and a mass in kg; a volume in litres gives blocks 1000 times too heavy",
                      groups[heaviest].id, groups[heaviest].mass / 1000, groups[heaviest].volume)});
 }
 
 }  // namespace
+
+std::string density_slip(double density, std::string_view effect) {
+  const double in_kg = density * 1000;
+  return fmt::format("outside the densities of rock ({:g} to {:g} kg/m³). A density is in kg/m³{}",
+                     kRockDensityMin, kRockDensityMax,
+                     in_kg >= kRockDensityMin && in_kg <= kRockDensityMax
+                         ? fmt::format(": if {:g} is in t/m³ (or g/cm³), it is {:g} kg/m³; as "
+                                       "typed, it gives {}",
+                                       density, in_kg, effect)
+                         : std::string());
+}
 
 std::string block_mass_limit(std::string_view what, double volume, double density, double mass,
                              bool by_volume) {

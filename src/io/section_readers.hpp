@@ -55,6 +55,10 @@ std::string block_mass_limit(std::string_view what, double volume, double densit
 // face (~4000). Outside, a density in t/m³ or g/cm³ (2.65) is far likelier than a rock.
 inline constexpr double kRockDensityMin = 1500.0;
 inline constexpr double kRockDensityMax = 4000.0;
+// Why a density outside rock's is noted, for the value found: in t/m³ (2.65), what it would be
+// in kg/m³ and what it does as typed (`effect`: "blocks 1000 times too light, and every energy
+// 1000 times too small").
+std::string density_slip(double density, std::string_view effect);
 // When even the heaviest block is lighter than this (kg; a stone of ~4 litres), the masses were
 // most likely typed in tonnes or the volumes in litres. Rockfall design blocks weigh from
 // hundreds of kilograms up (the thesis's lightest, at Preg, 140 kg).

@@ -172,9 +172,14 @@ TEST(InputNotes, ADensityInTonnesPerCubicMetreIsNoted) {
   ASSERT_EQ(notes.size(), 1u);  // and not the light blocks too: the density says why
   EXPECT_EQ(notes[0].message(),
             s.string() + ":17: blocks.density: the block density 2.65 kg/m³ is outside the "
-                         "densities of rock (1500 to 4000 kg/m³). A density is in kg/m³: 2.65 "
-                         "(t/m³ or g/cm³) gives blocks 1000 times too light, and every energy "
-                         "1000 times too small");
+                         "densities of rock (1500 to 4000 kg/m³). A density is in kg/m³: if "
+                         "2.65 is in t/m³ (or g/cm³), it is 2650 kg/m³; as typed, it gives blocks "
+                         "1000 times too light, and every energy 1000 times too small");
+  // A density that is not rock in t/m³ either (a digit too many) is not read as one.
+  const auto typo = notes_of(dir, base_with(16, "[blocks]\ndensity = 26500.0"));
+  ASSERT_EQ(typo.size(), 1u);
+  EXPECT_EQ(typo[0].text, "the block density 26500 kg/m³ is outside the densities of rock (1500 "
+                          "to 4000 kg/m³). A density is in kg/m³");
   // Rows of their own: the first one said, with how many more.
   const auto rows = notes_of(
       dir, base_with(17, "[[blocks.table]]\nid = \"a\"\nvolume = 1.0\ndensity = 2.7\n"
@@ -204,7 +209,7 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   // 1500 litres typed as m³, at the default 2650 kg/m³: 3 975 000 kg.
   const auto litres = notes_of(dir, base_with(18, "volume = 1500.0"));
   ASSERT_EQ(litres.size(), 1u);
-  EXPECT_NE(litres[0].text.find("weighs 3975 t (1500 m³), beyond any rockfall barrier"),
+  EXPECT_NE(litres[0].text.find("weighs 3975 t (1500 m³), more than rockfall blocks weigh"),
             std::string::npos)
       << litres[0].text;
   // The heaviest block decides: light stones beside a real block are a valid mix.
@@ -212,6 +217,21 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   EXPECT_EQ(notes_of(dir, base_with(18, "mass = 9.9")).size(), 1u);
   EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 2.5\n[[blocks.table]]\nmass = 800.0")).empty());
   EXPECT_TRUE(notes_of(dir, base_with(18, "mass = 1e6")).empty());
+  // One row in tonnes among rows by volume: the heaviest block is real, the row is not.
+  const auto mixed = notes_of(
+      dir, base_with(18, "volume = 0.5\n[[blocks.table]]\nid = \"T\"\nmass = 2.5\n"
+                         "[[blocks.table]]\nvolume = 2.0"));
+  ASSERT_EQ(mixed.size(), 1u);
+  EXPECT_EQ(mixed[0].line, 21);
+  EXPECT_EQ(mixed[0].field, "blocks.table[1].mass");
+  EXPECT_EQ(mixed[0].text, "block \"T\" is given by its mass, 2.5 kg, among rows given by volume "
+                           "that weigh 1325 to 5300 kg: a mass is in kg; if it is in tonnes, it "
+                           "is 2500 kg");
+  // A light stone among them that is no block in tonnes either (0.01 kg: 10 kg, not a block of
+  // the table's size) is a valid mix.
+  EXPECT_TRUE(notes_of(dir, base_with(18, "volume = 0.5\n[[blocks.table]]\nmass = 0.01\n"
+                                          "[[blocks.table]]\nvolume = 2.0"))
+                  .empty());
 }
 
 // The roughness is a tangent scale, the one input that is not in degrees: an angle (35) or a
