@@ -144,6 +144,17 @@ void note_roughness(const TomlTable& t, double scale, std::vector<InputNote>& no
                                scale, typical_deg)});
 }
 
+// A friction angle is in degrees; one at most π/2 (0.52) reads like radians and leaves a block
+// sliding almost without friction. 0 is kept silent: a frictionless test is meant as such.
+void note_friction_angle(const TomlTable& t, double deg, std::vector<InputNote>& notes) {
+  if (!(deg > 0 && deg <= std::numbers::pi / 2)) return;
+  notes.push_back({t.file(), line_of(*t.find("friction_angle")), t.field("friction_angle"),
+                   fmt::format("friction angle {:g}° is in degrees (the calibrated sets use 30°): "
+                               "if it is in radians, it is {:.1f}°; as typed, blocks slide almost "
+                               "without friction",
+                               deg, deg * 180.0 / std::numbers::pi)});
+}
+
 std::vector<model::Material> read_materials(const TomlTable& top, Presets& presets,
                                             std::vector<InputNote>& notes) {
   const auto mats = top.subtable("materials", {});
@@ -177,6 +188,8 @@ std::vector<model::Material> read_materials(const TomlTable& top, Presets& prese
     const auto set = read_material_fields(t, m);
     if (std::find(set.begin(), set.end(), "roughness") != set.end())
       note_roughness(t, m.roughness, notes);
+    if (std::find(set.begin(), set.end(), "friction_angle") != set.end())
+      note_friction_angle(t, m.friction_angle_deg, notes);
     if (from_preset) {
       if (!set.empty()) {
         std::string list;

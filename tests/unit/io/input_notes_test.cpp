@@ -255,6 +255,21 @@ TEST(InputNotes, ARoughnessLikeAnAngleIsNoted) {
   EXPECT_EQ(over[0].line, 14);
 }
 
+// A friction angle in radians (0.52 for 30°) passes its range check and lets blocks slide
+// almost freely; 0 is a frictionless test, meant as such.
+TEST(InputNotes, AFrictionAngleLikeRadiansIsNoted) {
+  TempDir dir;
+  const fs::path s = dir.path() / "s.toml";
+  const auto notes = notes_of(dir, base_with(14, "roughness = 0.5\nfriction_angle = 0.52"));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].message(),
+            s.string() + ":15: materials.rock.friction_angle: friction angle 0.52° is in degrees "
+                         "(the calibrated sets use 30°): if it is in radians, it is 29.8°; as "
+                         "typed, blocks slide almost without friction");
+  EXPECT_TRUE(notes_of(dir, base_with(14, "roughness = 0.5\nfriction_angle = 0.0")).empty());
+  EXPECT_TRUE(notes_of(dir, base_with(14, "roughness = 0.5\nfriction_angle = 1.6")).empty());
+}
+
 // Lines count crossings in the vertex order, away from the sources: one upslope of every source
 // is crossed by no block (a design there has nothing to stand on), said at its x.
 TEST(InputNotes, ALineBehindEverySourceIsNoted) {
