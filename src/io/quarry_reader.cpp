@@ -179,6 +179,32 @@ void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
                      100 * std::abs(*in.height - g.height_derived) / g.height_derived)});
 }
 
+// A catch bench or a work area past the end of the section's floor: a length typed in cm (300
+// for 3 m) passes every range check, and the checks then compare it with ground the section
+// does not model. Noted at its value, with what it would be in cm.
+void note_beyond_floor(const TomlTable& q, const design::QuarrySpec& spec,
+                       const design::QuarryGeometry& g, std::vector<InputNote>& notes) {
+  auto text = [&](double v) {
+    return fmt::format("the section's floor ends {:.2f} m from the toe, so the section cannot "
+                       "say what reaches {:g} m; extend the floor, or check the unit (if it is "
+                       "in cm, it is {:g} m)",
+                       g.floor_length, v, v / 100);
+  };
+  if (spec.bench_width && *spec.bench_width > g.floor_length)
+    notes.push_back({q.file(), line_of(*q.find("bench_width")), q.field("bench_width"),
+                     fmt::format("bench width {:g} m: {}", *spec.bench_width,
+                                 text(*spec.bench_width))});
+  const toml::array* a = q.array_of_tables("work_areas");
+  for (std::size_t i = 0; a && i < spec.work_areas.size(); ++i) {
+    const design::WorkArea& w = spec.work_areas[i];
+    if (!(w.distance > g.floor_length)) continue;
+    const TomlTable t = q.element("work_areas", *a, i, {"name", "distance"});
+    notes.push_back({q.file(), line_of(*t.find("distance")), t.field("distance"),
+                     fmt::format("work area \"{}\" at {:g} m from the toe: {}", w.name, w.distance,
+                                 text(w.distance))});
+  }
+}
+
 // ---- numbers ----
 
 double coordinate(const TomlTable& t, const toml::node& c, const std::string& field,
@@ -421,6 +447,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     s.geometry = *g;
     sc.settings.floor_segment = s.geometry.floor_segment;
     note_given_geometry(q, sc.profile, spec.geometry, s.geometry, s.notes);
+    note_beyond_floor(q, spec, s.geometry, s.notes);
     out.push_back(std::move(s));
   }
   // The checks across sections report at the later section's table.

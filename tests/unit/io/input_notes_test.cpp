@@ -328,4 +328,29 @@ TEST(InputNotes, AToeGivenOnTheFaceAndAFarHeightAreNoted) {
             "distance divided by H uses the given one");
 }
 
+// A catch bench or a work area past the end of the floor (70 m from the pit's toe): a length in
+// cm passes every range check. Noted at its value; one within the floor is not.
+TEST(InputNotes, ABenchOrAWorkAreaPastTheFloorIsNoted) {
+  TempDir dir;
+  const auto l = load_scenario(
+      dir.write("s.toml", pit("bench_width = 300.0\nwork_areas = [{ name = \"road\", distance = "
+                              "69.0 }, { name = \"crusher\", distance = 700.0 }]",
+                              20.0)),
+      kRules);
+  ASSERT_EQ(l.notes.size(), 2u);
+  EXPECT_EQ(l.notes[0].line, 13);
+  EXPECT_EQ(l.notes[0].field, "quarries[0].bench_width");
+  EXPECT_EQ(l.notes[0].text,
+            "bench width 300 m: the section's floor ends 70.00 m from the toe, so the section "
+            "cannot say what reaches 300 m; extend the floor, or check the unit (if it is in cm, "
+            "it is 3 m)");
+  EXPECT_EQ(l.notes[1].field, "quarries[0].work_areas[1].distance");
+  EXPECT_NE(l.notes[1].text.find("work area \"crusher\" at 700 m from the toe: the section's "
+                                 "floor ends 70.00 m"),
+            std::string::npos)
+      << l.notes[1].text;
+  EXPECT_TRUE(load_scenario(dir.write("s.toml", pit("bench_width = 70.0", 20.0)), kRules)
+                  .notes.empty());
+}
+
 }  // namespace
