@@ -37,6 +37,7 @@ void RunSamples::add(const sim::TrajectorySummary& t) {
     ++steep_energy_stops_;
     steepest_tan_ = std::max(steepest_tan_, double{t.steep_stop_tan});
   }
+  if (t.stop_reason == sim::StopReason::energy && t.impacts == 1) ++first_impact_stops_;
 }
 
 void RunSamples::add(const sim::Crossing& c) {
@@ -106,6 +107,7 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();
   s.steepest_energy_stop_deg = std::atan(samples.steepest_energy_stop_tan()) * 180.0 / std::numbers::pi;
+  s.energy_stops_at_first_impact = samples.first_impact_stops();
   return s;
 }
 
@@ -156,6 +158,21 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
                     "c_stop·R whatever the slope. Check that " + (one ? "it" : "they") +
                     " can rest there (on a talus near its angle of repose, likely; on a rock face, "
                     "not: a smaller stop_head_factor lets blocks go on).");
+  }
+  if (const std::uint64_t k = s.energy_stops_at_first_impact;
+      k > 0 && static_cast<double>(k) >= kFirstImpactStopShare * static_cast<double>(s.trajectories)) {
+    // A block dropped from a few decimetres onto steep ground strikes it too slowly for the
+    // rebound to keep it going: the energy criterion stops it where it landed, and a line
+    // downslope counts it as not reached. Often a source placed a little above the ground.
+    char share[32];
+    std::snprintf(share, sizeof share, "%.1f", 100.0 * static_cast<double>(k) /
+                                                   static_cast<double>(s.trajectories));
+    notes.push_back(std::to_string(k) + " of " + std::to_string(s.trajectories) +
+                    " blocks (" + share + " %) came to rest at their first impact, stopped by the "
+                    "energy criterion (Eq 3.13): they struck the ground too slowly to go on. A "
+                    "source a little above steep ground drops its blocks so; if they should start "
+                    "by sliding or rolling, put the source on the ground (z at or below it) or "
+                    "give it a starting velocity (vx, vz).");
   }
   return notes;
 }

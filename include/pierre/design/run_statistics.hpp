@@ -51,6 +51,8 @@ class RunSamples {
   // steepest such ground's tan β.
   std::uint64_t steep_energy_stops() const { return steep_energy_stops_; }
   double steepest_energy_stop_tan() const { return steepest_tan_; }
+  // Energy stops at the trajectory's first impact.
+  std::uint64_t first_impact_stops() const { return first_impact_stops_; }
   std::uint64_t trajectories() const { return runout_.size(); }
 
  private:
@@ -63,6 +65,7 @@ class RunSamples {
   std::array<std::uint64_t, kStopReasonCount> stops_{};
   std::uint64_t steep_energy_stops_ = 0;
   double steepest_tan_ = 0;
+  std::uint64_t first_impact_stops_ = 0;
 };
 
 // count, mean, P50, P95 and max of one quantity; NaN statistics when count is 0.
@@ -102,6 +105,9 @@ struct RunStatistics {
   // stops a block whatever the slope).
   std::uint64_t energy_stops_on_steep_ground = 0;
   double steepest_energy_stop_deg = 0;  // the steepest ground of those (°)
+  // Energy stops at the first impact: blocks that never got going (a source a little above
+  // steep ground drops them with too little energy to go on).
+  std::uint64_t energy_stops_at_first_impact = 0;
 };
 
 RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
@@ -113,7 +119,11 @@ QuantityStatistics quantity_statistics(std::span<const double> values);
 // and the report print the same words): blocks cut off by a limit, whose stop points are not
 // where they came to rest, and blocks that left the profile, whose runouts make the runout
 // percentiles lower bounds; blocks the energy criterion stopped on ground steeper than its
-// friction angle. Empty when every block came to rest where it could stay.
+// friction angle; a share of kFirstImpactStopShare or more stopped at their first impact.
+// Empty when every block came to rest where it could stay.
 std::vector<std::string> stop_reason_notes(const RunStatistics& s);
+// From this share of the trajectories on, stops at the first impact are noted: a few are a
+// block that struck flat ground gently; a twentieth is a source that drops its blocks dead.
+inline constexpr double kFirstImpactStopShare = 0.05;
 
 }  // namespace pierre::design

@@ -171,4 +171,33 @@ TEST(RunStatistics, EnergyStopsOnSteepGroundAreCountedAndNoted) {
   EXPECT_TRUE(design::stop_reason_notes(none).empty());
 }
 
+// Energy stops at the first impact (one impact, stopped by energy) are counted, and noted from
+// a twentieth of the trajectories on: 2 of 40 is, 1 of 40 is not. A stop after two impacts, or
+// a friction stop after one, is not one.
+TEST(RunStatistics, StopsAtTheFirstImpactAreCountedAndNoted) {
+  auto run = [](int dead) {
+    design::RunSamples s(0, 1);
+    for (int i = 0; i < 40; ++i) {
+      sim::TrajectorySummary t;
+      t.stop_reason = i == 30 ? sim::StopReason::friction : sim::StopReason::energy;
+      t.impacts = i < dead || i == 30 ? 1 : 2;
+      s.add(t);
+    }
+    return design::run_statistics({}, s);
+  };
+  const auto two = run(2);
+  EXPECT_EQ(two.energy_stops_at_first_impact, 2u);
+  const auto notes = design::stop_reason_notes(two);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].rfind("2 of 40 blocks (5.0 %) came to rest at their first impact, stopped "
+                           "by the energy criterion (Eq 3.13)",
+                           0),
+            0u)
+      << notes[0];
+  EXPECT_NE(notes[0].find("put the source on the ground"), std::string::npos);
+  const auto one = run(1);
+  EXPECT_EQ(one.energy_stops_at_first_impact, 1u);
+  EXPECT_TRUE(design::stop_reason_notes(one).empty());
+}
+
 }  // namespace
