@@ -97,14 +97,15 @@ struct UnitSlip {
 // A number as typed: 15 significant digits, no exponent below 10^15 (3000000, not 3e+06; 1.1).
 std::string typed(double v) { return design::number_text(v, 15); }
 
-void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
+bool note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
                     const UnitSlip& u, std::vector<InputNote>& notes) {
-  if (!(v > u.limit)) return;
+  if (!(v > u.limit)) return false;
   notes.push_back({t.file(), line_of(*t.find(key)), t.field(key),
                    fmt::format("{} {} {} is more than {} {}{}: it is read in {}; if it was "
                                "meant in {}, it is {} {}",
                                what, typed(v), u.unit, typed(u.limit), u.unit, u.beyond, u.unit,
                                u.small_unit, typed(v / 1000), u.unit)});
+  return true;
 }
 
 // Rockfall barriers are some metres high and stretch some metres; their energies are up to
@@ -115,7 +116,9 @@ constexpr double kLongestElongation = 30.0;         // m
 constexpr double kLargestBarrierEnergy = 30e3;      // kJ
 constexpr double kLargestFreeBoardDiameter = 10.0;  // m: a block of some 1 400 t at 2650 kg/m³
 
-void note_candidate(const TomlTable& c, const design::CandidateBarrier& k,
+// The candidate's MEL, SEL and height so noted go into k.unit_doubts too: a check that
+// passes on one of them must not read as a plain PASS (barrier_checks.cpp).
+void note_candidate(const TomlTable& c, design::CandidateBarrier& k,
                     const design::EnergyClassTable& classes, std::vector<InputNote>& notes) {
   const design::EnergyClass* top = nullptr;
   for (const auto& e : classes.classes)
@@ -129,11 +132,14 @@ void note_candidate(const TomlTable& c, const design::CandidateBarrier& k,
   };
   const UnitSlip length{kTallestBarrier, "m", "mm", ""};
   const UnitSlip stretch{kLongestElongation, "m", "mm", ""};
-  if (k.mel_kJ)
-    note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ, energy("MEL", top ? top->mel_kJ : 0), notes);
-  if (k.sel_kJ)
-    note_unit_slip(c, "sel", "the candidate's SEL", *k.sel_kJ, energy("SEL", top ? top->sel_kJ : 0), notes);
-  if (k.height) note_unit_slip(c, "height", "the candidate's height", *k.height, length, notes);
+  if (k.mel_kJ && note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ,
+                                 energy("MEL", top ? top->mel_kJ : 0), notes))
+    k.unit_doubts.push_back("mel");
+  if (k.sel_kJ && note_unit_slip(c, "sel", "the candidate's SEL", *k.sel_kJ,
+                                 energy("SEL", top ? top->sel_kJ : 0), notes))
+    k.unit_doubts.push_back("sel");
+  if (k.height && note_unit_slip(c, "height", "the candidate's height", *k.height, length, notes))
+    k.unit_doubts.push_back("height");
   if (k.elongation_mel)
     note_unit_slip(c, "elongation_mel", "the elongation in the MEL test", *k.elongation_mel,
                    stretch, notes);

@@ -91,6 +91,28 @@ TEST(BarrierCheckLines, AllElevenLinesInOrderWithSubjectAndRule) {
   EXPECT_FALSE(design::any_failure(lines));
 }
 
+// A capacity the reader doubted (typed in J or mm, by its input note) turns the lines that
+// pass on it into WARNs, with the reason said; a line that fails stays a FAIL, and the lines
+// on a capacity not doubted are untouched.
+TEST(BarrierCheckLines, APassOnADoubtedUnitIsAWarning) {
+  auto d = base();
+  d.spec.candidate->unit_doubts = {"mel", "height"};
+  const auto lines = design::barrier_check_lines(d, rules());
+  for (const char* id : {"energy.mel", "height.interception"}) {
+    EXPECT_EQ(line(lines, id).status, CheckStatus::warn) << id;
+    EXPECT_NE(line(lines, id).reason.find("was noted as likely typed in the smaller unit (see "
+                                          "the input notes)"),
+              std::string::npos)
+        << line(lines, id).reason;
+  }
+  EXPECT_EQ(line(lines, "energy.mel").reason.rfind("candidate MEL 2000", 0), 0u)
+      << line(lines, "energy.mel").reason;  // the comparison is kept
+  EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::pass);
+  EXPECT_FALSE(design::any_failure(lines));
+  d.candidate_mel_kJ = 1499;
+  EXPECT_EQ(status(d, rules(), "energy.mel"), CheckStatus::fail);
+}
+
 TEST(BarrierCheckLines, EnergyMelPassFailAndNotApplicable) {
   auto d = base();
   EXPECT_EQ(status(d, rules(), "energy.mel"), CheckStatus::pass);

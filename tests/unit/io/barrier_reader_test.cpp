@@ -179,6 +179,14 @@ TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
   EXPECT_NE(sel[0].text.find("(the largest class of etag027-classes: SEL > 1500 kJ)"), std::string::npos)
       << sel[0].text;
   EXPECT_EQ(notes("[barriers.candidate]\nmel = 45000.0\nsel = 35000.0").size(), 2u);
+  // The capacities so noted are named on the candidate, for its check lines; the elongations
+  // (a larger one only makes the check stricter) are not.
+  const auto l = io::load_scenario(
+      dir.write("s.toml", with_barrier("[[barriers]]\nname = \"B\"\nline = \"L\"\nrules = "
+                                       "\"thesis-2015\"\n[barriers.candidate]\nmel = 3.2e6\n"
+                                       "sel = 900.0\nheight = 5000.0\nelongation_mel = 6000.0\n")),
+      kRules);
+  EXPECT_EQ(l.barriers.at(0).candidate->unit_doubts, (std::vector<std::string>{"mel", "height"}));
 }
 
 TEST(BarrierReader, ObservedColumnsInTheSmallerUnitAreNoted) {
