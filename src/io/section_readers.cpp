@@ -54,7 +54,10 @@ std::vector<Vertex> read_inline_points(const TomlTable& prof) {
     const toml::node& e = *pts->get(i);
     const std::string field = fmt::format("{}[{}]", prof.field("points"), i);
     const auto* a = e.as_array();
-    if (!a || a->size() != 3)
+    // The last vertex starts no segment: [x, z] alone, as its CSV row may leave the material
+    // empty.
+    const bool last = i + 1 == pts->size();
+    if (!a || !(a->size() == 3 || (last && a->size() == 2)))
       throw InputError(prof.file(), line_of(e), field,
                        a ? fmt::format("an array of {} values", a->size()) : describe(e), expected);
     double xz[2];
@@ -68,10 +71,14 @@ std::vector<Vertex> read_inline_points(const TomlTable& prof) {
         throw InputError(prof.file(), line_of(c), field, describe(c), expected);
       if (!std::isfinite(xz[k])) throw InputError(prof.file(), line_of(c), field, describe(c), expected);
     }
-    const toml::node& mc = *a->get(2);
-    const auto* ms = mc.as_string();
-    if (!ms) throw InputError(prof.file(), line_of(mc), field, describe(mc), expected);
-    out.push_back({{xz[0], xz[1]}, ms->get(), line_of(e), field, prof.file()});
+    std::string material;
+    if (a->size() == 3) {
+      const toml::node& mc = *a->get(2);
+      const auto* ms = mc.as_string();
+      if (!ms) throw InputError(prof.file(), line_of(mc), field, describe(mc), expected);
+      material = ms->get();
+    }
+    out.push_back({{xz[0], xz[1]}, std::move(material), line_of(e), field, prof.file()});
   }
   if (out.size() < 2)
     throw InputError(prof.file(), line_of(*prof.find("points")), prof.field("points"),

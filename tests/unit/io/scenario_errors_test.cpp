@@ -76,6 +76,16 @@ std::string csv_error(TempDir& dir, const std::string& csv, const std::string& f
 
 // A decimal comma in a comma-separated file splits a number in two: one column too many, or a
 // material that is a number. Both messages ask whether it is one; a real extra column does not.
+// The last inline vertex may go without its material, as its CSV row may leave it empty.
+TEST(ScenarioInline, TheLastVertexMayOmitItsMaterial) {
+  TempDir dir;
+  const auto l = load_scenario(
+      dir.write("s.toml", pierre::test::base_with(9, "points = [[0.0, 10.0, \"rock\"], [20.0, 0.0]]")),
+      kRules);
+  ASSERT_EQ(l.scenario.profile.segment_count(), 1u);
+  EXPECT_DOUBLE_EQ(l.scenario.profile.vertices()[1].x, 20.0);
+}
+
 TEST(ScenarioCsv, ADecimalCommaIsAskedAbout) {
   TempDir dir;
   const std::string p = (dir.path() / "p.csv").string();
@@ -412,6 +422,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"inline_crosses_itself",
              {{9, "points = [\n  [0.0, 10.0, \"rock\"],\n  [10.0, 0.0, \"rock\"],\n  [10.0, 10.0, \"rock\"],\n  [0.0, 0.0, \"\"],\n]"}},
              {}, "s.toml", 10, "profile.points[0]", "crosses itself: the segment from (0, 10) to (10, 0) meets the segment from (10, 10) to (0, 0) (it starts at profile.points[2])"},
+        // [x, z] without a material: the last vertex only (it starts no segment)
+        Case{"inline_two_values_not_last", {{9, "points = [[0.0, 10.0], [10.0, 0.0]]"}}, {}, "s.toml", 9, "profile.points[0]", "an array of 2 values"},
         Case{"inline_one_vertex", {{9, "points = [[0.0, 10.0, \"\"]]"}}, {}, "s.toml", 9, "profile.points", "1 vertex"},
         Case{"csv_one_vertex", {{9, kCsvProfile}}, {{"p.csv", "x,z,material\n\n# c\n0,10,\n"}}, "p.csv", 4, "profile", "1 vertex row"},
         // a slope listed from its source end but descending towards -x: the air is below it
