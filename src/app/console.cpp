@@ -101,7 +101,8 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
                         : "Observation lines (first crossing of each trajectory in the main "
                           "direction)\n",
                out);
-    fmt::print(out, "{:<16} {:>9} {:>8} {:>11}  {:<26} {:>10} {:>10} {:>10} {:>10}\n", "line",
+    const std::size_t wl = column_width(s.lines, 16, [](const auto& l) { return l.name; });
+    fmt::print(out, "{:<{}} {:>9} {:>8} {:>11}  {:<26} {:>10} {:>10} {:>10} {:>10}\n", "line", wl,
                "x (m)", "count", "not reached", "quantity", "mean", "P50", "P95", "max");
     for (const auto& l : s.lines) {
       struct Row {
@@ -116,10 +117,10 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
       bool first = true;
       for (const Row& r : rows) {
         if (first)
-          fmt::print(out, "{:<16} {:>9.2f} {:>8} {:>11}  ", l.name, l.chainage, l.count,
+          fmt::print(out, "{:<{}} {:>9.2f} {:>8} {:>11}  ", l.name, wl, l.chainage, l.count,
                      l.not_reached);
         else
-          fmt::print(out, "{:<16} {:>9} {:>8} {:>11}  ", "", "", "", "");
+          fmt::print(out, "{:<{}} {:>9} {:>8} {:>11}  ", "", wl, "", "", "");
         first = false;
         auto cell = [&](double v) { return design::number_cell(v * r.scale, r.kind, 10); };
         fmt::print(out, "{:<26} {} {} {} {}\n", r.label, cell(r.q->mean), cell(r.q->p50),
@@ -164,9 +165,12 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
     fmt::print(out, "Barriers (ETAG 027, docs/barriers.md; characteristic values at the rule set's percentile)\n");
     // The class the requirement needs, not a candidate's (the report's "smallest energy class
     // required"): "class" alone read as the candidate's own.
-    fmt::print(out, "{:<18} {:<12} {:<18} {:>10} {:>10} {:>8} {:>9} {:>10} {:>10} {:>9} {:>7}\n", "barrier",
-               "line", "rules", "v_k m/s", "h_k m", "v_d m/s", "E_d kJ", "MEL_req kJ", "SEL_req kJ",
-               "req class", "h_i m");
+    const std::size_t wb = column_width(r.barriers, 18, [](const auto& d) { return d.spec.name; });
+    const std::size_t wn = column_width(r.barriers, 12, [](const auto& d) { return d.spec.line; });
+    const std::size_t wr = column_width(r.barriers, 18, [](const auto& d) { return d.rules_name; });
+    fmt::print(out, "{:<{}} {:<{}} {:<{}} {:>10} {:>10} {:>8} {:>9} {:>10} {:>10} {:>9} {:>7}\n",
+               "barrier", wb, "line", wn, "rules", wr, "v_k m/s", "h_k m", "v_d m/s", "E_d kJ",
+               "MEL_req kJ", "SEL_req kJ", "req class", "h_i m");
     // Which of the two a characteristic value is: a Weibull v_k below the P95 of the line table
     // above is the fit's, not a slip.
     auto k = [](const design::Characteristic& c, design::NumberKind kind) {
@@ -179,8 +183,8 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
     constexpr auto speed = design::NumberKind::speed, length = design::NumberKind::length,
                    energy = design::NumberKind::energy;
     for (const auto& d : r.barriers)
-      fmt::print(out, "{:<18} {:<12} {:<18} {} {} {} {} {} {} {:>9} {}\n", d.spec.name, d.spec.line,
-                 d.rules_name, k(d.v_k, speed), k(d.h_k, length), design::number_cell(d.v_d, speed, 8),
+      fmt::print(out, "{:<{}} {:<{}} {:<{}} {} {} {} {} {} {} {:>9} {}\n", d.spec.name, wb,
+                 d.spec.line, wn, d.rules_name, wr, k(d.v_k, speed), k(d.h_k, length), design::number_cell(d.v_d, speed, 8),
                  design::number_cell(d.E_d_kJ, energy, 9), design::number_cell(d.MEL_req_kJ, energy, 10),
                  design::number_cell(d.SEL_req_kJ, energy, 10),
                  d.energy_class ? std::to_string(d.energy_class->number) +
@@ -195,10 +199,12 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
       for (const auto& note : d.notes) print_wrapped(out, "Note: " + d.spec.name + ": ", note);
   }
   blank();
-  fmt::print(out, "Checks\n{:<18} {:<20} {:>10} {:>10} {:<4} {:<6} {}\n", "subject", "id", "value",
-             "limit", "unit", "status", "rule");
+  const std::size_t ws = column_width(r.checks, 18, [](const auto& c) { return c.subject; });
+  const std::size_t wi = column_width(r.checks, 20, [](const auto& c) { return c.id; });
+  fmt::print(out, "Checks\n{:<{}} {:<{}} {:>10} {:>10} {:<4} {:<6} {}\n", "subject", ws, "id", wi,
+             "value", "limit", "unit", "status", "rule");
   for (const auto& c : r.checks)
-    fmt::print(out, "{:<18} {:<20} {} {} {:<4} {:<6} {}\n", c.subject, c.id,
+    fmt::print(out, "{:<{}} {:<{}} {} {} {:<4} {:<6} {}\n", c.subject, ws, c.id, wi,
                design::number_cell(c.value, design::check_number_kind(c.unit, c.value), 10),
                design::number_cell(c.limit, design::check_number_kind(c.unit, c.limit), 10), c.unit,
                design::to_string(c.status), c.rule);

@@ -1,6 +1,7 @@
 // Console output of `pierre run`: the progress bar on stderr and the results table on stdout.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -15,6 +16,20 @@
 #include "pierre/sim/scenario.hpp"
 
 namespace pierre::app {
+
+// A column as wide as its widest entry (in characters of UTF-8), at least `at_least`: a name
+// longer than usual pushed every column after it out of line.
+template <class Rows, class Text>
+std::size_t column_width(const Rows& rows, std::size_t at_least, Text text) {
+  std::size_t w = at_least;
+  for (const auto& r : rows) {
+    const std::string t = text(r);
+    w = std::max(w, static_cast<std::size_t>(std::count_if(t.begin(), t.end(), [](char c) {
+                   return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // not a continuation byte
+                 })));
+  }
+  return w;
+}
 
 // Percentage, trajectories per second and ETA on one line of stderr, redrawn at most five times
 // a second. Disabled (does nothing) unless `enabled`; the caller passes isatty(2) && !quiet.

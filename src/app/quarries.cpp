@@ -93,7 +93,9 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
              "{}Quarry danger zones (docs/quarry.md; thesis Tables 6.2, 6.3): horizontal "
              "distances from the toe,\ncalculated / observed where observed values are given\n",
              follows_output ? "\n" : "");
-  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", "row", "n", "H m",
+  std::size_t wq = column_width(d.rows, 18, [](const design::QuarryRow& r) { return r.name; });
+  wq = column_width(d.sections, wq, [](const auto& sec) { return "  " + sec.spec.name; });
+  fmt::print(out, "{:<{}} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", "row", wq, "n", "H m",
              "", "P50", "P95", "P99", "max", "governing");
   for (const design::QuarryRow& r : d.rows) {
     const double H = r.height;
@@ -126,11 +128,11 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
                                                         : "",  // "-": no values
                           l.gov->how);
       if (first)
-        fmt::print(out, "{:<18} {:>6} {:>6.1f}  ", r.name, l.s->count, H);
+        fmt::print(out, "{:<{}} {:>6} {:>6.1f}  ", r.name, wq, l.s->count, H);
       else if (l.s == &r.id && !l.per_h)
-        fmt::print(out, "{:<18} {:>6} {:>6}  ", "", l.s->count, "");
+        fmt::print(out, "{:<{}} {:>6} {:>6}  ", "", wq, l.s->count, "");
       else
-        fmt::print(out, "{:<18} {:>6} {:>6}  ", "", "", "");
+        fmt::print(out, "{:<{}} {:>6} {:>6}  ", "", wq, "", "");
       first = false;
       fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", l.label, pair(p50, o50, p),
                  pair(p95, o95, p), metres(p99, 0, p), pair(mx, omx, p), gov);
@@ -140,8 +142,8 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
       for (std::size_t i : r.sections) {
         const design::QuarrySectionResult& sec = d.sections[i];
         for (const auto* st : {&sec.rd, &sec.id})
-          fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n",
-                     st == &sec.rd ? "  " + sec.spec.name : "", st->count,
+          fmt::print(out, "{:<{}} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n",
+                     st == &sec.rd ? "  " + sec.spec.name : "", wq, st->count,
                      st == &sec.rd ? fmt::format("{:.1f}", sec.geometry.height) : "",
                      st == &sec.rd ? "RD m" : "ID m", metres(st->p50, 0), metres(st->p95, 0),
                      metres(st->p99, 0), metres(st->max, 0));
@@ -152,10 +154,10 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
     return a.observed_rows ? pair(calc, obs, 2) : metres(calc, 0, 2);
   };
   // n is left blank: the average is a mean of the rows' ratios, not a sample of its own.
-  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", "",
+  fmt::print(out, "{:<{}} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", wq, "",
              "", "RD/H", avg(a.rd50_h, a.obs_rd50_h), avg(a.rd95_h, a.obs_rd95_h), "",
              avg(a.rdmax_h, a.obs_rdmax_h));
-  fmt::print(out, "{:<18} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "", "", "", "ID/H",
+  fmt::print(out, "{:<{}} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "", wq, "", "", "ID/H",
              avg(a.id50_h, a.obs_id50_h), avg(a.id95_h, a.obs_id95_h), "",
              avg(a.idmax_h, a.obs_idmax_h));
   fmt::print(out, "n: RD over every block thrown, ID over the blocks that reached the floor.\n");

@@ -111,6 +111,28 @@ TEST_F(Check, PassingCandidateExitsZero) {
   }
 }
 
+// A name longer than its column widens the column: the barrier table's and the check table's
+// later columns stay under their headings (a 25-character name pushed them out of line).
+TEST_F(Check, ALongNameWidensItsColumn) {
+  const fs::path file = dir_ / "long.toml";
+  const std::string name = "Generous barrier, ch. 1+250";  // 27 characters: more than 18
+  write_variant("pass.toml", {{"name = \"Generous\"", "name = \"" + name + "\""}}, file);
+  const Result r = pierre("check " + q(file) + " --out " + q(dir_ / "out"));
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  auto line_starting = [&](const std::string& start) {
+    const auto k = r.out.find("\n" + start);
+    if (k == std::string::npos) throw std::runtime_error("no line starting " + start + "\n" + r.out);
+    return r.out.substr(k + 1, r.out.find('\n', k + 1) - k - 1);
+  };
+  // Each heading's column holds its value, one space after the widest name.
+  const std::string barriers = line_starting("barrier "), row = line_starting(name + " Screen 1");
+  EXPECT_EQ(barriers.find("line"), name.size() + 1) << barriers;
+  EXPECT_EQ(barriers.find("rules"), row.find("thesis-2015")) << barriers << "\n" << row;
+  const std::string checks = line_starting("subject "), mel = line_starting(name + " energy.mel");
+  EXPECT_EQ(checks.find(" id "), name.size()) << checks;
+  EXPECT_EQ(checks.find("status"), mel.find("PASS")) << checks << "\n" << mel;
+}
+
 TEST_F(Check, FailingCandidateExitsOneAndStillWritesTheResults) {
   const fs::path out = dir_ / "out";
   const Result r = pierre("check " + kData + "fail.toml --out '" + out.string() + "'");
