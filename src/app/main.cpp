@@ -35,7 +35,6 @@ int lost_stdout() {
   return pierre::app::kExitInternal;
 }
 
-
 // The first argument that is a long option of some command written with a single dash
 // ("-out", "-seed=3"), or "" when there is none.
 std::string single_dash_long_option(int argc, char** argv, const std::vector<CLI::App*>& apps) {
@@ -51,6 +50,7 @@ std::string single_dash_long_option(int argc, char** argv, const std::vector<CLI
   }
   return {};
 }
+
 }  // namespace
 
 int main(int argc, char** argv) {
