@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include "pierre/design/run_statistics.hpp"
@@ -29,6 +30,18 @@ std::size_t column_width(const Rows& rows, std::size_t at_least, Text text) {
                  })));
   }
   return w;
+}
+
+// Runs `print`, which writes the results to stdout. A failed write there (fmt throws) is left
+// for main to report from ferror(stdout), so that the command's exit code survives it: a FAIL's
+// 1 must reach a pipeline even when the table could not be printed.
+template <class Print>
+void print_to_stdout(Print&& print) {
+  try {
+    print();
+  } catch (const std::system_error&) {
+    if (!std::ferror(stdout)) throw;
+  }
 }
 
 // Percentage, trajectories per second and ETA on one line of stderr, redrawn at most five times

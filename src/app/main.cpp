@@ -128,7 +128,11 @@ int main(int argc, char** argv) {
       const int code = commands[i]->run();
       // What the command printed must have reached stdout (a full disk, a closed pipe): else a
       // script reading it would take a lost verdict for a given one.
-      if (std::fflush(stdout) != 0 || std::ferror(stdout)) return lost_stdout();
+      // A FAIL stays 1 even then: the results are written, and a pipeline must see the verdict.
+      if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        const int lost = lost_stdout();
+        return code == kExitCheckFailed ? code : lost;
+      }
       return code;
     }
     return kExitInput;

@@ -309,11 +309,13 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   bar.finish();
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});
-  if (!o.quiet) print_results(stdout, stats, seconds, written, loaded.quarries.size());
-  if (!o.quiet || o.check) {
-    print_quarries(stdout, *results.quarry, !o.quiet);
-    print_design(stdout, results);
-  }
+  print_to_stdout([&] {
+    if (!o.quiet) print_results(stdout, stats, seconds, written, loaded.quarries.size());
+    if (!o.quiet || o.check) {
+      print_quarries(stdout, *results.quarry, !o.quiet);
+      print_design(stdout, results);
+    }
+  });
   if (o.check && design::any_failure(results.checks)) return kExitCheckFailed;
   return kExitOk;
 }

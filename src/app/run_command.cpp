@@ -190,12 +190,14 @@ class RunCommand final : public Command {
     bar.finish();
     if (interrupt.interrupted()) return report_interrupted(out_.c_str());
     const auto written = folder->commit({io::kImpactsCsv});
-    if (!quiet_) print_results(stdout, stats, seconds, written);
-    if (!quiet_ || check_) print_design(stdout, design_results, !quiet_);
-    // Every barrier, designed or not, has check lines (the advisory ones at least).
-    if (check_ && design_results.checks.empty())
-      fmt::print("{}Nothing to check: the scenario has no [[barriers]] or [[quarries]] (exit 0).\n",
-                 quiet_ ? "" : "\n");
+    print_to_stdout([&] {
+      if (!quiet_) print_results(stdout, stats, seconds, written);
+      if (!quiet_ || check_) print_design(stdout, design_results, !quiet_);
+      // Every barrier, designed or not, has check lines (the advisory ones at least).
+      if (check_ && design_results.checks.empty())
+        fmt::print("{}Nothing to check: the scenario has no [[barriers]] or [[quarries]] (exit 0).\n",
+                   quiet_ ? "" : "\n");
+    });
     if (check_ && design::any_failure(design_results.checks)) return kExitCheckFailed;
     return kExitOk;
   }

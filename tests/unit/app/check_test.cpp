@@ -146,6 +146,22 @@ TEST_F(Check, FailingCandidateExitsOneAndStillWritesTheResults) {
   EXPECT_TRUE(fs::exists(out / "crossings.csv"));
 }
 
+// A FAIL whose table could not be printed (a full disk, here /dev/full; a closed pipe) still
+// exits 1, with the failed write said on stderr: a pipeline must see the verdict, not an alert.
+TEST_F(Check, AFailStaysOneWhenStdoutCannotBeWritten) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  const fs::path e = dir_ / "stderr.txt";
+  const std::string cmd = std::string("'") + PIERRE_BINARY + "' check " + kData + "fail.toml --out " +
+                          q(dir_ / "out") + " >/dev/full 2>" + q(e);
+  const int st = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), 1) << slurp(e);
+  EXPECT_NE(slurp(e).find("error: cannot write to standard output: No space left on device"),
+            std::string::npos)
+      << slurp(e);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.json"));
+}
+
 TEST_F(Check, RunExitsZeroWhateverTheChecksSay) {
   const fs::path out = dir_ / "out";
   const Result r = pierre("run " + kData + "fail.toml --out '" + out.string() + "'");
