@@ -28,23 +28,25 @@ std::string listed(const std::vector<std::string>& places) {
   return s;
 }
 
-// A folder found under the working folder, named relative to it: the report records the rules
-// files' paths, and a firm whose pipeline runs each job in a fresh workspace (a different
-// absolute path each time) then gets the same bytes from the same inputs. Anywhere else, the
-// path as found.
-fs::path as_shown(const fs::path& found) {
+// A folder under the working folder, named relative to it (found, given by --rules or by the
+// variable, absolute or as "./rules/"): the report records the rules files' paths, and a firm
+// whose pipeline runs each job in a fresh workspace (a different absolute path each time) then
+// gets the same bytes from the same inputs. Anywhere else, the path as given, normalised.
+fs::path as_shown(const fs::path& given) {
+  fs::path p = given.lexically_normal();
+  if (p.has_parent_path() && p.filename().empty()) p = p.parent_path();  // "rules/" → "rules"
   std::error_code ec;
   const fs::path cwd = fs::current_path(ec);
-  if (ec || !found.is_absolute()) return found;
-  const fs::path rel = found.lexically_normal().lexically_relative(cwd.lexically_normal());
-  if (rel.empty() || rel == "." || *rel.begin() == "..") return found;
+  if (ec || !p.is_absolute()) return p.empty() ? given : p;
+  const fs::path rel = p.lexically_relative(cwd.lexically_normal());
+  if (rel.empty() || rel == "." || *rel.begin() == "..") return p;
   return rel;
 }
 
 DataFolder find(const char* name, const char* env_var, const char* probe) {
   DataFolder f;
   if (const char* env = std::getenv(env_var); env && *env) {
-    f.path = env;
+    f.path = as_shown(env);
     f.searched.push_back(fmt::format("${} = {}", env_var, env));
     f.from_env = f.found = true;
     return f;
@@ -77,7 +79,7 @@ DataFolder find(const char* name, const char* env_var, const char* probe) {
 }  // namespace
 
 io::RulesFolder rules_folder(const std::string& option) {
-  if (!option.empty()) return {option, "the rules folder given by --rules"};
+  if (!option.empty()) return {as_shown(option), "the rules folder given by --rules"};
   const DataFolder f = find("rules", "PIERRE_RULES", "materials.toml");
   if (f.from_env) return {f.path, "the rules folder given by $PIERRE_RULES"};
   if (f.found) return {f.path};

@@ -467,7 +467,15 @@ TEST_F(Cli, SameSeedSameFiles) {
 // paths give the same bytes, because the rules files are recorded relative to the working
 // folder. (They were recorded by absolute path, so no two jobs' reports were the same.)
 TEST_F(Cli, TwoWorkspacesGiveTheSameReport) {
-  for (const char* job : {"job-1", "job-22"}) {
+  // The rules folder found, or named as CI scripts name it: by the workspace's absolute path
+  // ($PWD/rules), through PIERRE_RULES, or as ./rules/. Each is recorded as rules/.
+  const std::pair<const char*, std::string> jobs[] = {
+      {"job-1", ""},
+      {"job-22", ""},
+      {"job-3", " --rules \"$PWD/rules\""},
+      {"job-44", " --rules ./rules/"},
+      {"job-5", "env"}};
+  for (const auto& [job, rules] : jobs) {
     const fs::path ws = dir_ / job;
     fs::create_directories(ws / "bin");
     fs::copy_file(PIERRE_BINARY, ws / "bin" / "pierre");
@@ -475,16 +483,18 @@ TEST_F(Cli, TwoWorkspacesGiveTheSameReport) {
     for (const char* d : {"rules", "templates"})
       fs::copy(fs::path(PIERRE_SOURCE_DIR) / d, ws / d, fs::copy_options::recursive);
     fs::copy(fs::path(kScenario).parent_path(), ws / "input", fs::copy_options::recursive);
-    const std::string cmd = "cd " + q(ws) +
-                            " && SOURCE_DATE_EPOCH=1700000000 bin/pierre run input/scenario.toml "
-                            "--quiet --throws 20 --out out 2>" + q(ws / "err.txt");
+    const std::string cmd = "cd " + q(ws) + " && SOURCE_DATE_EPOCH=1700000000 " +
+                            (rules == "env" ? "PIERRE_RULES=\"$PWD/rules\" " : "") +
+                            "bin/pierre run input/scenario.toml --quiet --throws 20 --out out" +
+                            (rules == "env" ? "" : rules) + " 2>" + q(ws / "err.txt");
     const int st = std::system(cmd.c_str());
     ASSERT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 0) << slurp(ws / "err.txt");
     const auto j = nlohmann::json::parse(slurp(ws / "out" / "summary.json"));
     EXPECT_EQ(j["scenario"]["materials_file"], "rules/materials.toml") << job;
   }
   for (const char* f : {"summary.json", "report.xlsx", "trajectories.csv"})
-    EXPECT_EQ(slurp(dir_ / "job-1" / "out" / f), slurp(dir_ / "job-22" / "out" / f)) << f;
+    for (const char* other : {"job-22", "job-3", "job-44", "job-5"})
+      EXPECT_EQ(slurp(dir_ / "job-1" / "out" / f), slurp(dir_ / other / "out" / f)) << f << " " << other;
 }
 
 // A rerun that cannot replace one result (here a folder by its name; a report held open in
