@@ -69,6 +69,7 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
   info.all_crossings = all_crossings;
   info.overrides = loaded.overrides;
   info.input_notes = loaded.notes;
+  info.inputs = loaded.inputs;
   return info;
 }
 

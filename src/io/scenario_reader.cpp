@@ -354,7 +354,8 @@ void read_lines(const TomlTable& top, sim::Scenario& sc, std::vector<InputNote>&
 
 }  // namespace
 
-LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const RulesFolder& rules) {
+namespace {
+LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const RulesFolder& rules) {
   const fs::path& rules_dir = rules.path;
   LoadedScenario out;
   out.file = scenario_file;
@@ -430,6 +431,17 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
   }
   read_lines(top, out.scenario, out.notes);
   detail::read_barriers(top, rules, out);
+  return out;
+}
+
+}  // namespace
+
+LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const RulesFolder& rules) {
+  // Every file the loading reads (the scenario, its CSVs, the materials, the rule sets), with
+  // its SHA-256: the record of what produced the results.
+  InputFilesRecord record;
+  LoadedScenario out = read_scenario(scenario_file, rules);
+  out.inputs = record.take();
   return out;
 }
 

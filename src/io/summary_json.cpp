@@ -322,6 +322,11 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                    {"materials_file", info.materials_file.string()}};
   for (auto [key, value] : info.document.fields())
     if (!value->empty()) j["scenario"][key] = *value;
+  // Every file the scenario's loading read (the scenario, its CSVs, the materials, the rule
+  // sets and class tables), with the SHA-256 of its bytes: which inputs made these results.
+  j["inputs"] = json::array();
+  for (const auto& f : info.inputs)
+    j["inputs"].push_back({{"file", f.file.string()}, {"sha256", f.sha256}, {"bytes", f.bytes}});
   j["seed"] = info.seed;
   j["throws"] = info.throws;
   j["command_line_overrides"] = info.overrides;  // [] when the file's values ran

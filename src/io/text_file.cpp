@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/input_files.hpp"
 
 namespace pierre::io::detail {
 
@@ -44,6 +45,7 @@ std::string read_text(const fs::path& file, std::string_view what) {
     if (text.size() > kMaxInputBytes)
       throw too_large(fmt::format("more than {} MiB", kMaxInputBytes >> 20));
   }
+  InputFilesRecord::note(file, text);
   return text;
 }
 

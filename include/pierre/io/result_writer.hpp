@@ -39,6 +39,7 @@
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/document_control.hpp"
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/input_files.hpp"
 #include "pierre/sim/runner.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -101,6 +102,7 @@ struct RunInfo {
   bool all_crossings = false;
   std::vector<std::string> overrides;  // LoadedScenario::overrides
   std::vector<InputNote> input_notes;  // LoadedScenario::notes: likely mistakes, not errors
+  std::vector<InputFile> inputs;       // LoadedScenario::inputs: every file read, with its hash
 };
 
 // The design results of a run: every barrier computed, the quarry danger zones (a quarry

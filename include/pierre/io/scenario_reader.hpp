@@ -14,6 +14,7 @@
 #include "pierre/io/block_group.hpp"
 #include "pierre/io/document_control.hpp"
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/input_files.hpp"
 #include "pierre/io/quarry_reader.hpp"
 #include "pierre/io/rules_folder.hpp"
 #include "pierre/sim/scenario.hpp"
@@ -29,6 +30,8 @@ struct LoadedScenario {
   DocumentControl document;
   std::vector<BlockGroup> block_groups;
   std::filesystem::path materials_file;  // where the presets came from
+  // Every file read, in reading order, with its SHA-256 (summary.json "inputs").
+  std::vector<InputFile> inputs;
   // What the command line set instead of the file (--seed, --throws), each with the file's
   // value: the echoed text no longer says what ran, so summary.json and the report say it.
   std::vector<std::string> overrides;

@@ -462,6 +462,47 @@ TEST_F(Cli, SameSeedSameFiles) {
   EXPECT_NE(slurp(dir_ / "a" / "trajectories.csv"), slurp(dir_ / "c" / "trajectories.csv"));
 }
 
+// The SHA-256 of a file as coreutils' sha256sum gives it: an independent hash to check ours by.
+std::string sha256sum(const fs::path& file) {
+  std::string out;
+  if (FILE* p = ::popen(("sha256sum '" + file.string() + "'").c_str(), "r")) {
+    char buf[256];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    ::pclose(p);
+  }
+  return out.substr(0, 64);
+}
+
+// summary.json names every file the run read, each with its SHA-256 as sha256sum gives it, so a
+// pipeline sees which input made a change (an edited block table changed only statistics);
+// an edit of one CSV changes that file's hash alone.
+TEST_F(Cli, SummaryNamesEveryInputWithItsHash) {
+  fs::copy(fs::path(kScenario).parent_path(), dir_ / "in", fs::copy_options::recursive);
+  const std::string scenario = (dir_ / "in" / "scenario.toml").string();
+  const auto inputs = [&](const fs::path& out) {
+    const Result r = pierre("run " + q(scenario) + " --quiet --throws 2 --out " + q(out));
+    EXPECT_EQ(r.code, 0) << r.err;
+    return summary(out)["inputs"];
+  };
+  const auto before = inputs(dir_ / "o1");
+  ASSERT_EQ(before.size(), 3u) << before;  // the scenario, the materials, the profile
+  EXPECT_EQ(before[0]["file"], scenario);
+  EXPECT_EQ(before[2]["file"], (dir_ / "in" / "profile.csv").string());
+  EXPECT_EQ(fs::path(before[1]["file"].get<std::string>()).filename(), "materials.toml");
+  for (const auto& f : before) {
+    const fs::path file = f["file"].get<std::string>();
+    EXPECT_EQ(f["sha256"], sha256sum(file)) << file;
+    EXPECT_EQ(f["bytes"].get<std::uintmax_t>(), fs::file_size(file)) << file;
+  }
+  std::ofstream(dir_ / "in" / "profile.csv", std::ios::app) << "# edited\n";
+  const auto after = inputs(dir_ / "o2");
+  ASSERT_EQ(after.size(), 3u);
+  EXPECT_EQ(after[0], before[0]);
+  EXPECT_EQ(after[1], before[1]);
+  EXPECT_NE(after[2]["sha256"], before[2]["sha256"]);
+  EXPECT_EQ(after[2]["sha256"], sha256sum(dir_ / "in" / "profile.csv"));
+}
+
 // A firm's pipeline runs each job in a fresh workspace that holds pierre, its rules and
 // templates and the scenario, from the workspace's root: two workspaces at different absolute
 // paths give the same bytes, because the rules files are recorded relative to the working
