@@ -77,7 +77,7 @@ class RunCommand final : public Command {
                       ->check(whole_number(1, std::numeric_limits<std::uint32_t>::max()))
                       ->type_name("N");
     c->add_flag("--quiet,-q", quiet_,
-                check_ ? "No progress bar and no results table (the check lines are still printed)"
+                check_ ? "No progress bar and no run statistics (the barrier and quarry tables and the check lines are still printed)"
                        : "No progress bar and no results table");
     c->add_flag("--impacts", impacts_, "Also write impacts.csv (every impact; large)");
     c->add_flag("--all-crossings", all_crossings_,
