@@ -78,11 +78,6 @@ bool is_number(std::string_view s) {
   return !s.empty() && ec == std::errc{} && ptr == s.data() + s.size();
 }
 
-bool is_digits(std::string_view s) {
-  if (!s.empty() && s.front() == '-') s.remove_prefix(1);
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
 // The input tables' columns that hold names; every other column holds numbers.
 bool text_column(std::string_view name) { return name == "material" || name == "id"; }
 
@@ -97,7 +92,8 @@ bool fits_with_decimal_commas(const std::vector<std::string>& cells,
     return true;
   }
   for (std::size_t i = from; cells.size() > header.size() && i + 1 < cells.size(); ++i) {
-    if (!is_digits(cells[i]) || !is_digits(cells[i + 1]) || cells[i + 1].front() == '-') continue;
+    if (!whole_number_text(cells[i]) || !whole_number_text(cells[i + 1]) || cells[i + 1].front() == '-')
+      continue;
     std::vector<std::string> merged = cells;
     merged[i] += "." + merged[i + 1];
     merged.erase(merged.begin() + static_cast<std::ptrdiff_t>(i) + 1);
@@ -145,6 +141,11 @@ std::string separated_line(std::string_view line, std::string_view cells, std::s
 }
 
 }  // namespace
+
+bool whole_number_text(std::string_view s) {
+  if (!s.empty() && s.front() == '-') s.remove_prefix(1);
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
 
 std::optional<std::size_t> CsvTable::column(std::string_view name) const {
   const auto it = std::find(header.begin(), header.end(), name);

@@ -34,6 +34,10 @@ struct CsvTable {
 // knows the column by its name.
 using ColumnAliases = std::vector<std::pair<std::string, std::string>>;
 
+// Digits only, with an optional leading minus ("16", "-0"): the halves of a number split by a
+// decimal comma ("16,5").
+bool whole_number_text(std::string_view s);
+
 // Reads `file`; every header name must be one of `allowed` or an alias of one (no duplicates).
 // `expected_header` says in messages what the header should hold. Empty cells after the last
 // column, and rows of empty cells only, are what spreadsheets write for nothing: ignored.

@@ -172,9 +172,7 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
                            ? fmt::format("a material for the segment that starts here ({})", names)
                            : fmt::format("a material defined in [materials] ({}){}", names,
                                          // "60,-0,5": z = -0,5 with a decimal comma.
-                                         has_file && !v.material.empty() &&
-                                                 std::all_of(v.material.begin(), v.material.end(),
-                                                             [](char c) { return c >= '0' && c <= '9'; })
+                                         has_file && detail::whole_number_text(v.material)
                                              ? "; a decimal comma in z? numbers take a point "
                                                "(-0.5, not -0,5)"
                                              : ""));
