@@ -145,6 +145,10 @@ int main(int argc, char** argv) {
     std::fputs(("error: cannot put the results in place: " + std::string(e.what()) + "\n").c_str(),
                stderr);
     return kExitInput;
+  } catch (const pierre::io::OutputWriteError& e) {  // a full disk, a file size limit
+    std::fflush(stdout);
+    std::fputs(("error: " + std::string(e.what()) + "\n").c_str(), stderr);
+    return kExitInput;
   } catch (const std::exception& e) {
     // fmt throws when a print to stdout fails: that is the output's fault, said as such.
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) return lost_stdout();

@@ -95,7 +95,7 @@ class RunCommand final : public Command {
           "A quarry scenario ([[quarries]], docs/quarry.md): every section's danger zone and its\n"
           "checks (zone.<work area>, bench.*), summary.json \"quarries\" and \"checks\".\n"
           "Exit code 0 when every check passes (WARN does not count), 1 when one FAILs, 2 on bad input\n"
-          "or results that cannot be put in DIR, 3 on an internal error or when the standard output\n"
+          "or results that cannot be written in DIR (a full disk), 3 on an internal error or when the standard output\n"
           "cannot be written, 130 when interrupted (nothing written).");
     else
       c->footer(
@@ -105,7 +105,7 @@ class RunCommand final : public Command {
           "--impacts also impacts.csv. Barriers are computed and printed too; so are the danger\n"
           "zones of a quarry scenario (docs/quarry.md). Exit code 0 when it ran\n"
           "(whatever the checks say: see `pierre check`), 2 on bad input or results that cannot be\n"
-          "put in DIR, 3 on an internal error or when the standard output cannot be written,\n"
+          "written in DIR (a full disk), 3 on an internal error or when the standard output cannot be written,\n"
           "130 when interrupted (nothing written).");
     return c;
   }

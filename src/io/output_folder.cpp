@@ -183,6 +183,20 @@ CommitError::CommitError(const fs::path& file, const std::string& why)
                          "; the output folder is left as it was before this run"),
       file_(file) {}
 
+namespace {
+// The result's place in DIR for a file of a staging folder; any other path as it is.
+fs::path shown_in_dir(const fs::path& staged) {
+  const std::string folder = staged.parent_path().filename().string();
+  if (folder.rfind(kStagingPrefix, 0) != 0) return staged;
+  return staged.parent_path().parent_path() / staged.filename();
+}
+}  // namespace
+
+OutputWriteError::OutputWriteError(const fs::path& staged, const std::string& why)
+    : std::runtime_error("cannot write " + shown_in_dir(staged).string() + ": " + why +
+                         "; no result was replaced, the output folder is left as it was before "
+                         "this run") {}
+
 void OutputFolder::discard() noexcept {
   done_ = true;
   std::error_code ec;

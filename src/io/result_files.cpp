@@ -1,6 +1,7 @@
 // The result files (result_writer.hpp): trajectories.csv, crossings.csv, impacts.csv, streamed
 // as the runner delivers its chunks.
 #include "pierre/io/result_writer.hpp"
+#include "pierre/io/output_folder.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -50,8 +51,7 @@ class ResultFiles::Csv {
   Csv(std::filesystem::path path, std::string_view header) : path_(std::move(path)) {
     f_ = std::fopen(path_.c_str(), "wb");
     if (!f_)
-      throw std::runtime_error(
-          fmt::format("cannot create {}: {}", path_.string(), std::strerror(errno)));
+      throw OutputWriteError(path_, std::strerror(errno));
     buf.append(header.data(), header.data() + header.size());
     buf.push_back('\n');
   }
@@ -64,8 +64,7 @@ class ResultFiles::Csv {
   }
   void flush() {
     if (buf.size() && std::fwrite(buf.data(), 1, buf.size(), f_) != buf.size())
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", path_.string(), std::strerror(errno)));
+      throw OutputWriteError(path_, std::strerror(errno));
     buf.clear();
   }
   void close() {
@@ -73,8 +72,7 @@ class ResultFiles::Csv {
     std::FILE* f = f_;
     f_ = nullptr;
     if (std::fclose(f) != 0)
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", path_.string(), std::strerror(errno)));
+      throw OutputWriteError(path_, std::strerror(errno));
   }
   fmt::memory_buffer buf;
 

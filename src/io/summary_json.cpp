@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "pierre/io/output_folder.hpp"
 #include "pierre/io/result_writer.hpp"
 
 #ifndef PIERRE_VERSION
@@ -414,10 +415,10 @@ void write_summary_json(const std::filesystem::path& file, const RunInfo& info,
   const std::string text = summary_json(info, stats, results);
   std::FILE* f = std::fopen(file.c_str(), "wb");
   if (!f)
-    throw std::runtime_error(fmt::format("cannot create {}: {}", file.string(), std::strerror(errno)));
+    throw OutputWriteError(file, std::strerror(errno));
   const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
   if (std::fclose(f) != 0 || !ok)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), std::strerror(errno)));
+    throw OutputWriteError(file, std::strerror(errno));
 }
 
 }  // namespace pierre::io

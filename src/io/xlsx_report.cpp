@@ -4,12 +4,16 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "pierre/io/output_folder.hpp"
+#include "xlsx_parts_check.hpp"
 #include "xlsx_report_writer.hpp"
 
 namespace pierre::io {
@@ -124,18 +128,26 @@ void write_report(const std::filesystem::path& file, const ReportData& data,
     fs::remove(tmp, ec);
     throw;
   }
+  errno = 0;
   const lxw_error e = workbook_close(wb);  // writes the file and frees the workbook
   if (e != LXW_NO_ERROR) {
+    // libxlsxwriter's own text for a failed write is "Zip generic error ZIP_ERRNO": the
+    // system's reason (a full disk, a file size limit) says more.
+    const std::string why = errno != 0 ? std::strerror(errno) : lxw_strerror(e);
     fs::remove(tmp, ec);
-    throw std::runtime_error(fmt::format("report.xlsx: cannot write {}: {}", file.string(),
-                                         lxw_strerror(e)));
+    throw OutputWriteError(file, why);
+  }
+  if (const auto part = detail::first_incomplete_part(tmp)) {
+    fs::remove(tmp, ec);
+    throw OutputWriteError(file, "its part " + *part +
+                                     " came out cut short (a full disk, here or in the temporary "
+                                     "folder, or a file size limit)");
   }
   fs::rename(tmp, file, ec);
   if (ec) {
     const std::string why = ec.message();
     fs::remove(tmp, ec);
-    throw std::runtime_error(fmt::format("report.xlsx: cannot move the report into place as {}: {}",
-                                         file.string(), why));
+    throw OutputWriteError(file, why);
   }
 }
 

@@ -26,6 +26,15 @@ class CommitError : public std::runtime_error {
   std::filesystem::path file_;
 };
 
+// A result that could not be written into the staging folder (a full disk, a file size limit,
+// an I/O error). Nothing of DIR was replaced: the message names the result as it would have
+// stood in DIR, with the system's reason.
+class OutputWriteError : public std::runtime_error {
+ public:
+  // `staged`: the file being written (in the staging folder, or anywhere else as it is).
+  OutputWriteError(const std::filesystem::path& staged, const std::string& why);
+};
+
 class OutputFolder {
  public:
   // Creates DIR (and its parents) when missing, then the staging folder. Throws

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <map>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -555,6 +556,43 @@ TEST_F(Cli, ARerunThatCannotReplaceAResultLeavesTheEarlierOne) {
   EXPECT_EQ(slurp(out / "crossings.csv"), crossings);
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_NE(e.path().filename().string().rfind(".pierre-partial-", 0), 0u) << e.path();
+}
+
+// A run that cannot write its results (a full disk; here a file size limit, which fails a
+// write the same way without filling the disk) exits 2, names the result and the reason, and
+// leaves the earlier results as they were. It exited 3 as an internal error; and where a
+// report's sheet was cut short, libxlsxwriter closed the workbook without an error, so a corrupt
+// report replaced the good one with exit 0.
+TEST_F(Cli, ARunThatCannotWriteItsResultsLeavesTheEarlierOnes) {
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --seed 1 --out " + q(out)).code, 0);
+  std::map<std::string, std::string> before;
+  for (const auto& e : fs::directory_iterator(out))
+    before[e.path().filename().string()] = slurp(e.path());
+  ASSERT_GT(fs::file_size(out / "trajectories.csv"), 60'000u);
+  ASSERT_GT(fs::file_size(out / "crossings.csv"), 100'000u);
+  ASSERT_GT(fs::file_size(out / "report.xlsx"), 500'000u);
+  // ulimit -f counts blocks of 512 bytes (dash) or 1024 (bash): 40 blocks stop the first CSV,
+  // 400 let both CSVs (< 200 kB) through and stop the report's largest sheet (> 1 MB unzipped).
+  const struct {
+    int blocks;
+    std::string result, reason;
+  } cases[] = {{40, "trajectories.csv: ", "File too large"},
+               {400, "report.xlsx: ", "came out cut short"}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.blocks);
+    const Result r = pierre_with_env("trap '' XFSZ; ulimit -f " + std::to_string(c.blocks) + ";",
+                                     "run " + kScenario + " --quiet --seed 2 --out " + q(out));
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("cannot write " + (out / c.result).string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.reason), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("no result was replaced"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    std::map<std::string, std::string> after;
+    for (const auto& e : fs::directory_iterator(out))
+      after[e.path().filename().string()] = slurp(e.path());
+    EXPECT_TRUE(after == before) << "the earlier results changed, or a staging folder was left";
+  }
 }
 
 // SOURCE_DATE_EPOCH fixes the report's date. One in milliseconds (a common slip) or not a

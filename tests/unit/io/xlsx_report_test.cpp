@@ -9,6 +9,8 @@
 // LibreOffice is installed by `tools/bootstrap test`; without `soffice` the tests that need it
 // are skipped with a message (the others still run).
 #include <gtest/gtest.h>
+#include <unzip.h>
+#include <zip.h>
 
 #include <algorithm>
 
@@ -26,6 +28,7 @@
 #include "pierre/stats/weibull_fit.hpp"
 #include "support/workbook_reader.hpp"
 #include "test_files.hpp"
+#include "xlsx_parts_check.hpp"
 
 namespace {
 
@@ -889,6 +892,72 @@ TEST(XlsxReport, FailedWriteLeavesNothingBehind) {
   // A folder that does not exist: libxlsxwriter cannot create the file.
   EXPECT_THROW(io::write_report(dir.path() / "no" / "such" / "report.xlsx", g->data, tpl),
                std::runtime_error);
+}
+
+// Every member of a zip, in order: name and text (minizip, as pierre reads the report).
+std::vector<std::pair<std::string, std::string>> zip_parts(const fs::path& zip_file) {
+  std::vector<std::pair<std::string, std::string>> parts;
+  unzFile z = unzOpen64(zip_file.c_str());
+  if (!z) return parts;
+  for (int r = unzGoToFirstFile(z); r == UNZ_OK; r = unzGoToNextFile(z)) {
+    char name[512];
+    unz_file_info64 info;
+    if (unzGetCurrentFileInfo64(z, &info, name, sizeof name, nullptr, 0, nullptr, 0) != UNZ_OK ||
+        unzOpenCurrentFile(z) != UNZ_OK)
+      break;
+    std::string text(info.uncompressed_size, '\0');
+    const int n = unzReadCurrentFile(z, text.data(), static_cast<unsigned>(text.size()));
+    unzCloseCurrentFile(z);
+    text.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+    parts.emplace_back(name, std::move(text));
+  }
+  unzClose(z);
+  return parts;
+}
+
+void write_zip(const fs::path& zip_file, const std::vector<std::pair<std::string, std::string>>& parts) {
+  zipFile z = zipOpen64(zip_file.c_str(), APPEND_STATUS_CREATE);
+  ASSERT_NE(z, nullptr);
+  for (const auto& [name, text] : parts) {
+    zip_fileinfo info{};
+    ASSERT_EQ(zipOpenNewFileInZip64(z, name.c_str(), &info, nullptr, 0, nullptr, 0, nullptr,
+                                    Z_DEFLATED, 1, 0),
+              ZIP_OK);
+    ASSERT_EQ(zipWriteInFileInZip(z, text.data(), static_cast<unsigned>(text.size())), ZIP_OK);
+    ASSERT_EQ(zipCloseFileInZip(z), ZIP_OK);
+  }
+  ASSERT_EQ(zipClose(z, nullptr), ZIP_OK);
+}
+
+// The read-back that catches a part libxlsxwriter cut short (xlsx_parts_check.hpp) passes a
+// whole report, and refuses what is not a workbook at all.
+TEST(XlsxReport, AWrittenReportReadsBackWhole) {
+  TempDir dir;
+  const auto f = make_fixture();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  EXPECT_EQ(io::detail::first_incomplete_part(xlsx), std::nullopt);
+  // The same workbook with one XML part cut short, in a zip that is otherwise sound (its CRC is
+  // that of the cut text, as libxlsxwriter writes it when its temporary file was cut).
+  const std::vector<std::pair<std::string, std::string>> parts = zip_parts(xlsx);
+  ASSERT_GT(parts.size(), 10u);
+  int cut = 0;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const std::string& name = parts[k].first;
+    if (!name.ends_with(".xml") && !name.ends_with(".rels")) continue;
+    auto copy = parts;
+    copy[k].second.resize(copy[k].second.size() * 2 / 3);
+    const fs::path broken = dir.path() / "cut.xlsx";
+    write_zip(broken, copy);
+    EXPECT_EQ(io::detail::first_incomplete_part(broken), name);
+    ++cut;
+  }
+  EXPECT_GT(cut, 10);
+  write_zip(dir.path() / "uncut.xlsx", parts);
+  EXPECT_EQ(io::detail::first_incomplete_part(dir.path() / "uncut.xlsx"), std::nullopt);
+  dir.write("not-a-zip.xlsx", "PK but not a zip");
+  EXPECT_EQ(io::detail::first_incomplete_part(dir.path() / "not-a-zip.xlsx"), "the archive");
+  EXPECT_EQ(io::detail::first_incomplete_part(dir.path() / "missing.xlsx"), "the archive");
 }
 
 // Column widths: one <col> entry per column at most. A range set and then one column in it
