@@ -53,7 +53,9 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
         l.status = design::CheckStatus::fail;
         l.reason = "no design: " + o.error;
       }
-      out.barriers_without_design.push_back({spec.name, spec.line, loaded.barrier_rules[i].name,
+      const design::BarrierRuleSet& rules = loaded.barrier_rules[i];
+      out.barriers_without_design.push_back({spec.name, spec.line, rules.name, rules.title,
+                                             rules.source, rules.file,
                                              it == sc.lines.end() ? 0.0 : it->x,
                                              static_cast<std::uint64_t>(s.speed.size()),
                                              o.failed_check, o.error});

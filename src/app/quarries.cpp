@@ -293,7 +293,8 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   results.quarry = std::move(*outcome.design);
 
   const design::RunStatistics stats = design::run_statistics({}, all);
-  const io::RunInfo info = run_info(loaded, total, blocks, sources, used, o.all_crossings);
+  const io::RunInfo info = run_info(loaded, total, blocks, sources, used, o.all_crossings, o.impacts,
+                                    layout);
   io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, results);
   io::ReportData report = report_data(loaded, stats);
   report.samples = &all;

@@ -183,7 +183,7 @@ class RunCommand final : public Command {
     }
     bar.stage("writing summary.json and report.xlsx");
     const io::RunInfo info = run_info(loaded, total, sc.blocks.size(), sc.sources.size(), used,
-                                      all_crossings_);
+                                      all_crossings_, impacts_, layout);
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
     write_run_report(folder->staged(io::kReportXlsx), layout, loaded, stats, files.samples(),
                      design_results, std::move(first));

@@ -54,7 +54,7 @@ std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out) {
 
 io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectories,
                      std::uint64_t blocks, std::uint64_t sources, unsigned threads,
-                     bool all_crossings) {
+                     bool all_crossings, bool impacts, const io::ReportTemplate& layout) {
   io::RunInfo info;
   info.scenario_name = loaded.scenario.name;
   info.document = loaded.document;
@@ -67,9 +67,11 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
   info.sources = sources;
   info.threads = threads;
   info.all_crossings = all_crossings;
+  info.impacts = impacts;
   info.overrides = loaded.overrides;
   info.input_notes = loaded.notes;
   info.inputs = loaded.inputs;
+  info.inputs.push_back(layout.source);  // the report's layout shapes report.xlsx
   return info;
 }
 

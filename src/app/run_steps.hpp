@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pierre/io/output_folder.hpp"
+#include "pierre/io/report_template.hpp"
 #include "pierre/io/result_writer.hpp"
 #include "pierre/io/scenario_reader.hpp"
 
@@ -20,10 +21,10 @@ unsigned threads_used(unsigned requested, std::uint64_t chunks);
 std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out);
 
 // summary.json's account of the run: the scenario as loaded (seed and throws after --seed and
-// --throws) and what was run.
+// --throws), what was run, and the report layout among the inputs.
 io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectories,
                      std::uint64_t blocks, std::uint64_t sources, unsigned threads,
-                     bool all_crossings);
+                     bool all_crossings, bool impacts, const io::ReportTemplate& layout);
 
 // LoadedScenario::overrides for --seed and --throws, worded with the file's values: call it
 // before they are applied.

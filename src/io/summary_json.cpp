@@ -54,6 +54,12 @@ ojson characteristic_json(const design::Characteristic& c) {
           {"interval", interval_json(c.interval)}};
 }
 
+// A barrier's rule set as the record names it, the same for one with a design and without.
+ojson rules_json(const std::string& name, const std::string& title, const std::string& source,
+                 const std::string& file) {
+  return {{"name", name}, {"title", title}, {"source", source}, {"file", file}};
+}
+
 ojson factor_json(const design::ResolvedFactor& f) { return {{"value", f.value}, {"how", f.how}}; }
 
 ojson barrier_json(const design::BarrierDesign& d) {
@@ -61,8 +67,7 @@ ojson barrier_json(const design::BarrierDesign& d) {
   j["name"] = d.spec.name;
   j["line"] = d.spec.line;
   j["chainage_m"] = d.chainage;
-  j["rules"] = {{"name", d.rules_name}, {"title", d.rules_title}, {"source", d.rules_source},
-                {"file", d.rules_file}};
+  j["rules"] = rules_json(d.rules_name, d.rules_title, d.rules_source, d.rules_file);
   j["energy_classes"] = {{"name", d.classes_name}, {"title", d.classes_title}, {"file", d.classes_file}};
   j["mode"] = d.spec.candidate ? "check" : "design";
   j["crossings"] = d.crossings;
@@ -347,6 +352,7 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
       s.every_crossing ? "every crossing, in both directions (--all-crossings)"
                        : "first crossing of each trajectory in the main travel direction";
   j["all_crossings_in_csv"] = info.all_crossings;
+  j["impacts_csv"] = info.impacts;
   json stops = json::object();
   for (const auto& r : s.stop_reasons) stops[std::string(sim::to_string(r.reason))] = r.count;
   j["stop_reasons"] = stops;
@@ -385,7 +391,8 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
       json none = json::array();
       for (const auto& b : results.barriers_without_design)
         none.push_back({{"name", b.name}, {"line", b.line}, {"chainage_m", b.chainage},
-                        {"rules", b.rules}, {"crossings", b.crossings},
+                        {"rules", rules_json(b.rules_name, b.rules_title, b.rules_source, b.rules_file)},
+                        {"crossings", b.crossings},
                         {"failed_check", b.failed_check}, {"reason", b.reason}});
       j["barriers_without_design"] = none;
     }

@@ -21,11 +21,13 @@
 #include <vector>
 
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/input_files.hpp"
 
 namespace pierre::io {
 
 struct ReportTemplate {
   std::filesystem::path file;  // where it was read from
+  InputFile source;            // the same, with its SHA-256 and size, for summary.json's inputs
   // The dotted keys (or whole tables) the file left out, taken from the built-in layout.
   std::vector<std::string> built_in_keys;
   // The dotted keys the file holds that an earlier layout had and this one no longer uses:

@@ -100,9 +100,10 @@ struct RunInfo {
   std::uint64_t blocks = 0, sources = 0;
   unsigned threads = 0;  // worker threads used
   bool all_crossings = false;
+  bool impacts = false;  // impacts.csv written (--impacts)
   std::vector<std::string> overrides;  // LoadedScenario::overrides
   std::vector<InputNote> input_notes;  // LoadedScenario::notes: likely mistakes, not errors
-  std::vector<InputFile> inputs;       // LoadedScenario::inputs: every file read, with its hash
+  std::vector<InputFile> inputs;  // LoadedScenario::inputs and the report layout: every file read
 };
 
 // The design results of a run: every barrier computed, the quarry danger zones (a quarry
@@ -110,7 +111,9 @@ struct RunInfo {
 // A barrier whose line gave no design (too few crossings, no fit, no class): its FAIL line is
 // among the checks; summary.json also lists it, so that a reader of "barriers" misses none.
 struct BarrierWithoutDesign {
-  std::string name, line, rules;
+  std::string name, line;
+  // The rule set's record, as a designed barrier's (BarrierDesign::rules_*).
+  std::string rules_name, rules_title, rules_source, rules_file;
   double chainage = 0;          // m
   std::uint64_t crossings = 0;  // first crossings of the line
   std::string failed_check;     // "reach" or "design"
@@ -128,7 +131,7 @@ struct DesignResults {
 // summary.json's text (pretty-printed, NaN as null): pierre version, scenario, seed, throws,
 // trajectories, threads, stop-reason counts, per-line statistics (energies in kJ), runout;
 // with design results also "barriers" (the design values of each) and, when a barrier got
-// none, "barriers_without_design" (name, line, chainage, rules, crossings, reason), for a quarry scenario
+// none, "barriers_without_design" (name, line, chainage, rules as "barriers" give them, crossings, reason), for a quarry scenario
 // "quarries" (one entry per row of Tables 6.2/6.3 — a lone section or a pooled group — with
 // its statistics, governing distances and its sections' geometry and zones; distances in m and
 // /H, null where beyond the profile or undefined, with "beyond_profile" flags) and

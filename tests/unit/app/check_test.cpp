@@ -304,7 +304,12 @@ TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
   EXPECT_EQ(b["name"], "Design");
   EXPECT_EQ(b["line"], "Road");
   EXPECT_EQ(b["chainage_m"], 199.5);
-  EXPECT_EQ(b["rules"], "peila-ronco-2009");
+  // Its rule set recorded as a designed barrier's is (name, title, source, file read).
+  EXPECT_EQ(b["rules"]["name"], "peila-ronco-2009");
+  EXPECT_TRUE(fs::equivalent(b["rules"]["file"].get<std::string>(),
+                             PIERRE_SOURCE_DIR "/rules/peila-ronco-2009.toml"))
+      << b["rules"];
+  EXPECT_NE(b["rules"]["source"].get<std::string>().find("Peila"), std::string::npos) << b["rules"];
   EXPECT_EQ(b["crossings"].get<std::uint64_t>(), reached);
   EXPECT_EQ(b["failed_check"], "reach");
   EXPECT_NE(b["reason"].get<std::string>().find("fewer than two"), std::string::npos) << b["reason"];

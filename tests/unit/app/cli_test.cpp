@@ -148,6 +148,8 @@ TEST_F(Cli, OptionsOverrideTheScenario) {
   const std::string seed_note = "--seed 99 (the scenario file's simulation.seed: 12345)";
   const std::string throws_note = "--throws 3 (the scenario file's simulation.throws: 300)";
   EXPECT_EQ(j["command_line_overrides"], nlohmann::json::array({seed_note, throws_note}));
+  EXPECT_EQ(j["impacts_csv"], true);
+  EXPECT_EQ(j["all_crossings_in_csv"], true);
   const std::string imp = slurp(out / "impacts.csv");
   EXPECT_EQ(imp.rfind("trajectory,impact,time_s,x_m,z_m,segment,material,result,", 0), 0u);
   EXPECT_GT(count_lines(imp), 6u);
@@ -157,6 +159,7 @@ TEST_F(Cli, OptionsOverrideTheScenario) {
   EXPECT_FALSE(fs::exists(out / "impacts.csv"));
   EXPECT_EQ(nlohmann::json::parse(slurp(out / "summary.json"))["command_line_overrides"],
             nlohmann::json::array({throws_note}));
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "summary.json"))["impacts_csv"], false);
   PIERRE_NEED_PROGRAM("unzip");
   const std::string strings = pierre::test::zip_entry(out / "report.xlsx", "xl/sharedStrings.xml", dir_);
   EXPECT_NE(strings.find("Set on the command line"), std::string::npos);
@@ -486,10 +489,12 @@ TEST_F(Cli, SummaryNamesEveryInputWithItsHash) {
     return summary(out)["inputs"];
   };
   const auto before = inputs(dir_ / "o1");
-  ASSERT_EQ(before.size(), 3u) << before;  // the scenario, the materials, the profile
+  // The scenario, the materials, the profile, and the report layout that shaped report.xlsx.
+  ASSERT_EQ(before.size(), 4u) << before;
   EXPECT_EQ(before[0]["file"], scenario);
   EXPECT_EQ(before[2]["file"], (dir_ / "in" / "profile.csv").string());
   EXPECT_EQ(fs::path(before[1]["file"].get<std::string>()).filename(), "materials.toml");
+  EXPECT_EQ(fs::path(before[3]["file"].get<std::string>()).filename(), "report.toml");
   for (const auto& f : before) {
     const fs::path file = f["file"].get<std::string>();
     EXPECT_EQ(f["sha256"], sha256sum(file)) << file;
@@ -497,9 +502,10 @@ TEST_F(Cli, SummaryNamesEveryInputWithItsHash) {
   }
   std::ofstream(dir_ / "in" / "profile.csv", std::ios::app) << "# edited\n";
   const auto after = inputs(dir_ / "o2");
-  ASSERT_EQ(after.size(), 3u);
+  ASSERT_EQ(after.size(), 4u);
   EXPECT_EQ(after[0], before[0]);
   EXPECT_EQ(after[1], before[1]);
+  EXPECT_EQ(after[3], before[3]);
   EXPECT_NE(after[2]["sha256"], before[2]["sha256"]);
   EXPECT_EQ(after[2]["sha256"], sha256sum(dir_ / "in" / "profile.csv"));
 }
