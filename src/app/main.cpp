@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/io/output_folder.hpp"
+#include "pierre/io/version.hpp"
 
 #ifndef PIERRE_VERSION
 #define PIERRE_VERSION "unknown"
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
     CLI::App app{"pierre " PIERRE_VERSION
                  " — stochastic lumped-mass rockfall simulation (PIERRE 2) and protection design",
                  "pierre"};
-    app.set_version_flag("--version", "pierre " PIERRE_VERSION);
+    app.set_version_flag("--version", "pierre " + pierre::io::version_text());
     app.require_subcommand(1);
     app.footer(
         "Example:\n"

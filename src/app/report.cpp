@@ -9,6 +9,7 @@
 
 #include "pierre/io/input_error.hpp"
 #include "pierre/io/report_template.hpp"
+#include "pierre/io/version.hpp"
 #include "pierre/io/xlsx_report.hpp"
 #include "pierre/sim/trajectory.hpp"
 
@@ -76,7 +77,7 @@ io::ReportData report_data(const io::LoadedScenario& loaded,
                            const design::RunStatistics& statistics) {
   io::ReportData d;
   d.scenario = &loaded;
-  d.pierre_version = PIERRE_VERSION;
+  d.pierre_version = io::version_text();
   d.date = report_date();
   d.seed = loaded.scenario.settings.seed;
   d.throws = loaded.scenario.settings.throws;

@@ -12,10 +12,7 @@
 
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/result_writer.hpp"
-
-#ifndef PIERRE_VERSION
-#define PIERRE_VERSION "unknown"
-#endif
+#include "pierre/io/version.hpp"
 
 namespace pierre::io {
 
@@ -322,7 +319,8 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                 {"max", v.max * scale}};
   };
   json j;
-  j["pierre_version"] = PIERRE_VERSION;
+  j["pierre_version"] = version();
+  j["pierre_build"] = build_id();  // the commit built, for two builds of one version
   j["scenario"] = {{"name", info.scenario_name},
                    {"file", info.scenario_file.string()},
                    {"materials_file", info.materials_file.string()}};

@@ -395,10 +395,38 @@ TEST_F(Cli, HelpShowsExamplesAndExitsZero) {
   EXPECT_NE(run_help.out.find("--all-crossings"), std::string::npos);
 }
 
-TEST_F(Cli, VersionExitsZero) {
+// The output of a shell command, its last newline dropped; empty when it fails.
+std::string shell_output(const std::string& cmd) {
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[256];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    if (::pclose(p) != 0) return "";
+  }
+  if (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
+
+// --version names the version and the commit built; summary.json records the same build, so a
+// firm tells which build made a report when the version number stayed the same.
+TEST_F(Cli, VersionNamesTheBuildThatSummaryJsonRecords) {
   const Result r = pierre("--version");
   EXPECT_EQ(r.code, 0);
-  EXPECT_NE(r.out.find(PIERRE_VERSION), std::string::npos) << r.out;
+  const std::string prefix = std::string("pierre ") + PIERRE_VERSION + " (build ";
+  ASSERT_EQ(r.out.rfind(prefix, 0), 0u) << r.out;
+  const std::size_t close = r.out.find(")\n", prefix.size());
+  ASSERT_NE(close, std::string::npos) << r.out;
+  const std::string build = r.out.substr(prefix.size(), close - prefix.size());
+  ASSERT_EQ(pierre("run " + kScenario + " --quiet --throws 1 --out " + q(dir_ / "out")).code, 0);
+  EXPECT_EQ(summary(dir_ / "out")["pierre_build"], build);
+  // Built from a git checkout (as CI and the README's commands do), it names a commit of it.
+  const std::string git = "git -C '" + std::string(PIERRE_SOURCE_DIR) + "' ";
+  if (shell_output(git + "rev-parse --git-dir 2>/dev/null").empty())
+    GTEST_SKIP() << "the source is not a git checkout: the build is " << build;
+  const std::string commit = build.substr(0, build.find("-dirty"));
+  EXPECT_EQ(commit.size(), 12u) << build;
+  EXPECT_EQ(shell_output(git + "rev-parse --short=12 " + commit + "^{commit} 2>/dev/null"), commit)
+      << build << " is not a commit of " << PIERRE_SOURCE_DIR;
 }
 
 TEST_F(Cli, UsageErrorsExitTwo) {

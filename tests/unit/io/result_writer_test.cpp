@@ -15,6 +15,7 @@
 
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/result_writer.hpp"
+#include "pierre/io/version.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -228,6 +229,8 @@ TEST(SummaryJson, CarriesRunInfoAndStatistics) {
   info.document.checked_by = "B. Checker";
   const auto j = nlohmann::json::parse(io::summary_json(info, stats));
   EXPECT_EQ(j["pierre_version"], PIERRE_VERSION);
+  EXPECT_EQ(j["pierre_build"], std::string(io::build_id()));
+  EXPECT_FALSE(io::build_id().empty());
   EXPECT_EQ(j["scenario"]["name"], "w");
   // The document control given, and only that.
   EXPECT_EQ(j["scenario"]["reference"], "P-17");
