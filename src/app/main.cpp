@@ -100,6 +100,9 @@ int main(int argc, char** argv) {
       for (CLI::App* c : subs)
         if (c->parsed()) {
           std::vector<std::string> extra = c->remaining();
+          // Words after "--" are left with the program, not the command.
+          if (extra.empty()) extra = app.remaining();
+          std::erase(extra, std::string("--"));
           std::string words;
           for (const auto& w : extra) words += (words.empty() ? "" : " ") + w;
           const char* name = c->get_name().c_str();

@@ -448,6 +448,12 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_NE(pierre("validate " + kScenario + " foo").err.find(
                 "pierre validate: found foo, expected no more arguments"),
             std::string::npos);
+  // Words after "--" are named too (it said "found , expected ...").
+  const Result after_dashes = pierre("run " + kScenario + " --out " + q(dir_ / "x") + " -- foo");
+  EXPECT_EQ(after_dashes.code, 2);
+  EXPECT_NE(after_dashes.err.find("pierre run: found foo, expected no more arguments"),
+            std::string::npos)
+      << after_dashes.err;
   // A long option typed with one dash is refused by name: CLI11 would read "-out" as "-o ut"
   // and put the results in ./ut without a word.
   const Result one_dash = pierre("run " + kScenario + " -out --threads 1 --quiet");
