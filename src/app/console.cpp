@@ -142,10 +142,14 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
   fmt::print(out, "Stop reasons:");
   for (const auto& r : s.stop_reasons) fmt::print(out, "  {} {}", sim::to_string(r.reason), r.count);
   fmt::print(out, "\n");
-  // Blocks cut off by a limit or gone off the profile: what their stop points and runouts mean.
-  for (const auto& note : design::stop_reason_notes(s)) print_wrapped(out, "Note: ", note);
+  print_run_notes(out, s);
   fmt::print(out, "\nWritten:\n");
   for (const auto& f : files) fmt::print(out, "  {}\n", f.string());
+}
+
+void print_run_notes(std::FILE* out, const design::RunStatistics& s) {
+  // Blocks cut off by a limit or gone off the profile: what their stop points and runouts mean.
+  for (const auto& note : design::stop_reason_notes(s)) print_wrapped(out, "Note: ", note);
 }
 
 void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes) {

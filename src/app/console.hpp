@@ -69,6 +69,11 @@ class ProgressBar {
 // <field>: <text>".
 void print_input_notes(std::FILE* out, const std::vector<io::InputNote>& notes);
 
+// Notes on how the trajectories ended that bear on the results (blocks cut off by a limit or
+// gone off the profile, energy stops on steep ground or at the first impact). print_results
+// prints them; a quiet run sends them to stderr, as it does the input notes.
+void print_run_notes(std::FILE* out, const design::RunStatistics& stats);
+
 // A run's wall time to three significant digits: "42.3 ms" below a second, else "1.25 s".
 std::string duration_text(double seconds);
 

@@ -310,6 +310,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   bar.finish();
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});
+  if (o.quiet) print_run_notes(stderr, stats);
   print_to_stdout([&] {
     if (!o.quiet) print_results(stdout, stats, seconds, written, loaded.quarries.size());
     if (!o.quiet || o.check) {

@@ -190,6 +190,7 @@ class RunCommand final : public Command {
     bar.finish();
     if (interrupt.interrupted()) return report_interrupted(out_.c_str());
     const auto written = folder->commit({io::kImpactsCsv});
+    if (quiet_) print_run_notes(stderr, stats);
     print_to_stdout([&] {
       if (!quiet_) print_results(stdout, stats, seconds, written);
       if (!quiet_ || check_) print_design(stdout, design_results, !quiet_);

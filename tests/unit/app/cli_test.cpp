@@ -716,6 +716,12 @@ TEST_F(Cli, BlocksCutOffByTheImpactLimitAreReportedAndDrawn) {
       << one.out;
   EXPECT_NE(one.out.find("its stop point and runout are where it was cut off."), std::string::npos)
       << one.out;
+  // Quiet, the note goes to stderr, where a pipeline's log keeps it (it was dropped).
+  const Result quiet = pierre("run " + q(scenario) + " --throws 1 --quiet --out " + q(dir_ / "q"));
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+  EXPECT_EQ(quiet.err.rfind("Note: 1 trajectory was cut off by simulation.max_impacts", 0), 0u)
+      << quiet.err;
 }
 
 
