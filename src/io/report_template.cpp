@@ -51,7 +51,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "quarry_summary", "quarry_average", "quarry_geometry", "quarry_counts",
                  "quarry_zones", "quarry_statistics", "quarry_fits", "quarry_exceedance",
                  "quarry_governing", "stop_reasons", "quarry_profile", "quarry_inputs",
-                 "profile_lines", "profile_plain"};
+                 "profile_lines", "profile_plain", "basis"};
   s["labels"] = {"project",       "description", "reference", "revision", "prepared_by",
                  "checked_by", "revision_in_header", "scenario_file", "date",        "version",
                  "seed",          "throws",      "trajectories",  "rule_sets",   "runout_p50", "runout_p95", "runout_p99", "runout_max",
@@ -66,6 +66,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "travel_time_value", "runout_quarry_note", "failing", "candidate_passes",
                  "candidate_fails", "candidate_warns", "verify_note", "passing_height_note",
                  "translational_energy_note"};
+  s["basis"] = {"model", "not_modelled", "statistics", "barriers", "quarries"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",
                             "interception_height", "rules"};
@@ -388,7 +389,7 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
                "", filled);
   const TomlTable top(file, root, "", 0,
                       {"sheets", "rows", "page", "charts", "colours", "formats", "titles",
-                       "labels", "headings", "chart"});
+                       "basis", "labels", "headings", "chart"});
 
   ReportTemplate tpl;
   tpl.file = file;
@@ -477,7 +478,7 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
     reject_unknown(t, kColours);
     for (const auto& k : kColours) tpl.colours[k] = parse_colour(t, k);
   }
-  for (const char* plain : {"formats", "titles", "labels"}) {
+  for (const char* plain : {"formats", "titles", "labels", "basis"}) {
     const TomlTable t = required_table(top, plain);
     tpl.text[plain] = read_strings(t, sections.at(plain), "a string", plain, &tpl.retired_keys);
   }

@@ -37,6 +37,7 @@ void Report::summary(lxw_worksheet* ws) {
   r = summary_stops(ws, r);
   // Quarry danger zones: Tables 6.2/6.3's rows and their average.
   if (d_.quarry) r = quarry_summary(ws, r);
+  r = summary_basis(ws, r);
   summary_checks(ws, r);
 }
 
@@ -249,6 +250,28 @@ Row Report::summary_stops(lxw_worksheet* ws, Row r) {
   }
   for (const auto& n : design::stop_reason_notes(d_.statistics))
     paragraph(ws, r++, 0, kNoteLast, kNoteWidth, n, wrapped_note());
+  return r;
+}
+
+// What the numbers rest on: the model and what it leaves out, the statistics, and how the
+// barriers and quarry zones are set; a paragraph each, from the template's [basis].
+Row Report::summary_basis(lxw_worksheet* ws, Row r) {
+  const bool barriers = !d_.barriers.empty() || (d_.scenario && !d_.scenario->barriers.empty());
+  std::vector<std::string> paragraphs;
+  for (const char* key : {"model", "not_modelled", "statistics", "barriers", "quarries"}) {
+    if ((key == std::string_view("barriers") && !barriers) ||
+        (key == std::string_view("quarries") && !d_.quarry))
+      continue;
+    std::string p = t_.get("basis", key);
+    if (p.empty()) continue;  // a firm's layout that leaves it out
+    const std::uint64_t n = d_.total_trajectories ? d_.total_trajectories : d_.statistics.trajectories;
+    p = replace_all(replace_all(p, "{trajectories}", std::to_string(n)), "{seed}",
+                    std::to_string(d_.seed));
+    paragraphs.push_back(std::move(p));
+  }
+  if (paragraphs.empty()) return r;
+  r = table_title(ws, r, "basis");
+  for (const auto& p : paragraphs) paragraph(ws, r++, 0, kNoteLast, kNoteWidth, p, wrap());
   return r;
 }
 

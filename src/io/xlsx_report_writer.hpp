@@ -249,6 +249,7 @@ class Report {
   Row summary_barriers(lxw_worksheet* ws, Row r);
   Row summary_lines(lxw_worksheet* ws, Row r);
   Row summary_stops(lxw_worksheet* ws, Row r);
+  Row summary_basis(lxw_worksheet* ws, Row r);
   void summary_checks(lxw_worksheet* ws, Row r);
 
   // -- Inputs (xlsx_report_inputs.cpp)

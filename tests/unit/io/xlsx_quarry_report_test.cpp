@@ -296,6 +296,15 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
   ASSERT_EQ(r.status, 0) << r.output;
   for (const auto& s : kOrder) EXPECT_TRUE(sheets.count(s)) << "no sheet " << s << "\n" << r.output;
   ASSERT_TRUE(sheets.count("Quarry Face A") && sheets.count("Quarry East") && sheets.count("Summary"));
+  // The Summary's basis says how the quarry zones are set, and (no barriers) not how barriers are.
+  std::size_t quarry_basis = 0, barrier_basis = 0;
+  for (const auto& row : sheets["Summary"])
+    if (!row.empty()) {
+      quarry_basis += row[0].text.rfind("Quarry danger zones: the first-impact distance ID", 0) == 0;
+      barrier_basis += row[0].text.rfind("Barriers: each is designed", 0) == 0;
+    }
+  EXPECT_EQ(quarry_basis, 1u);
+  EXPECT_EQ(barrier_basis, 0u);
 
   ASSERT_EQ(q.rows.size(), 2u);
   ASSERT_EQ(q.rows[0].name, "Face A");

@@ -702,6 +702,47 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
                      "FAILS height.interception, elongation; WARN sample.size.");
 }
 
+// The Summary states what the numbers rest on: the model and what it leaves out, the run's own
+// trajectories and seed, how barriers are designed (a report with barriers only, as here: no
+// quarry paragraph); a firm's layout may leave a paragraph out.
+TEST(XlsxReport, TheSummaryStatesTheBasisOfTheResults) {
+  PIERRE_NEED_PROGRAM("soffice");
+  TempDir dir;
+  const auto f = make_fixture();
+  auto tpl = io::load_report_template(kTemplate);
+  auto basis_of = [&](const io::ReportTemplate& layout) {
+    const fs::path xlsx = dir.path() / "report.xlsx";
+    io::write_report(xlsx, f->data, layout);
+    const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
+    EXPECT_EQ(r.status, 0) << r.output;
+    std::vector<std::string> paragraphs;
+    bool in = false;
+    for (const auto& row : sheets.at("Summary")) {
+      const std::string first = row.empty() ? "" : row[0].text;
+      if (first == "Basis of the results") {
+        in = true;
+        continue;
+      }
+      if (in && first.empty()) break;  // the blank row before the next table
+      if (in) paragraphs.push_back(first);
+    }
+    return paragraphs;
+  };
+  const auto basis = basis_of(tpl);
+  ASSERT_EQ(basis.size(), 4u) << ::testing::PrintToString(basis);
+  EXPECT_EQ(basis[0].rfind("Model: PIERRE 2, the stochastic lumped-mass rockfall model", 0), 0u);
+  EXPECT_EQ(basis[1].rfind("Not modelled: motion out of the section's plane", 0), 0u);
+  EXPECT_EQ(basis[2].rfind("Statistics: every number is computed from the 600 simulated "
+                           "trajectories of seed 12345;", 0),
+            0u)
+      << basis[2];
+  EXPECT_EQ(basis[3].rfind("Barriers: each is designed as its rule set states", 0), 0u);
+  tpl.text["basis"]["barriers"] = "";
+  const auto without = basis_of(tpl);
+  ASSERT_EQ(without.size(), 3u);
+  EXPECT_EQ(without[2], basis[2]);
+}
+
 // A barrier's sheet says what the passing height is (the centre of a point mass: a reviewer could
 // not check h_i = h_d + f without it) and that E_d leaves out the rotation, with the rotational
 // energy at the line (the fixture's: mean 28 kJ, max 70 kJ).
