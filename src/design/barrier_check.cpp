@@ -331,7 +331,7 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   } else if (rv) {
     d.v_k.interval = interval(rv->values, conf, d.v_k.value, [](double v) { return v; });
     d.E_d_interval = interval(rv->values, conf, d.v_k.value,
-                              [gF, md](double v) { return 0.5 * md * (v * gF) * (v * gF) / 1000.0; });
+                              [gF, md](double v) { return design_energy_kJ(v, gF, md); });
     if (rv->weibull && rv->weibull->method == stats::WeibullBootstrapMethod::binned)
       d.notes.push_back(binned_note("v_k", *rv->weibull));
   }
@@ -340,7 +340,7 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
     d.h_i_interval = point_interval(d.h_i);
   } else if (rh) {
     d.h_k.interval = interval(rh->values, conf, d.h_k.value, [](double h) { return h; });
-    d.h_i_interval = interval(rh->values, conf, d.h_k.value, [gh, f](double h) { return h * gh + f; });
+    d.h_i_interval = interval(rh->values, conf, d.h_k.value, [gh, f](double h) { return interception_height(h, gh, f); });
     if (rh->weibull && rh->weibull->method == stats::WeibullBootstrapMethod::binned)
       d.notes.push_back(binned_note("h_k", *rh->weibull));
   }

@@ -8,6 +8,15 @@
 
 namespace pierre::design {
 
+double design_energy_kJ(double v_k, double gamma_F, double m_d) {
+  const double v_d = v_k * gamma_F;
+  return 0.5 * m_d * v_d * v_d / 1000.0;
+}
+
+double interception_height(double h_k, double gamma_h, double free_board) {
+  return h_k * gamma_h + free_board;
+}
+
 stats::Outcome<DesignValues> design_values(const BarrierRuleSet& rules,
                                            const EnergyClassTable& classes,
                                            const DesignInputs& in) {
@@ -27,14 +36,14 @@ stats::Outcome<DesignValues> design_values(const BarrierRuleSet& rules,
 
   d.v_d = in.v_k * d.gamma_F.value;
   d.m_d = in.density * in.volume * d.gamma_M.value;
-  d.E_d_kJ = 0.5 * d.m_d * d.v_d * d.v_d / 1000.0;
+  d.E_d_kJ = design_energy_kJ(in.v_k, d.gamma_F.value, d.m_d);
   d.MEL_req_kJ = d.gamma_E_MEL * d.E_d_kJ;
   d.SEL_req_kJ = d.gamma_E_SEL * d.E_d_kJ;
   d.energy_class = select_energy_class(classes, rules.design_on, d.MEL_req_kJ, d.SEL_req_kJ);
 
   d.h_d = in.h_k * d.gamma_h.value;
   d.free_board = std::max(rules.free_board_abs, rules.free_board_rel * in.free_board_diameter);
-  d.h_i = d.h_d + d.free_board;
+  d.h_i = interception_height(in.h_k, d.gamma_h.value, d.free_board);
   return Out::success(d);
 }
 

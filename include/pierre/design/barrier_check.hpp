@@ -148,6 +148,11 @@ struct DesignValues {
   std::optional<EnergyClass> energy_class;
   double free_board = 0, h_d = 0, h_i = 0;  // m
 };
+// Steps 5 and 6 from a characteristic value: E_d = ½ m_d (v_k γF)² in kJ, h_i = h_k γh + f. The
+// design values and every bootstrap replicate of v_k and h_k go through these, so that the
+// intervals bracket the values they are reported with.
+double design_energy_kJ(double v_k, double gamma_F, double m_d);
+double interception_height(double h_k, double gamma_h, double free_board);
 // Fails only when a factor cannot be resolved (a data-quality answer missing or unknown).
 stats::Outcome<DesignValues> design_values(const BarrierRuleSet& rules,
                                            const EnergyClassTable& classes,
