@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "pierre/design/number_text.hpp"
+#include "pierre/stats/bootstrap.hpp"
 #include "pierre/stats/bootstrap_weibull.hpp"
 #include "pierre/stats/percentile.hpp"
 
@@ -93,9 +94,7 @@ std::optional<stats::BootstrapInterval> interval(const std::vector<double>& repl
   ci.confidence = confidence;
   ci.resamples = r.size();
   ci.estimate = f(estimate);
-  const double c = 100.0 * confidence;  // 90 exactly for 0.9, so the ends are 5 and 95 exactly
-  const double ps[] = {0.5 * (100.0 - c), 0.5 * (100.0 + c)};
-  const auto q = stats::percentiles(r, ps);
+  const auto q = stats::percentiles(r, stats::percentile_interval_ends(confidence));
   ci.lower = q[0];
   ci.upper = q[1];
   return ci;

@@ -16,15 +16,6 @@
 namespace pierre::stats {
 namespace {
 
-constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 33;  // ResampleIndexStream's limit
-
-std::string check_sample(std::size_t n, std::size_t resamples) {
-  if (n == 0) return "bootstrap of an empty sample";
-  if (n > kMaxValues) return "bootstrap of more than 2^33 values";
-  if (resamples < 2) return "bootstrap needs at least 2 resamples";
-  return {};
-}
-
 // Efron's percentile interval from the replicates.
 Outcome<BootstrapInterval> interval(double estimate, std::vector<double> replicates,
                                     const BootstrapOptions& options) {
@@ -32,11 +23,11 @@ Outcome<BootstrapInterval> interval(double estimate, std::vector<double> replica
     if (std::isnan(r)) return Outcome<BootstrapInterval>::failure("bootstrap replicate is NaN");
   }
   std::sort(replicates.begin(), replicates.end());
-  const double tail = 100.0 * (1.0 - options.confidence) / 2.0;
+  const auto ends = percentile_interval_ends(options.confidence);
   BootstrapInterval b;
   b.estimate = estimate;
-  b.lower = percentile_of_sorted(replicates, tail);
-  b.upper = percentile_of_sorted(replicates, 100.0 - tail);
+  b.lower = percentile_of_sorted(replicates, ends[0]);
+  b.upper = percentile_of_sorted(replicates, ends[1]);
   b.confidence = options.confidence;
   b.resamples = replicates.size();
   return Outcome<BootstrapInterval>::success(b);
@@ -46,11 +37,23 @@ bool bad_confidence(double c) { return !(c > 0.0 && c < 1.0); }
 
 }  // namespace
 
+std::array<double, 2> percentile_interval_ends(double confidence) {
+  const double c = 100.0 * confidence;  // 90 exactly for 0.9, so the ends are 5 and 95 exactly
+  return {0.5 * (100.0 - c), 0.5 * (100.0 + c)};
+}
+
+std::string bootstrap_sample_problem(std::size_t n, std::size_t resamples) {
+  if (n == 0) return "bootstrap of an empty sample";
+  if (n > ResampleIndexStream::kMaxValues) return "bootstrap of more than 2^33 values";
+  if (resamples < 2) return "bootstrap needs at least 2 resamples";
+  return {};
+}
+
 Outcome<std::size_t> visit_resamples(std::span<const double> sample, std::uint64_t seed,
                                      std::size_t resamples, unsigned threads,
                                      const ResampleVisitor& visit) {
   const std::vector<double> v = without_nan(sample);
-  if (auto e = check_sample(v.size(), resamples); !e.empty()) {
+  if (auto e = bootstrap_sample_problem(v.size(), resamples); !e.empty()) {
     return Outcome<std::size_t>::failure(e);
   }
   const std::uint64_t n = v.size();
@@ -93,7 +96,7 @@ Outcome<std::vector<double>> bootstrap_percentile_replicates(std::span<const dou
                                                              double p, std::uint64_t seed,
                                                              std::size_t resamples) {
   std::vector<double> s = without_nan(sample);
-  if (auto e = check_sample(s.size(), resamples); !e.empty()) {
+  if (auto e = bootstrap_sample_problem(s.size(), resamples); !e.empty()) {
     return Outcome<std::vector<double>>::failure(e);
   }
   if (!(p >= 0.0 && p <= 100.0)) {
@@ -102,10 +105,10 @@ Outcome<std::vector<double>> bootstrap_percentile_replicates(std::span<const dou
   std::sort(s.begin(), s.end());
   const std::size_t n = s.size();
   const double nd = static_cast<double>(n);
-  // Type 7 position h = (n - 1) p / 100 (as percentile.cpp): ranks lo and lo + 1 (0-based).
-  const double h = static_cast<double>(n - 1) * p / 100.0;
-  const std::size_t lo = std::min(static_cast<std::size_t>(std::floor(h)), n - 1);
-  const double frac = h - static_cast<double>(lo);
+  // The type-7 ranks lo and lo + 1 (0-based).
+  std::size_t lo = 0;
+  double frac = 0;
+  type7_position(n, p, lo, frac);
   const bool two = frac > 0.0 && lo + 1 < n;
   const double a = static_cast<double>(lo + 1);  // 1-based rank j: U_(j) ~ Beta(j, n - j + 1)
   const double b = nd - a + 1.0;
@@ -116,8 +119,8 @@ Outcome<std::vector<double>> bootstrap_percentile_replicates(std::span<const dou
   std::vector<double> out(resamples);
   for (std::size_t r = 0; r < resamples; ++r) {
     const auto blk = ResampleIndexStream(seed, r).block(0, ResampleIndexStream::kReservedAttempt);
-    const double u1 = open_unit_interval((std::uint64_t{blk[0]} << 32) | blk[1]);
-    const double u2 = open_unit_interval((std::uint64_t{blk[2]} << 32) | blk[3]);
+    const double u1 = open_unit_interval(ResampleIndexStream::word(blk, 0));
+    const double u2 = open_unit_interval(ResampleIndexStream::word(blk, 1));
     const double uj = boost::math::ibeta_inv(a, b, u1, MathPolicy());
     const double x1 = s[index(uj)];
     if (!two) {
@@ -127,7 +130,7 @@ Outcome<std::vector<double>> bootstrap_percentile_replicates(std::span<const dou
     // The smallest of the n - j uniforms above U_(j): U_(j) + (1 - U_(j)) (1 - V^(1/(n-j))).
     const double uj1 = uj + (1.0 - uj) * -std::expm1(std::log(u2) / above);
     const double x2 = s[index(uj1)];
-    out[r] = (frac == 0.0 || x1 == x2) ? x1 : x1 + frac * (x2 - x1);
+    out[r] = type7_interpolate(x1, x2, frac);
   }
   return Outcome<std::vector<double>>::success(std::move(out));
 }

@@ -26,18 +26,10 @@ namespace {
 using Out = Outcome<WeibullQuantileReplicates>;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 33;  // ResampleIndexStream's limit
 // The Poisson counts' Philox blocks: attempts 2^31, 2^31 + 1, ... of pair = bin. The
 // within-bin indices (ResampleIndexStream::next) use attempts 0, 1, ...: never as high.
 constexpr std::uint32_t kCountAttempt = 0x80000000u;
 constexpr std::uint32_t kMaxCountTries = 1000;  // PTRS accepts with probability > 0.8 per try
-
-// a + f (b - a), exact when a == b or f == 0 (as percentile.cpp: an infinite neighbour must
-// not turn a finite answer into NaN).
-double interpolate(double a, double b, double f) {
-  if (f == 0.0 || a == b) return a;
-  return a + f * (b - a);
-}
 
 // ---- exact: Efron's bootstrap, as the design procedure always did for n <= exact_up_to ----
 
@@ -88,7 +80,7 @@ Bin make_bin(std::size_t start, std::size_t size) {
 std::int64_t poisson_count(const ResampleIndexStream& stream, std::uint32_t pair, const Bin& bin) {
   if (bin.mu < 10) {  // inversion: the smallest k with F(k) >= u
     const auto blk = stream.block(pair, kCountAttempt);
-    const double u = open_unit_interval((std::uint64_t{blk[0]} << 32) | blk[1]);
+    const double u = open_unit_interval(ResampleIndexStream::word(blk, 0));
     double prob = bin.exp_minus_mu, cdf = prob;
     std::int64_t k = 0;
     while (u > cdf && k < 1000) {  // (rounding can leave cdf a hair below 1)
@@ -100,8 +92,8 @@ std::int64_t poisson_count(const ResampleIndexStream& stream, std::uint32_t pair
   }
   for (std::uint32_t t = 0; t < kMaxCountTries; ++t) {
     const auto blk = stream.block(pair, kCountAttempt + t);
-    const double u = open_unit_interval((std::uint64_t{blk[0]} << 32) | blk[1]) - 0.5;
-    const double v = open_unit_interval((std::uint64_t{blk[2]} << 32) | blk[3]);
+    const double u = open_unit_interval(ResampleIndexStream::word(blk, 0)) - 0.5;
+    const double v = open_unit_interval(ResampleIndexStream::word(blk, 1));
     const double us = 0.5 - std::abs(u);  // > 0: u is never exactly ±0.5
     const auto k =
         static_cast<std::int64_t>(std::floor((2 * bin.a / us + bin.b) * u + bin.mu + 0.43));
@@ -268,9 +260,9 @@ Out binned_replicates(std::span<const double> sample, double p, std::uint64_t se
       }
       // Type-7 position in the resample of `total` values; the order statistics lo and lo + 1
       // from the bins holding them, the bin's count spread over its values by uniform indices.
-      const double h = static_cast<double>(total - 1) * p / 100.0;
-      const auto lo = std::min<std::uint64_t>(static_cast<std::uint64_t>(std::floor(h)), total - 1);
-      const double frac = h - static_cast<double>(lo);
+      std::size_t lo = 0;
+      double frac = 0;
+      type7_position(total, p, lo, frac);
       std::size_t bin = 0, drawn = bins.size();
       std::uint64_t before = 0;  // resample values in bins before `bin`
       const auto value_at = [&](std::uint64_t rank) {
@@ -288,7 +280,7 @@ Out binned_replicates(std::span<const double> sample, double p, std::uint64_t se
       };
       const double x1 = value_at(lo);
       out.empirical[r] =
-          (frac > 0 && lo + 1 < total) ? interpolate(x1, value_at(lo + 1), frac) : x1;
+          (frac > 0 && lo + 1 < total) ? type7_interpolate(x1, value_at(lo + 1), frac) : x1;
     }
   });
   return Out::success(std::move(out));
@@ -301,9 +293,7 @@ Outcome<WeibullQuantileReplicates> bootstrap_weibull_quantile_replicates(
     const WeibullBootstrapOptions& options) {
   const auto n = static_cast<std::size_t>(
       std::count_if(sample.begin(), sample.end(), [](double x) { return !std::isnan(x); }));
-  if (n == 0) return Out::failure("bootstrap of an empty sample");
-  if (n > kMaxValues) return Out::failure("bootstrap of more than 2^33 values");
-  if (options.resamples < 2) return Out::failure("bootstrap needs at least 2 resamples");
+  if (auto e = bootstrap_sample_problem(n, options.resamples); !e.empty()) return Out::failure(e);
   if (!(p >= 0.0 && p <= 100.0)) return Out::failure("bootstrap percentile must be in [0, 100]");
   const bool exact =
       options.method == WeibullBootstrapMethod::exact ||

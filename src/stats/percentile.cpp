@@ -11,8 +11,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Position h = (n - 1) p / 100 split into whole part and fraction; false for a bad p.
-bool position(std::size_t n, double p, std::size_t& lo, double& frac) {
+}  // namespace
+
+bool type7_position(std::size_t n, double p, std::size_t& lo, double& frac) {
   if (n == 0 || !(p >= 0.0 && p <= 100.0)) return false;
   const double h = static_cast<double>(n - 1) * p / 100.0;  // p/100 last: exact for whole h
   lo = std::min(static_cast<std::size_t>(std::floor(h)), n - 1);
@@ -20,34 +21,30 @@ bool position(std::size_t n, double p, std::size_t& lo, double& frac) {
   return true;
 }
 
-// a + f (b - a), but exact when a == b and when f == 0, so that an infinite neighbour does
-// not turn a finite answer into NaN (inf - inf, 0 · inf).
-double interpolate(double a, double b, double f) {
-  if (f == 0.0 || a == b) return a;
-  return a + f * (b - a);
+double type7_interpolate(double x_lo, double x_next, double frac) {
+  if (frac == 0.0 || x_lo == x_next) return x_lo;
+  return x_lo + frac * (x_next - x_lo);
 }
-
-}  // namespace
 
 double percentile_of_sorted(std::span<const double> sorted, double p) {
   std::size_t lo = 0;
   double frac = 0;
-  if (!position(sorted.size(), p, lo, frac)) return kNaN;
+  if (!type7_position(sorted.size(), p, lo, frac)) return kNaN;
   if (lo + 1 >= sorted.size()) return sorted[lo];
-  return interpolate(sorted[lo], sorted[lo + 1], frac);
+  return type7_interpolate(sorted[lo], sorted[lo + 1], frac);
 }
 
 double percentile(std::span<const double> sample, double p) {
   std::vector<double> v = without_nan(sample);
   std::size_t lo = 0;
   double frac = 0;
-  if (!position(v.size(), p, lo, frac)) return kNaN;
+  if (!type7_position(v.size(), p, lo, frac)) return kNaN;
   const auto nth = v.begin() + static_cast<std::ptrdiff_t>(lo);
   std::nth_element(v.begin(), nth, v.end());
   if (frac == 0.0 || lo + 1 >= v.size()) return *nth;
   // After nth_element everything past nth is >= it: the next order statistic is their minimum.
   const double next = *std::min_element(nth + 1, v.end());
-  return interpolate(*nth, next, frac);
+  return type7_interpolate(*nth, next, frac);
 }
 
 std::vector<double> percentiles(std::span<const double> sample, std::span<const double> ps) {
@@ -58,7 +55,7 @@ std::vector<double> percentiles(std::span<const double> sample, std::span<const 
   for (double p : ps) {
     std::size_t lo = 0;
     double frac = 0;
-    if (!position(v.size(), p, lo, frac)) continue;
+    if (!type7_position(v.size(), p, lo, frac)) continue;
     ranks.push_back(lo);
     if (lo + 1 < v.size()) ranks.push_back(lo + 1);
   }

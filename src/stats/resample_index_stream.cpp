@@ -14,10 +14,6 @@ void multiply_128(std::uint64_t a, std::uint64_t b, std::uint64_t& hi, std::uint
   lo = (mid << 32) | (p0 & 0xffffffffu);
 }
 
-std::uint64_t word(const r123::Philox4x32::ctr_type& b, int lane) {
-  return lane == 0 ? (std::uint64_t{b[0]} << 32) | b[1] : (std::uint64_t{b[2]} << 32) | b[3];
-}
-
 }  // namespace
 
 ResampleIndexStream::ResampleIndexStream(std::uint64_t seed, std::uint64_t resample)

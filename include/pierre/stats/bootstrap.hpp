@@ -23,10 +23,12 @@
 // replicate.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "pierre/stats/outcome.hpp"
@@ -46,6 +48,14 @@ struct BootstrapInterval {
   std::size_t resamples = 0;
   double half_width() const { return (upper - lower) / 2; }
 };
+
+// The percentiles (0..100) at the ends of Efron's percentile interval at `confidence`:
+// 100 (1 - c)/2 and 100 (1 + c)/2, exactly 5 and 95 for c = 0.9 (100 c is whole first).
+std::array<double, 2> percentile_interval_ends(double confidence);
+
+// What makes a sample unfit for a bootstrap (empty, more than 2^33 values, fewer than two
+// resamples), said as the bootstraps' failures say it; empty when it is fit.
+std::string bootstrap_sample_problem(std::size_t n, std::size_t resamples);
 
 // A statistic of a resample. It may reorder its argument (e.g. std::nth_element): the
 // buffer is refilled for each resample.

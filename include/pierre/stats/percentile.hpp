@@ -12,6 +12,7 @@
 // unsorted sample in O(n) (gsl_stats_quantile_from_sorted_data is type 7 but needs a sort).
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -28,5 +29,14 @@ std::vector<double> percentiles(std::span<const double> sample, std::span<const 
 
 // One percentile of a sample already sorted ascending (no NaN): O(1).
 double percentile_of_sorted(std::span<const double> sorted, double p);
+
+// The type-7 position h = (n - 1) p / 100 as its whole part `lo` (0-based rank) and fraction
+// `frac`; false when n = 0 or p is outside [0, 100]. Every type-7 percentile here, the
+// bootstraps' included, finds its ranks with this.
+bool type7_position(std::size_t n, double p, std::size_t& lo, double& frac);
+
+// x_lo + frac (x_lo+1 - x_lo), but exact when frac = 0 or the two are equal, so that an
+// infinite neighbour does not turn a finite answer into NaN (inf - inf, 0 · inf).
+double type7_interpolate(double x_lo, double x_next, double frac);
 
 }  // namespace pierre::stats

@@ -34,6 +34,12 @@ class ResampleIndexStream {
 
   // The 128 bits of block `pair` at `attempt` of this resample, for other uses of the stream.
   r123::Philox4x32::ctr_type block(std::uint32_t pair, std::uint32_t attempt) const;
+  // Word `lane` (0 or 1) of a block: (w0 << 32 | w1) or (w2 << 32 | w3).
+  static std::uint64_t word(const r123::Philox4x32::ctr_type& b, int lane) {
+    return lane == 0 ? (std::uint64_t{b[0]} << 32) | b[1] : (std::uint64_t{b[2]} << 32) | b[3];
+  }
+  // The most values a resample can draw from: the draw pair is 32 bits, two draws a block.
+  static constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 33;
 
  private:
   r123::Philox4x32::key_type key_;
