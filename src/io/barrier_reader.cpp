@@ -309,9 +309,8 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
                                : "the name of an observation line (" + quoted_list(line_names) + ")");
 
     // The rule set: a name in rules_dir, or a path relative to the scenario.
-    b.rules = t.string("rules").value_or("peila-ronco-2009");
-    const fs::path rules_file = names_a_path(b.rules) ? relative_to(top.file(), b.rules)
-                                                      : rules_dir / (b.rules + ".toml");
+    b.rules = t.string("rules").value_or(design::kDefaultBarrierRules);
+    const fs::path rules_file = scenario_rule_file(b.rules, top.file(), rules_dir);
     std::error_code ec;
     if (!fs::is_regular_file(rules_file, ec)) {
       const std::string folder = rules_folder.named(barrier_rule_sets_held(rules_dir));

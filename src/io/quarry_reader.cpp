@@ -10,6 +10,7 @@
 
 #include "bootstrap_fields.hpp"
 #include "csv_table.hpp"
+#include "pierre/io/rule_set_reader.hpp"
 #include "pierre/io/scenario_reader.hpp"
 #include "rule_kind.hpp"
 #include "section_readers.hpp"
@@ -26,11 +27,6 @@ using detail::parse_toml;
 using detail::read_text;
 using detail::relative_to;
 using detail::TomlTable;
-
-bool is_path(const std::string& s) {
-  return s.find('/') != std::string::npos ||
-         (s.size() > 5 && s.compare(s.size() - 5, 5, ".toml") == 0);
-}
 
 // ---- rule sets ----
 
@@ -301,16 +297,9 @@ void read_observed(const TomlTable& q, QuarrySection& out) {
 
 }  // namespace
 
-namespace {
-// A rule set named in rules_dir, or a path.
-fs::path quarry_rules_file(const std::string& name_or_path, const fs::path& rules_dir) {
-  return is_path(name_or_path) ? fs::path(name_or_path) : rules_dir / (name_or_path + ".toml");
-}
-}  // namespace
-
 design::QuarryRuleSet load_quarry_rules(const std::string& name_or_path,
                                         const std::filesystem::path& rules_dir) {
-  const fs::path file = quarry_rules_file(name_or_path, rules_dir);
+  const fs::path file = rule_file(name_or_path, rules_dir);
   return read_rules(file, file.stem().string());
 }
 
@@ -339,18 +328,16 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     q.check("name", !spec.name.empty(), "a non-empty name");
     q.check("name", names.insert(spec.name).second, "a name not used by another quarry section");
     spec.group = q.string("group").value_or("");
-    spec.rules = q.string("rules").value_or("quarry-thesis-2015");
+    spec.rules = q.string("rules").value_or(design::kDefaultQuarryRules);
     q.check("rules", !spec.rules.empty(), "a rule set name or path");
-    const std::string rules_arg =
-        is_path(spec.rules) ? relative_to(file, spec.rules).string() : spec.rules;
-    const fs::path rules_file = quarry_rules_file(rules_arg, rules_dir);
+    const fs::path rules_file = scenario_rule_file(spec.rules, file, rules_dir);
     if (const auto kind = detail::rule_file_kind(rules_file);
         detail::is_other_rule_kind(kind, detail::RuleFileKind::quarry))
       q.fail("rules", fmt::format("a quarry rule set (e.g. \"quarry-thesis-2015\", "
                                   "\"quarry-conservative\"; {} is {})",
                                   rules_file.string(), detail::describe(kind)));
     try {
-      s.rules = load_quarry_rules(rules_arg, rules_dir);
+      s.rules = load_quarry_rules(rules_file.string(), rules_dir);
     } catch (const InputError& e) {
       // An error inside the rule file is reported there; only a file that is not there (or
       // cannot be read) is said at the scenario's rules key.
@@ -359,7 +346,7 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
                                   "\"quarry-thesis-2015\", \"quarry-conservative\"; {}: {})",
                                   rules.named(), e.file().string(), e.found()));
     }
-    s.rules_file = is_path(rules_arg) ? fs::path(rules_arg) : rules_dir / (rules_arg + ".toml");
+    s.rules_file = rules_file;
 
     spec.geometry.crest_x = q.number("crest");
     spec.geometry.toe_x = q.number("toe");

@@ -14,6 +14,7 @@
 #include "bootstrap_fields.hpp"
 #include "rule_kind.hpp"
 #include "section_readers.hpp"
+#include "text_file.hpp"
 #include "toml_fields.hpp"
 
 namespace pierre::io {
@@ -131,6 +132,12 @@ bool names_a_path(const std::string& s) {
 
 fs::path rule_file(const std::string& name_or_path, const fs::path& rules_dir) {
   return names_a_path(name_or_path) ? fs::path(name_or_path) : rules_dir / (name_or_path + ".toml");
+}
+
+fs::path scenario_rule_file(const std::string& name_or_path, const fs::path& scenario_file,
+                            const fs::path& rules_dir) {
+  return names_a_path(name_or_path) ? detail::relative_to(scenario_file, name_or_path)
+                                    : rule_file(name_or_path, rules_dir);
 }
 
 design::BarrierRuleSet load_rule_set(const std::string& name_or_path, const fs::path& rules_dir) {

@@ -63,6 +63,9 @@ struct EnergyClassTable {
   std::optional<ResidualHeightCategories> residual_height;
 };
 
+// The rule set of a barrier that names none (rules/peila-ronco-2009.toml).
+inline constexpr const char* kDefaultBarrierRules = "peila-ronco-2009";
+
 struct BarrierRuleSet {
   std::string name;    // file stem, e.g. "thesis-2015"
   std::string title;   // human title

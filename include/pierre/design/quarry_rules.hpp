@@ -21,6 +21,9 @@ enum class QuarryGoverning {
                // fitted log-normal with its point mass of zeros (P = (1 − p0) S_logn)
 };
 
+// The rule set of a quarry section that names none (rules/quarry-thesis-2015.toml).
+inline constexpr const char* kDefaultQuarryRules = "quarry-thesis-2015";
+
 struct QuarryRuleSet {
   std::string name;    // file stem, e.g. "quarry-thesis-2015"
   std::string title;   // human title

@@ -39,7 +39,7 @@ struct WorkArea {
 struct QuarrySpec {
   std::string name;
   std::string group;  // sections with the same non-empty group are pooled into one row
-  std::string rules = "quarry-thesis-2015";
+  std::string rules = kDefaultQuarryRules;
   QuarryGeometryInput geometry;  // optional crest, toe, H (floor angle from the rule set)
   std::vector<WorkArea> work_areas;
   std::optional<double> bench_width;  // m, planned catch bench

@@ -18,6 +18,10 @@ namespace pierre::io {
 bool names_a_path(const std::string& name_or_path);
 std::filesystem::path rule_file(const std::string& name_or_path,
                                 const std::filesystem::path& rules_dir);
+// The same for a scenario's `rules` key: a path is relative to the scenario file.
+std::filesystem::path scenario_rule_file(const std::string& name_or_path,
+                                         const std::filesystem::path& scenario_file,
+                                         const std::filesystem::path& rules_dir);
 
 // Reads a barrier rule set ([rule_set] kind = "barrier"). Its name is [rule_set].name or the
 // file stem.
