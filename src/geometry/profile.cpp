@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <string>
 #include <utility>
 
 #include "profile_arc.hpp"
@@ -58,6 +60,12 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
     else if (i > 0 && vertices[i].x == vertices[i - 1].x && vertices[i].z == vertices[i - 1].z)
       found.push_back({i, "vertex repeats the previous one (a segment of zero length)", {}});
   }
+  // One material a segment: a shorter list left segments on material 0 without a word.
+  if (vertices.size() >= 2 && materials.size() != vertices.size() - 1)
+    found.push_back({std::min(materials.size(), vertices.size() - 1),
+                     "one material per segment expected (" + std::to_string(vertices.size() - 1) +
+                         " segments, " + std::to_string(materials.size()) + " materials)",
+                     {}});
   if (!found.empty()) {
     if (issues) *issues = std::move(found);
     return std::nullopt;
@@ -75,7 +83,7 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
     s.n = left_normal(s.d);
     s.x_lo = std::min(s.a.x, s.b.x);
     s.x_hi = std::max(s.a.x, s.b.x);
-    s.material = i < materials.size() ? materials[i] : 0;
+    s.material = materials[i];
     p.segments_.push_back(s);
   }
   p.x_min_ = p.z_min_ = kInf;
@@ -99,7 +107,7 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
       p.turns_[i] = VertexTurn::straight;
     else
       p.turns_[i] = angle > 0 ? VertexTurn::concave : VertexTurn::convex;
-    if (std::abs(angle) > M_PI - kStraightAngle)
+    if (std::abs(angle) > std::numbers::pi - kStraightAngle)
       found.push_back({i + 1, "the profile folds back on itself at this vertex", {}});
   }
 
@@ -164,6 +172,32 @@ std::optional<Profile> Profile::build(const std::vector<Vec2>& vertices,
     return std::nullopt;
   }
   return p;
+}
+
+std::optional<Profile> Profile::split_at(std::size_t segment, Vec2 point,
+                                         std::vector<ProfileIssue>* issues) const {
+  if (segment >= segments_.size()) {
+    if (issues) *issues = {{segments_.size(), "no segment " + std::to_string(segment), {}}};
+    return std::nullopt;
+  }
+  std::vector<Vec2> pts{segments_.front().a};
+  std::vector<int> mats;
+  for (std::size_t j = 0; j < segments_.size(); ++j) {
+    if (j == segment) {
+      pts.push_back(point);
+      mats.push_back(segments_[j].material);
+    }
+    pts.push_back(segments_[j].b);
+    mats.push_back(segments_[j].material);
+  }
+  auto cut = build(pts, mats, issues);
+  // Collinear pieces only: a point off the line would change the ground.
+  if (cut && cut->turn_after(segment) != VertexTurn::straight) {
+    if (issues)
+      *issues = {{segment + 1, "the point " + fmt_point(point) + " is not on the segment's line", {}}};
+    return std::nullopt;
+  }
+  return cut;
 }
 
 int Profile::build_node(int first, int last) {

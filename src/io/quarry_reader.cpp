@@ -407,21 +407,19 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
       // A toe given inside a segment: the floor is the profile past the toe (design-checks.md
       // §2), so the segment is cut there into two collinear pieces (the same physics,
       // model-2d.md §2) and the floor starts at the new vertex.
-      const auto& segs = sc.profile.segments();
-      std::vector<geometry::Vec2> pts{segs.front().a};
-      std::vector<int> mats;
-      for (std::size_t j = 0; j < segs.size(); ++j) {
-        if (static_cast<int>(j) == g->floor_segment) {
-          pts.push_back(g->toe);
-          mats.push_back(segs[j].material);
-        }
-        pts.push_back(segs[j].b);
-        mats.push_back(segs[j].material);
+      std::vector<geometry::ProfileIssue> issues;
+      auto cut = sc.profile.split_at(static_cast<std::size_t>(g->floor_segment), g->toe, &issues);
+      if (!cut) {  // a toe a hair from a vertex: the section cannot be cut there
+        const char* key = spec.geometry.toe_x ? "toe" : "profile";
+        const toml::node* n = q.find(key);
+        throw InputError(file, n ? line_of(*n) : q.line(), q.field(key),
+                         fmt::format("a toe at x = {:g} m that cuts segment {} of the section ({})",
+                                     g->toe.x, g->floor_segment,
+                                     issues.empty() ? "no reason given" : issues.front().what),
+                         "a toe on a vertex of the section or clear of its ends");
       }
-      if (auto cut = geometry::Profile::build(pts, mats, nullptr)) {
-        sc.profile = std::move(*cut);
-        g = design::quarry_geometry(sc.profile, spec.geometry);
-      }
+      sc.profile = std::move(*cut);
+      g = design::quarry_geometry(sc.profile, spec.geometry);
     }
     if (!g) {
       const char* key = spec.geometry.toe_x ? "toe" : spec.geometry.crest_x ? "crest" : "profile";

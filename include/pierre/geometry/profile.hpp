@@ -57,10 +57,17 @@ struct GroundPoint {
 class Profile {
  public:
   // Builds the profile; returns the issues instead when the polyline is unusable (fewer than
-  // two vertices, repeated vertex, self-intersection, non-finite coordinates).
+  // two vertices, repeated vertex, self-intersection, folding back on itself at a vertex,
+  // non-finite coordinates, not one material a segment).
   static std::optional<Profile> build(const std::vector<Vec2>& vertices,
                                       const std::vector<int>& materials,
                                       std::vector<ProfileIssue>* issues);
+
+  // The same profile with `point`, a point inside segment `segment`, as a vertex between two
+  // collinear pieces of it (the same physics: model-2d.md §2); the issues when that cannot be
+  // (the point off the segment's line, or so near an end that a piece has no length).
+  std::optional<Profile> split_at(std::size_t segment, Vec2 point,
+                                  std::vector<ProfileIssue>* issues) const;
 
   std::size_t segment_count() const { return segments_.size(); }
   const Segment& segment(std::size_t i) const { return segments_[i]; }

@@ -168,4 +168,38 @@ TEST(ProfileBuild, RejectsSelfIntersectionAndTooFewVertices) {
   ASSERT_FALSE(issues.empty());
   EXPECT_NE(issues[0].what.find("crosses itself"), std::string::npos);
   EXPECT_TRUE(Profile::build({{0, 0}, {10, -5}, {20, -5}}, {0, 0}, &issues));
+  // One material a segment: a short list left segments on material 0 without a word.
+  issues.clear();
+  EXPECT_FALSE(Profile::build({{0, 0}, {10, -5}, {20, -5}}, {1}, &issues));
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].vertex, 1u);
+  EXPECT_NE(issues[0].what.find("2 segments, 1 materials"), std::string::npos) << issues[0].what;
+}
+
+// A segment cut into two collinear pieces is the same ground (model-2d.md §2): the same heights
+// and the same contact for the same flight, the pieces keeping the segment's material.
+TEST(ProfileBuild, SplittingASegmentKeepsTheGround) {
+  const Profile p = make_profile({{0, 30}, {10, 10}, {40, 0}}, {3, 7});
+  std::vector<ProfileIssue> issues;
+  const Vec2 cut_at = {25, 5};  // on the second segment's line
+  const auto q = p.split_at(1, cut_at, &issues);
+  ASSERT_TRUE(q) << (issues.empty() ? "" : issues[0].what);
+  ASSERT_EQ(q->segment_count(), 3u);
+  EXPECT_EQ(q->segment(1).b.x, 25);
+  EXPECT_EQ(q->segment(1).material, 7);
+  EXPECT_EQ(q->segment(2).material, 7);
+  EXPECT_EQ(q->turn_after(1), VertexTurn::straight);
+  for (double x : {5.0, 12.0, 24.9, 25.0, 25.1, 39.0})
+    EXPECT_NEAR(q->top_ground(x)->z, p.top_ground(x)->z, 1e-12) << x;
+  // A block dropped from above x = 30 lands at the same point of the line either way.
+  const auto c0 = p.first_contact({30, 20}, {0, 0}, 9.81, 100, {});
+  const auto c1 = q->first_contact({30, 20}, {0, 0}, 9.81, 100, {});
+  ASSERT_TRUE(c0 && c1);
+  EXPECT_NEAR(c1->t, c0->t, 1e-12);
+  EXPECT_EQ(c1->segment, 2);
+  // A point off the segment's line, or a segment that is not there, is refused.
+  EXPECT_FALSE(p.split_at(1, {25, 6}, &issues));
+  ASSERT_FALSE(issues.empty());
+  EXPECT_NE(issues[0].what.find("not on the segment's line"), std::string::npos) << issues[0].what;
+  EXPECT_FALSE(p.split_at(2, cut_at, &issues));
 }
