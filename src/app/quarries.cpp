@@ -15,6 +15,7 @@
 #include "console.hpp"
 #include "report.hpp"
 #include "run_steps.hpp"
+#include "pierre/design/number_kind.hpp"
 #include "pierre/design/quarry_distances.hpp"
 #include "pierre/design/run_statistics.hpp"
 #include "pierre/io/output_folder.hpp"
@@ -49,16 +50,13 @@ class QuarrySink final : public sim::ResultSink {
   design::RunSamples& all_;
 };
 
-std::string metres(double v, int width, int precision = 1) {
-  if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
-  if (std::isinf(v)) return fmt::format("{:>{}}", v > 0 ? "beyond" : "-inf", width);
-  return fmt::format("{:>{}.{}f}", v, width, precision);
-}
+// A distance in m or in /H, as the quarry sheets and the zone check lines round it (0.01).
+std::string metres(double v) { return design::number_cell(v, design::NumberKind::length); }
 
 // "calc / obs" (or "calc" alone when nothing was observed).
-std::string pair(double calc, const std::optional<double>& obs, int precision) {
-  std::string s = metres(calc, 0, precision);
-  if (obs) s += " / " + metres(*obs, 0, precision);
+std::string pair(double calc, const std::optional<double>& obs) {
+  std::string s = metres(calc);
+  if (obs) s += " / " + metres(*obs);
   return s;
 }
 
@@ -113,7 +111,6 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
     bool first = true;
     for (const Line& l : lines) {
       using OC = design::ObservedComparison;
-      const int p = l.per_h ? 2 : 1;
       const double p50 = l.per_h ? l.s->p50_h : l.s->p50, p95 = l.per_h ? l.s->p95_h : l.s->p95,
                    p99 = l.per_h ? l.s->p99_h : l.s->p99, mx = l.per_h ? l.s->max_h : l.s->max;
       const auto o50 = observed_value(*l.obs, l.per_h ? &OC::p50_h : &OC::p50);
@@ -122,7 +119,7 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
       std::string gov;
       if (l.gov)
         gov = fmt::format("{}_gov {}{} ({})", l.s == &r.rd ? "RD" : "ID",
-                          metres(l.gov->value_h * H, 0, 2),  // as the check lines' m
+                          metres(l.gov->value_h * H),  // as the check lines' m
                           std::isfinite(l.gov->value_h)  ? " m"
                           : std::isinf(l.gov->value_h) ? " the profile"
                                                         : "",  // "-": no values
@@ -134,8 +131,8 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
       else
         fmt::print(out, "{:<{}} {:>6} {:>6}  ", "", wq, "", "");
       first = false;
-      fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", l.label, pair(p50, o50, p),
-                 pair(p95, o95, p), metres(p99, 0, p), pair(mx, omx, p), gov);
+      fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", l.label, pair(p50, o50),
+                 pair(p95, o95), metres(p99), pair(mx, omx), gov);
     }
     // A group's sections, each on its own (docs/quarry.md: per section and pooled).
     if (r.sections.size() > 1)
@@ -145,13 +142,13 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
           fmt::print(out, "{:<{}} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n",
                      st == &sec.rd ? "  " + sec.spec.name : "", wq, st->count,
                      st == &sec.rd ? fmt::format("{:.1f}", sec.geometry.height) : "",
-                     st == &sec.rd ? "RD m" : "ID m", metres(st->p50, 0), metres(st->p95, 0),
-                     metres(st->p99, 0), metres(st->max, 0));
+                     st == &sec.rd ? "RD m" : "ID m", metres(st->p50), metres(st->p95),
+                     metres(st->p99), metres(st->max));
       }
   }
   const design::QuarryAverage& a = d.average;
   auto avg = [&](double calc, double obs) {
-    return a.observed_rows ? pair(calc, obs, 2) : metres(calc, 0, 2);
+    return a.observed_rows ? pair(calc, obs) : metres(calc);
   };
   // n is left blank: the average is a mean of the rows' ratios, not a sample of its own.
   fmt::print(out, "{:<{}} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n", "Average /H", wq, "",
@@ -174,7 +171,7 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
     // first impact when none reached the floor).
     auto zone = [](double v) {
       if (std::isnan(v)) return std::string("none (no values)");
-      return fmt::format("[0, {}]{}", metres(v, 0), std::isfinite(v) ? " m" : "");
+      return fmt::format("[0, {}]{}", metres(v), std::isfinite(v) ? " m" : "");
     };
     fmt::print(out,
                "{}: crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); from the "

@@ -289,8 +289,9 @@ void bench_checks(QuarrySectionResult& sr, const QuarryRow& row, const QuarryRul
     l.reason = "no runout sample";
   } else {
     l.status = at_least(*sr.bench_retention, rules.retention_target) ? CheckStatus::pass : CheckStatus::fail;
-    l.reason = num(l.value, 3) + " % of " + std::to_string(row.thrown) + " blocks retained " +
-               (l.status == CheckStatus::pass ? ">= " : "< ") + num(l.limit, 3) + " %";
+    const auto [value, limit] = compared_texts(l.value, l.limit, "%");
+    l.reason = value + " of " + std::to_string(row.thrown) + " blocks retained " +
+               (l.status == CheckStatus::pass ? ">= " : "< ") + limit;
   }
   checks.push_back(std::move(l));
 
@@ -302,8 +303,9 @@ void bench_checks(QuarrySectionResult& sr, const QuarryRow& row, const QuarryRul
   k.limit = *sr.ritchie_width;
   k.unit = "m";
   k.status = at_least(w, k.limit) ? CheckStatus::pass : CheckStatus::warn;
-  k.reason = "bench " + num(w) + " m " + (at_least(w, k.limit) ? ">= " : "< ") + num(k.limit) +
-             " m (H = " + num(H) + " m)";
+  const auto [bench, ritchie] = compared_texts(w, k.limit, "m");
+  k.reason = "bench " + bench + (at_least(w, k.limit) ? " >= " : " < ") + ritchie + " (H = " +
+             quantity_text(H, "m") + ")";
   checks.push_back(std::move(k));
 }
 
@@ -460,11 +462,12 @@ CheckLine sample_size_line(const QuarryRow& row, const QuarryRuleSet& rules) {
       warn = true;
       const SampleNeeded needed =
           sample_needed(static_cast<double>(row.thrown), row.throws, rel, rules.sample_tolerance);
-      why = "RD_gov known to ±" + num(l.value, 3) + " % > " + num(l.limit, 3) + " %: about " +
+      const auto [value, limit] = compared_texts(l.value, l.limit, "%");
+      why = "RD_gov known to ±" + value + " > " + limit + ": about " +
             number_text(needed.trajectories, 9) + " trajectories would be needed (" +
             std::to_string(row.thrown) + " run)" + throws_needed_text(needed);
     } else {
-      why = "RD_gov known to ±" + num(l.value, 3) + " %";
+      why = "RD_gov known to ±" + quantity_text(l.value, "%");
     }
   } else {
     why = std::isinf(row.rd_gov.value_h) ? "RD_gov is beyond the profile: no interval"

@@ -1,5 +1,6 @@
 #include "pierre/design/run_statistics.hpp"
 
+#include "pierre/design/number_text.hpp"
 #include "pierre/stats/percentile.hpp"
 
 #include <algorithm>
@@ -148,8 +149,7 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
     // Not an error: the model (Eq 3.13) stops a block whose energy head after an impact is below
     // c_stop·R whatever the slope. On a talus near its angle of repose blocks do stop; on a rock
     // face they would not, and the runouts and reach counts then fall short.
-    char steepest[32];
-    std::snprintf(steepest, sizeof steepest, "%.1f", s.steepest_energy_stop_deg);
+    const std::string steepest = fixed_text(s.steepest_energy_stop_deg, 1);
     const bool one = k == 1;
     notes.push_back(std::to_string(k) + (one ? " block was" : " blocks were") +
                     " stopped by the energy criterion (Eq 3.13) on ground steeper than its "
@@ -164,9 +164,8 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
     // A block dropped from a few decimetres onto steep ground strikes it too slowly for the
     // rebound to keep it going: the energy criterion stops it where it landed, and a line
     // downslope counts it as not reached. Often a source placed a little above the ground.
-    char share[32];
-    std::snprintf(share, sizeof share, "%.1f", 100.0 * static_cast<double>(k) /
-                                                   static_cast<double>(s.trajectories));
+    const std::string share =
+        fixed_text(100.0 * static_cast<double>(k) / static_cast<double>(s.trajectories), 1);
     notes.push_back(std::to_string(k) + " of " + std::to_string(s.trajectories) +
                     " blocks (" + share + " %) came to rest at their first impact, stopped by the "
                     "energy criterion (Eq 3.13): they struck the ground too slowly to go on. A "

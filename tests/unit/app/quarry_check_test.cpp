@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <cstdio>
 #include <sys/wait.h>
@@ -21,8 +22,8 @@
 #include <string>
 #include <regex>
 #include <vector>
-#include <cmath>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_fixture.hpp"
@@ -78,6 +79,19 @@ TEST_F(QuarryCli, WorkAreasOutsideTheZonesExitZero) {
                              PIERRE_SOURCE_DIR "/rules/quarry-thesis-2015.toml"))
       << north["rules"];
   EXPECT_EQ(north["thrown"], 600);  // 2 blocks x 300 throws
+  // The table rounds a distance as the sheets and the check lines do (0.01 m): North's RD row
+  // holds its P50, P95 and P99 from summary.json to two decimals (it printed one).
+  {
+    const std::size_t row = r.out.find("\nNorth ");
+    ASSERT_NE(row, std::string::npos) << r.out;
+    const std::string line = r.out.substr(row + 1, r.out.find('\n', row + 1) - row - 1);
+    for (const char* p : {"p50_m", "p95_m", "p99_m"}) {
+      const double v = north["runout"][p].get<double>();
+      ASSERT_TRUE(std::isfinite(v)) << p;
+      EXPECT_NE(line.find(" " + fmt::format("{:.2f}", v) + " "), std::string::npos)
+          << p << " " << v << "\n" << line;
+    }
+  }
   EXPECT_EQ(north["runout"]["count"], 600);
   EXPECT_DOUBLE_EQ(north["height_m"].get<double>(), 20.0);
   const double rd95 = north["runout"]["p95_m"].get<double>();
@@ -235,7 +249,7 @@ TEST_F(QuarryCli, NoFirstImpactIsSaidAsNone) {
   const auto j = summary(dir_ / "out");
   ASSERT_EQ(j["quarries"][1]["name"], "South");
   ASSERT_EQ(j["quarries"][1]["first_impact"]["count"], 0) << "the test needs no first impact";
-  EXPECT_NE(r.out.find("from the toe, danger zone [0, 0.0] m, first-impact zone none (no values)"),
+  EXPECT_NE(r.out.find("from the toe, danger zone [0, 0.00] m, first-impact zone none (no values)"),
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ID_gov - (P95: no values)"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("- the profile"), std::string::npos) << r.out;

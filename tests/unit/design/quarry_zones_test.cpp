@@ -316,6 +316,9 @@ TEST(QuarryZones, BenchRetentionAndRitchie) {
   EXPECT_EQ(k2->status, CheckStatus::warn);
   EXPECT_DOUBLE_EQ(k2->limit, 8.5);
   EXPECT_DOUBLE_EQ(*d.sections[1].ritchie_width, 8.5);
+  // The reasons give value and limit in the decimals of their cells (as the barrier lines do).
+  EXPECT_EQ(r2->reason, "8.00 % of 100 blocks retained < 90.00 %");
+  EXPECT_EQ(k2->reason, "bench 8.00 m < 8.50 m (H = 20.00 m)");
   // Exactly at the Ritchie width on paper: 0.2 × 14 + 4.5 is 7.300000000000001 m in binary.
   auto edge = section("Edge", one_to(100));
   edge.geometry.height = 14;
