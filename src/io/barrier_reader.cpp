@@ -24,7 +24,7 @@ using detail::quoted_list;
 using detail::read_text;
 using detail::relative_to;
 using detail::TomlTable;
-using model::ModelDefaults;
+using model::InputLimits;
 
 // The design block's density, where it is given, said when it is not a rock's: the unit slip
 // the blocks' densities are checked for (section_readers.cpp).
@@ -71,7 +71,7 @@ design::DesignBlock read_design_block(const TomlTable& t, std::vector<InputNote>
   d->check("density", b.density > 0, "a density > 0 (kg/m³)");
   // The blocks' own limit and unit slip (section_readers.cpp), for the block designed on.
   const double mass = b.volume * b.density;
-  d->check("volume", mass <= ModelDefaults::max_block_mass,
+  d->check("volume", mass <= InputLimits::max_block_mass,
            detail::block_mass_limit("a design block", b.volume, b.density, mass, true));
   note_density(*d, b.density, notes);
   return b;

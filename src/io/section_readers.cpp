@@ -20,6 +20,7 @@
 namespace pierre::io::detail {
 
 namespace fs = std::filesystem;
+using model::InputLimits;
 using model::ModelDefaults;
 
 namespace {
@@ -253,13 +254,13 @@ struct ShapeRange {
 };
 
 bool shape_ok(double lo, double hi) {
-  return ModelDefaults::shape_factor_lower_bound <= lo && lo <= hi &&
-         hi <= ModelDefaults::shape_factor_upper_bound;
+  return InputLimits::shape_factor_lower_bound <= lo && lo <= hi &&
+         hi <= InputLimits::shape_factor_upper_bound;
 }
 
 std::string shape_expected() {
   return fmt::format("[f_min, f_max] with {} <= f_min <= f_max <= {}",
-                     ModelDefaults::shape_factor_lower_bound, ModelDefaults::shape_factor_upper_bound);
+                     InputLimits::shape_factor_lower_bound, InputLimits::shape_factor_upper_bound);
 }
 
 std::optional<ShapeRange> read_shape(const TomlTable& t) {
@@ -339,7 +340,7 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
         throw InputError(file, r.line, "volume", r.cells[*c_vol], "a volume > 0 (m³)");
       g.mass = g.volume * g.density;
     }
-    if (!(g.mass <= ModelDefaults::max_block_mass))
+    if (!(g.mass <= InputLimits::max_block_mass))
       throw InputError(file, r.line, has_mass ? "mass" : "volume",
                        r.cells[has_mass ? *c_mass : *c_vol],
                        block_mass_limit("a block", g.volume, g.density, g.mass, !has_mass));
@@ -349,8 +350,8 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
       throw InputError(file, r.line, c_smin ? "shape_min" : "shape_max",
                        fmt::format("shape_min {}, shape_max {}", g.shape_min, g.shape_max),
                        fmt::format("{} <= shape_min <= shape_max <= {}",
-                                   ModelDefaults::shape_factor_lower_bound,
-                                   ModelDefaults::shape_factor_upper_bound));
+                                   InputLimits::shape_factor_lower_bound,
+                                   InputLimits::shape_factor_upper_bound));
     if (present(r, c_count)) {
       const std::string& s = r.cells[*c_count];
       std::int64_t n = 0;
@@ -444,7 +445,7 @@ std::string block_mass_limit(std::string_view what, double volume, double densit
                              bool by_volume) {
   return fmt::format("{} of at most {:g} kg ({}larger is a rock avalanche, beyond a "
                      "lumped-mass model)",
-                     what, ModelDefaults::max_block_mass,
+                     what, InputLimits::max_block_mass,
                      by_volume ? fmt::format("here {:g} m³ × density {:g} kg/m³ = {:g} kg; ", volume,
                                              density, mass)
                                : std::string());
@@ -484,7 +485,7 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
         g.volume = *volume;
         g.mass = g.volume * g.density;
       }
-      t.check(mass ? "mass" : "volume", g.mass <= ModelDefaults::max_block_mass,
+      t.check(mass ? "mass" : "volume", g.mass <= InputLimits::max_block_mass,
               block_mass_limit("a block", g.volume, g.density, g.mass, !mass));
       const ShapeRange s = read_shape(t).value_or(shape);
       g.shape_min = s.min;
@@ -595,11 +596,11 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
     s.velocity.z = t.number("vz", 0.0);
     s.omega = t.number("omega", 0.0);
     const std::string speed = fmt::format("a speed from −{0:g} to {0:g} m/s",
-                                          ModelDefaults::max_source_speed);
-    t.check("vx", std::abs(s.velocity.x) <= ModelDefaults::max_source_speed, speed);
-    t.check("vz", std::abs(s.velocity.z) <= ModelDefaults::max_source_speed, speed);
-    t.check("omega", std::abs(s.omega) <= ModelDefaults::max_source_spin,
-            fmt::format("a spin from −{0:g} to {0:g} rad/s", ModelDefaults::max_source_spin));
+                                          InputLimits::max_source_speed);
+    t.check("vx", std::abs(s.velocity.x) <= InputLimits::max_source_speed, speed);
+    t.check("vz", std::abs(s.velocity.z) <= InputLimits::max_source_speed, speed);
+    t.check("omega", std::abs(s.omega) <= InputLimits::max_source_spin,
+            fmt::format("a spin from −{0:g} to {0:g} rad/s", InputLimits::max_source_spin));
     // Far from the ground, in the air above it or inside the rock under it (placed on the ground
     // over it, thesis §3.2.2): more than the whole section's height is the other kind of
     // elevation; a few metres inside is a release point given roughly.

@@ -8,6 +8,9 @@
 namespace pierre::model {
 namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
+// v⁺·n at or below this (m/s) after an impact: the block slides (model-2d.md §3 step 7). A
+// numerical tolerance of the law, not a scenario setting.
+constexpr double kReboundSlidingThreshold = 1e-6;
 }
 
 ImpactLaw::ImpactLaw(const RoughnessModel& roughness, double stop_head_factor, double gravity)
@@ -127,7 +130,7 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   Vec2 v_out = vt_out * t_r + vn_out * n_r;
   const double vn_true_out = dot(v_out, n);
   out.result = ImpactResult::rebound;
-  if (vn_true_out <= ModelDefaults::rebound_sliding_threshold) {
+  if (vn_true_out <= kReboundSlidingThreshold) {
     v_out = v_out - vn_true_out * n;
     out.result = ImpactResult::sliding;
   }

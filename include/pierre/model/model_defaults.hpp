@@ -1,5 +1,6 @@
-// Model defaults: the one place they live (model-2d.md §1, "default" column). Every value can
-// be overridden in a scenario; the io layer starts from these.
+// Model defaults: the one place they live (model-2d.md §1, "default" column); every one can be
+// overridden in a scenario, and the io layer starts from these. Beside them, the limits an
+// input is validated against (InputLimits), which a scenario cannot change.
 #pragma once
 
 namespace pierre::model {
@@ -12,8 +13,6 @@ struct ModelDefaults {
   static constexpr double friction_angle_deg = 30.0;      // φ (§3.4.2 defines it, no value: model-2d.md §1)
   static constexpr double shape_factor_min = 1.0;         // f range [1, 1]: shape factor off
   static constexpr double shape_factor_max = 1.0;
-  static constexpr double shape_factor_lower_bound = 0.7;  // validated range (model-2d.md §3)
-  static constexpr double shape_factor_upper_bound = 2.0;
   static constexpr bool truncated_normal_roughness = true;  // Eq 3.5 (else uniform, Eq 3.4)
   static constexpr bool size_reduction = true;            // Eq 6.6 on
   static constexpr double roughness_mean = 0.5;           // μ of Eq 3.5 (§4.4.1)
@@ -25,13 +24,17 @@ struct ModelDefaults {
   static constexpr double max_sliding_speed = 5.0;        // m/s (§3.2.2)
   static constexpr double max_time = 600.0;               // s of simulated time
   static constexpr long max_impacts = 100000;             // impacts (and vertex events)
-  // Input limits, far beyond any rockfall, that keep every energy a finite double (a mass of
-  // 1e300 kg or a speed of 1e200 m/s gave inf in the CSV files): a block of 10⁸ kg (about
-  // 40 000 m³) is a rock avalanche, beyond a lumped-mass model.
+};
+
+struct InputLimits {
+  static constexpr double shape_factor_lower_bound = 0.7;  // validated range (model-2d.md §3)
+  static constexpr double shape_factor_upper_bound = 2.0;
+  // Far beyond any rockfall, these keep every energy a finite double (a mass of 1e300 kg or a
+  // speed of 1e200 m/s gave inf in the CSV files): a block of 10⁸ kg (about 40 000 m³) is a
+  // rock avalanche, beyond a lumped-mass model.
   static constexpr double max_block_mass = 1e8;    // kg
   static constexpr double max_source_speed = 1e3;  // m/s, each of vx and vz
   static constexpr double max_source_spin = 1e4;   // rad/s
-  static constexpr double rebound_sliding_threshold = 1e-6;  // m/s: v⁺·n at or below → slide (model-2d.md §3 step 7; a numerical tolerance, not a scenario setting)
 };
 
 }  // namespace pierre::model
