@@ -42,7 +42,7 @@ std::vector<PointAt> points_at(const geometry::Profile& profile, double x) {
 }  // namespace
 
 double inclination_deg(Vec2 a, Vec2 b, int dir) {
-  return std::atan2(std::abs(b.z - a.z), (b.x - a.x) * dir) * 180.0 / std::numbers::pi;
+  return geometry::degrees(std::atan2(std::abs(b.z - a.z), (b.x - a.x) * dir));
 }
 
 std::string_view to_string(GeometryOrigin o) {

@@ -107,7 +107,7 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   for (std::size_t k = 0; k < kStopReasonCount; ++k)
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();
-  s.steepest_energy_stop_deg = std::atan(samples.steepest_energy_stop_tan()) * 180.0 / std::numbers::pi;
+  s.steepest_energy_stop_deg = geometry::degrees(std::atan(samples.steepest_energy_stop_tan()));
   s.energy_stops_at_first_impact = samples.first_impact_stops();
   return s;
 }

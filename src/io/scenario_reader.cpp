@@ -135,7 +135,7 @@ constexpr double kRoughnessScaleHigh = 2.0;
 void note_roughness(const TomlTable& t, double scale, std::vector<InputNote>& notes) {
   if (scale <= kRoughnessScaleHigh) return;
   constexpr double kTypicalX = 0.5;
-  const double typical_deg = std::atan(kTypicalX * scale) * 180.0 / std::numbers::pi;
+  const double typical_deg = geometry::degrees(std::atan(kTypicalX * scale));
   notes.push_back({t.file(), line_of(*t.find("roughness")), t.field("roughness"),
                    fmt::format("roughness {:g} is a tangent scale, not an angle or a percentage: "
                                "tan θ = roughness · X, and with X about 0.5 the typical "
@@ -152,7 +152,7 @@ void note_friction_angle(const TomlTable& t, double deg, std::vector<InputNote>&
                    fmt::format("friction angle {:g}° is in degrees (the calibrated sets use 30°): "
                                "if it is in radians, it is {:.1f}°; as typed, blocks slide almost "
                                "without friction",
-                               deg, deg * 180.0 / std::numbers::pi)});
+                               deg, geometry::degrees(deg))});
 }
 
 std::vector<model::Material> read_materials(const TomlTable& top, Presets& presets,

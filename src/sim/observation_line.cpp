@@ -102,7 +102,10 @@ void ObservationTally::slide(geometry::Vec2 p0, geometry::Vec2 d, double w0, dou
     // Solve w0 τ + a τ²/2 = (xc − x0)/d.x for the first τ in (0, tau]: the motion is monotone
     // between sliding events.
     const double target = (xc - p0.x) / d.x;
-    // Stable form of the root nearest zero; the motion's sign is the target's.
+    // Stable form of the root nearest zero; the motion's sign is the target's. (The integrator
+    // solves the same equation for the segment's end, trajectory.cpp, where a negative
+    // discriminant means the end is not reached; here the crossing is known to lie within the
+    // slide, so rounding below zero is clamped.)
     const double disc = std::max(0.0, w0 * w0 + 2.0 * acc * target);
     const double denom = w0 + std::copysign(std::sqrt(disc), target);
     double t = denom != 0.0 ? 2.0 * target / denom : tau;

@@ -300,7 +300,8 @@ class Integrator {
     double tau = set_.max_time - t_;
     const double target = dir > 0 ? s.length - along_ : -along_;  // signed distance to the end
     {
-      // Solve w τ + acc τ²/2 = target for the first τ ≥ 0 (stable form).
+      // Solve w τ + acc τ²/2 = target for the first τ ≥ 0 (stable form; the observation lines
+      // solve it for a crossing, observation_line.cpp, where the root is known to exist).
       const double disc = w_ * w_ + 2.0 * acc * target;
       if (disc >= 0.0) {
         const double denom = w_ + std::copysign(std::sqrt(disc), target);
