@@ -70,22 +70,6 @@ std::optional<double> observed_value(const std::optional<design::ObservedCompari
 
 }  // namespace
 
-void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
-                            std::optional<std::uint32_t> throws) {
-  if (seed) loaded.scenario.settings.seed = *seed;
-  if (throws) loaded.scenario.settings.throws = *throws;
-  for (std::size_t i = 0; i < loaded.quarries.size(); ++i) {
-    sim::SimulationSettings& s = loaded.quarries[i].scenario.settings;
-    if (seed && !loaded.quarries[i].seed_given) s.seed = io::section_seed(*seed, i);
-    if (throws) {
-      s.throws = *throws;
-      io::check_trajectory_count(loaded.quarries[i].scenario, loaded.file, 0, "--throws",
-                                 std::to_string(*throws),
-                                 io::section_label(i, loaded.quarries[i].spec.name));
-    }
-  }
-}
-
 void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_output) {
   fmt::print(out,
              "{}Quarry danger zones (docs/quarry.md; thesis Tables 6.2, 6.3): horizontal "
@@ -210,7 +194,6 @@ void add_quarry_report_data(io::ReportData& data, const io::LoadedScenario& load
 
 int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
                  const QuarryRunOptions& o) {
-  apply_quarry_overrides(loaded, o.seed, o.throws);
   sim::RunOptions opt;
   opt.threads = o.threads;
   opt.record_impacts = o.impacts;

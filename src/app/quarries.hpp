@@ -21,18 +21,9 @@ namespace pierre::app {
 
 struct QuarryRunOptions {
   std::string out;                       // output folder
-  std::optional<std::uint64_t> seed;     // --seed: [simulation].seed
-  std::optional<std::uint32_t> throws;   // --throws: every section's throws
   unsigned threads = 0;
   bool impacts = false, all_crossings = false, quiet = false, check = false;
 };
-
-// --seed and --throws on a quarry scenario: the throws of every section; the seed of
-// [simulation], and with it the seed of each section that gives none (seed + its index, as the
-// reader sets it). A section's own `seed` is kept. Throws io::InputError (at --throws) when the
-// throws give a section more trajectories than the reader allows.
-void apply_quarry_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
-                            std::optional<std::uint32_t> throws);
 
 // Runs a quarry scenario (loaded.quarries not empty); returns the exit code: 0, or 1 when
 // `check` and a check line FAILs. Nothing is written in `out` unless every section ran.

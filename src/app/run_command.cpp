@@ -122,6 +122,7 @@ class RunCommand final : public Command {
     const auto throws =
         throws_opt_->count() ? std::optional<std::uint32_t>(throws_) : std::nullopt;
     loaded.overrides = command_line_overrides(loaded, seed, throws);
+    apply_command_line_overrides(loaded, seed, throws);
     // Likely mistakes that do not stop the run (an x out of order read as an overhang, a source
     // far above the ground or falling against the vertex order, a material no segment uses):
     // said even when quiet, on stderr, where a pipeline's log keeps them.
@@ -129,8 +130,6 @@ class RunCommand final : public Command {
     if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
       QuarryRunOptions q;
       q.out = out_;
-      q.seed = seed;
-      q.throws = throws;
       q.threads = threads_;
       q.impacts = impacts_;
       q.all_crossings = all_crossings_;
@@ -139,12 +138,6 @@ class RunCommand final : public Command {
       return run_quarries(loaded, layout, q);
     }
     sim::Scenario& sc = loaded.scenario;
-    if (seed) sc.settings.seed = *seed;
-    if (throws) {
-      sc.settings.throws = *throws;
-      // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
-      io::check_trajectory_count(sc, loaded.file, 0, "--throws", std::to_string(*throws));
-    }
     sim::RunOptions opt;
     opt.threads = threads_;
     opt.record_impacts = impacts_;

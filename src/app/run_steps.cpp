@@ -91,4 +91,27 @@ std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded
   return out;
 }
 
+void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
+                                  std::optional<std::uint32_t> throws) {
+  sim::SimulationSettings& top = loaded.scenario.settings;
+  if (seed) top.seed = *seed;
+  if (throws) top.throws = *throws;
+  if (loaded.quarries.empty()) {
+    // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
+    if (throws)
+      io::check_trajectory_count(loaded.scenario, loaded.file, 0, "--throws", std::to_string(*throws));
+    return;
+  }
+  for (std::size_t i = 0; i < loaded.quarries.size(); ++i) {
+    sim::SimulationSettings& s = loaded.quarries[i].scenario.settings;
+    if (seed && !loaded.quarries[i].seed_given) s.seed = io::section_seed(*seed, i);
+    if (throws) {
+      s.throws = *throws;
+      io::check_trajectory_count(loaded.quarries[i].scenario, loaded.file, 0, "--throws",
+                                 std::to_string(*throws),
+                                 io::section_label(i, loaded.quarries[i].spec.name));
+    }
+  }
+}
+
 }  // namespace pierre::app

@@ -32,4 +32,11 @@ std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded
                                                 std::optional<std::uint64_t> seed,
                                                 std::optional<std::uint32_t> throws);
 
+// Applies --seed and --throws: the seed and throws of [simulation]; in a quarry scenario also
+// every section's throws, and the seed of each section that gives none (seed + its index, as
+// the reader sets it; a section's own `seed` is kept). Throws io::InputError (at --throws)
+// when the throws give the scenario, or a section, more trajectories than the reader allows.
+void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
+                                  std::optional<std::uint32_t> throws);
+
 }  // namespace pierre::app
