@@ -152,6 +152,141 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
                           (classes.source.empty() ? std::string() : "; " + classes.source);
 }
 
+// What the simulated Weibull fits leave out: only positive values fit a Weibull, and a block
+// sliding or rolling across the line has its centre on the ground, h = 0 (model-2d.md §5).
+// Leaving such zeros out raises the fitted quantiles and survivals: conservative, but said.
+void note_zeros_left_out(BarrierDesign& d) {
+  for (auto [what, q] : {std::pair{"speeds", &d.speed}, std::pair{"passing heights", &d.height},
+                         std::pair{"translational energies", &d.energy}}) {
+    if (!q->weibull || q->weibull->excluded == 0) continue;
+    const std::size_t left = q->weibull->excluded, n = left + q->weibull->used;
+    d.notes.push_back(std::to_string(left) + " of " + std::to_string(n) + " " + what +
+                      " at the line are 0 (blocks sliding or rolling across it): the Weibull fit "
+                      "is of the " + std::to_string(q->weibull->used) +
+                      " positive values, so its characteristic value and exceedance "
+                      "probabilities describe the blocks in flight (conservative); the empirical "
+                      "values count every block");
+  }
+}
+
+// Step 7: the exceedance table, simulated and observed (with a note when an observed fit
+// rests on fewer values than the rule set asks of a simulated line).
+void exceedance(BarrierDesign& d, const BarrierRuleSet& rules, const BarrierSample& sample,
+                const std::vector<double>& energy_kJ, const std::optional<ObservedSample>& observed) {
+  if (observed) {
+    d.observed_speed = observed_fit(observed->speed);
+    d.observed_height = observed_fit(observed->height);
+    d.observed_energy = observed_fit(scaled(observed->energy, 1e-3));
+    // A Weibull through a handful of values gives a number, not a probability to set beside
+    // the simulated one: say so when a fit rests on fewer values than the rule set asks of a
+    // simulated line (reach).
+    std::string few;
+    for (auto [what, q] : {std::pair{"speeds", &d.observed_speed},
+                           std::pair{"passing heights", &d.observed_height},
+                           std::pair{"energies", &d.observed_energy}}) {
+      if (*q && (*q)->weibull && static_cast<double>((*q)->weibull->used) < rules.min_crossings)
+        few += (few.empty() ? "" : ", ") + std::to_string((*q)->weibull->used) + " " + what;
+    }
+    if (!few.empty())
+      d.notes.push_back("the observed Weibull fits rest on few values (" + few + "; fewer than the " +
+                        number_text(rules.min_crossings) +
+                        " crossings the rule set asks of a simulated line): read the observed "
+                        "exceedance probabilities as indicative only");
+  }
+  ExceedanceInputs ex;
+  ex.SEL_req_kJ = d.SEL_req_kJ;
+  ex.MEL_req_kJ = d.MEL_req_kJ;
+  ex.h_i = d.h_i;
+  ex.h_max_sim = d.h_max_sim;
+  ex.simulated_energy = d.energy.weibull;
+  ex.simulated_height = d.height.weibull;
+  ex.simulated_energy_point = d.energy.point_mass;
+  ex.simulated_height_point = d.height.point_mass;
+  ex.simulated_energy_kJ = energy_kJ;
+  ex.simulated_height_m = sample.height;
+  if (d.observed_energy) ex.observed_energy = d.observed_energy->weibull;
+  if (d.observed_height) ex.observed_height = d.observed_height->weibull;
+  d.exceedance = exceedance_rows(ex);
+}
+
+// Step 8: bootstrap intervals of v_k, h_k and, through them, E_d and h_i. (Not of a point
+// mass: every resample is the sample, and no Weibull refits it.) Each shares its resamples
+// out over every thread (the same replicates for any count).
+void bootstrap_intervals(BarrierDesign& d, const BarrierRuleSet& rules,
+                         const BarrierSample& sample, std::uint64_t seed, unsigned threads) {
+  using Reps = stats::Outcome<Replicates>;
+  auto replicates = [&](const QuantityFit& fit, std::span<const double> values, std::uint64_t s) {
+    return fit.point_mass ? Reps::failure("a point mass")
+                          : characteristic_replicates(values, rules.percentile, rules.governing,
+                                                      rules.sample_resamples, s, threads);
+  };
+  const auto rv = replicates(d.speed, sample.speed, splitmix64(seed ^ 1));
+  const auto rh = replicates(d.height, sample.height, splitmix64(seed ^ 2));
+  const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
+  const double conf = rules.sample_confidence;
+  // A point mass resamples to itself: its interval has no width (no refit can show that).
+  auto point_interval = [&rules](double v) {
+    stats::BootstrapInterval ci;
+    ci.confidence = rules.sample_confidence;
+    ci.resamples = rules.sample_resamples;
+    ci.estimate = ci.lower = ci.upper = v;
+    return ci;
+  };
+  if (d.speed.point_mass) {
+    d.v_k.interval = point_interval(d.v_k.value);
+    d.E_d_interval = point_interval(d.E_d_kJ);
+  } else if (rv) {
+    d.v_k.interval = interval(rv->values, conf, d.v_k.value, [](double v) { return v; });
+    d.E_d_interval = interval(rv->values, conf, d.v_k.value,
+                              [gF, md](double v) { return design_energy_kJ(v, gF, md); });
+    if (rv->weibull && rv->weibull->method == stats::WeibullBootstrapMethod::binned)
+      d.notes.push_back(binned_note("v_k", *rv->weibull));
+  }
+  if (d.height.point_mass) {
+    d.h_k.interval = point_interval(d.h_k.value);
+    d.h_i_interval = point_interval(d.h_i);
+  } else if (rh) {
+    d.h_k.interval = interval(rh->values, conf, d.h_k.value, [](double h) { return h; });
+    d.h_i_interval = interval(rh->values, conf, d.h_k.value, [gh, f](double h) { return interception_height(h, gh, f); });
+    if (rh->weibull && rh->weibull->method == stats::WeibullBootstrapMethod::binned)
+      d.notes.push_back(binned_note("h_k", *rh->weibull));
+  }
+  if (!d.v_k.interval || !d.h_k.interval)
+    d.notes.push_back("bootstrap: " + (!d.v_k.interval && !rv   ? rv.error
+                                       : !d.h_k.interval && !rh ? rh.error
+                                                                : std::string("a resample gave no fit")));
+}
+
+// The candidate's capacities (its class's, or as given) and its residual height category.
+void candidate_capacities(BarrierDesign& d, const BarrierSpec& spec, const EnergyClassTable& classes) {
+  d.candidate_mel_kJ = d.candidate_sel_kJ = kNaN;
+  if (spec.candidate) {
+    const CandidateBarrier& c = *spec.candidate;
+    if (c.energy_class) {
+      if (const EnergyClass* ec = find_energy_class(classes, *c.energy_class)) {
+        if (!ec->open_ended) {
+          d.candidate_mel_kJ = ec->mel_kJ;
+          d.candidate_sel_kJ = ec->sel_kJ;
+        }
+      }
+    }
+    if (c.mel_kJ) d.candidate_mel_kJ = *c.mel_kJ;
+    if (c.sel_kJ) d.candidate_sel_kJ = *c.sel_kJ;
+    if (c.residual_height && c.height && classes.residual_height) {
+      const ResidualHeightCategories& cat = *classes.residual_height;
+      d.residual_height_category = residual_height_category(cat, *c.residual_height, *c.height);
+      // Its basis: the candidate's height stands for the nominal height (the kit's declared one
+      // is not an input).
+      d.how["residual_height_category"] =
+          "residual height " + number_text(*c.residual_height) + " m / the candidate's height " +
+          number_text(*c.height) + " m (taken as the nominal height) = " +
+          number_text(100 * *c.residual_height / *c.height, 3) + " %: A from " +
+          number_text(100 * cat.a_min) + " %, B above " + number_text(100 * cat.b_min) +
+          " %, else C (" + classes.name + ")";
+    }
+  }
+}
+
 }  // namespace
 
 std::uint64_t barrier_bootstrap_seed(std::uint64_t scenario_seed, std::size_t index) {
@@ -252,130 +387,10 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
     d.notes.push_back("class " + std::to_string(d.energy_class->number) +
                       " is open-ended: the barrier must declare MEL >= MEL_req and SEL >= SEL_req");
 
-  // What the simulated Weibull fits leave out: only positive values fit a Weibull, and a block
-  // sliding or rolling across the line has its centre on the ground, h = 0 (model-2d.md §5).
-  // Leaving such zeros out raises the fitted quantiles and survivals: conservative, but said.
-  for (auto [what, q] : {std::pair{"speeds", &d.speed}, std::pair{"passing heights", &d.height},
-                         std::pair{"translational energies", &d.energy}}) {
-    if (!q->weibull || q->weibull->excluded == 0) continue;
-    const std::size_t left = q->weibull->excluded, n = left + q->weibull->used;
-    d.notes.push_back(std::to_string(left) + " of " + std::to_string(n) + " " + what +
-                      " at the line are 0 (blocks sliding or rolling across it): the Weibull fit "
-                      "is of the " + std::to_string(q->weibull->used) +
-                      " positive values, so its characteristic value and exceedance "
-                      "probabilities describe the blocks in flight (conservative); the empirical "
-                      "values count every block");
-  }
-
-  // Step 7: exceedance, simulated and observed.
-  if (observed) {
-    d.observed_speed = observed_fit(observed->speed);
-    d.observed_height = observed_fit(observed->height);
-    d.observed_energy = observed_fit(scaled(observed->energy, 1e-3));
-    // A Weibull through a handful of values gives a number, not a probability to set beside
-    // the simulated one: say so when a fit rests on fewer values than the rule set asks of a
-    // simulated line (reach).
-    std::string few;
-    for (auto [what, q] : {std::pair{"speeds", &d.observed_speed},
-                           std::pair{"passing heights", &d.observed_height},
-                           std::pair{"energies", &d.observed_energy}}) {
-      if (*q && (*q)->weibull && static_cast<double>((*q)->weibull->used) < rules.min_crossings)
-        few += (few.empty() ? "" : ", ") + std::to_string((*q)->weibull->used) + " " + what;
-    }
-    if (!few.empty())
-      d.notes.push_back("the observed Weibull fits rest on few values (" + few + "; fewer than the " +
-                        number_text(rules.min_crossings) +
-                        " crossings the rule set asks of a simulated line): read the observed "
-                        "exceedance probabilities as indicative only");
-  }
-  ExceedanceInputs ex;
-  ex.SEL_req_kJ = d.SEL_req_kJ;
-  ex.MEL_req_kJ = d.MEL_req_kJ;
-  ex.h_i = d.h_i;
-  ex.h_max_sim = d.h_max_sim;
-  ex.simulated_energy = d.energy.weibull;
-  ex.simulated_height = d.height.weibull;
-  ex.simulated_energy_point = d.energy.point_mass;
-  ex.simulated_height_point = d.height.point_mass;
-  ex.simulated_energy_kJ = energy_kJ;
-  ex.simulated_height_m = sample.height;
-  if (d.observed_energy) ex.observed_energy = d.observed_energy->weibull;
-  if (d.observed_height) ex.observed_height = d.observed_height->weibull;
-  d.exceedance = exceedance_rows(ex);
-
-  // Step 8: bootstrap intervals of v_k, h_k and, through them, E_d and h_i. (Not of a point
-  // mass: every resample is the sample, and no Weibull refits it.) Each shares its resamples
-  // out over every thread (the same replicates for any count).
-  using Reps = stats::Outcome<Replicates>;
-  auto replicates = [&](const QuantityFit& fit, std::span<const double> values, std::uint64_t s) {
-    return fit.point_mass ? Reps::failure("a point mass")
-                          : characteristic_replicates(values, rules.percentile, rules.governing,
-                                                      rules.sample_resamples, s, threads);
-  };
-  const auto rv = replicates(d.speed, sample.speed, splitmix64(seed ^ 1));
-  const auto rh = replicates(d.height, sample.height, splitmix64(seed ^ 2));
-  const double gF = d.gamma_F.value, md = d.m_d, gh = d.gamma_h.value, f = d.free_board;
-  const double conf = rules.sample_confidence;
-  // A point mass resamples to itself: its interval has no width (no refit can show that).
-  auto point_interval = [&rules](double v) {
-    stats::BootstrapInterval ci;
-    ci.confidence = rules.sample_confidence;
-    ci.resamples = rules.sample_resamples;
-    ci.estimate = ci.lower = ci.upper = v;
-    return ci;
-  };
-  if (d.speed.point_mass) {
-    d.v_k.interval = point_interval(d.v_k.value);
-    d.E_d_interval = point_interval(d.E_d_kJ);
-  } else if (rv) {
-    d.v_k.interval = interval(rv->values, conf, d.v_k.value, [](double v) { return v; });
-    d.E_d_interval = interval(rv->values, conf, d.v_k.value,
-                              [gF, md](double v) { return design_energy_kJ(v, gF, md); });
-    if (rv->weibull && rv->weibull->method == stats::WeibullBootstrapMethod::binned)
-      d.notes.push_back(binned_note("v_k", *rv->weibull));
-  }
-  if (d.height.point_mass) {
-    d.h_k.interval = point_interval(d.h_k.value);
-    d.h_i_interval = point_interval(d.h_i);
-  } else if (rh) {
-    d.h_k.interval = interval(rh->values, conf, d.h_k.value, [](double h) { return h; });
-    d.h_i_interval = interval(rh->values, conf, d.h_k.value, [gh, f](double h) { return interception_height(h, gh, f); });
-    if (rh->weibull && rh->weibull->method == stats::WeibullBootstrapMethod::binned)
-      d.notes.push_back(binned_note("h_k", *rh->weibull));
-  }
-  if (!d.v_k.interval || !d.h_k.interval)
-    d.notes.push_back("bootstrap: " + (!d.v_k.interval && !rv   ? rv.error
-                                       : !d.h_k.interval && !rh ? rh.error
-                                                                : std::string("a resample gave no fit")));
-
-  // Candidate capacities and residual height category.
-  d.candidate_mel_kJ = d.candidate_sel_kJ = kNaN;
-  if (spec.candidate) {
-    const CandidateBarrier& c = *spec.candidate;
-    if (c.energy_class) {
-      if (const EnergyClass* ec = find_energy_class(classes, *c.energy_class)) {
-        if (!ec->open_ended) {
-          d.candidate_mel_kJ = ec->mel_kJ;
-          d.candidate_sel_kJ = ec->sel_kJ;
-        }
-      }
-    }
-    if (c.mel_kJ) d.candidate_mel_kJ = *c.mel_kJ;
-    if (c.sel_kJ) d.candidate_sel_kJ = *c.sel_kJ;
-    if (c.residual_height && c.height && classes.residual_height) {
-      const ResidualHeightCategories& cat = *classes.residual_height;
-      d.residual_height_category = residual_height_category(cat, *c.residual_height, *c.height);
-      // Its basis: the candidate's height stands for the nominal height (the kit's declared one
-      // is not an input).
-      d.how["residual_height_category"] =
-          "residual height " + number_text(*c.residual_height) + " m / the candidate's height " +
-          number_text(*c.height) + " m (taken as the nominal height) = " +
-          number_text(100 * *c.residual_height / *c.height, 3) + " %: A from " +
-          number_text(100 * cat.a_min) + " %, B above " + number_text(100 * cat.b_min) +
-          " %, else C (" + classes.name + ")";
-    }
-  }
-
+  note_zeros_left_out(d);
+  exceedance(d, rules, sample, energy_kJ, observed);
+  bootstrap_intervals(d, rules, sample, seed, threads);
+  candidate_capacities(d, spec, classes);
   describe_derivations(d, rules, classes);
   d.checks = barrier_check_lines(d, rules);
   out.design = std::move(d);
