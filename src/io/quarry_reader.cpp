@@ -307,136 +307,102 @@ std::string section_label(std::size_t index, const std::string& name) {
   return fmt::format("quarries[{}] \"{}\"", index, name);
 }
 
-std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
-                                         const RulesFolder& rules,
-                                         const std::vector<model::Material>& materials,
-                                         const sim::SimulationSettings& settings) {
+namespace {
+
+// The section's rule set: a name in the rules folder or a path relative to the scenario, of
+// the quarry kind; a file that is not there is said at the section's rules key.
+void read_section_rules(const TomlTable& q, QuarrySection& s, const fs::path& file,
+                        const RulesFolder& rules) {
+  design::QuarrySpec& spec = s.spec;
   const fs::path& rules_dir = rules.path;
-  std::vector<QuarrySection> out;
-  const TomlTable top(file, root, "", 0, {});
-  const toml::array* a = top.array_of_tables("quarries");
-  if (!a) return out;
-  std::set<std::string> names;
-  for (std::size_t i = 0; i < a->size(); ++i) {
-    const TomlTable q = top.element(
-        "quarries", *a, i,
-        {"name", "group", "rules", "toe", "crest", "height", "bench_width", "seed", "exceedance",
-         "profile", "blocks", "sources", "work_areas", "observed"});
-    QuarrySection s;
-    design::QuarrySpec& spec = s.spec;
-    spec.name = q.required_string("name", "a name for the quarry section");
-    q.check("name", !spec.name.empty(), "a non-empty name");
-    q.check("name", names.insert(spec.name).second, "a name not used by another quarry section");
-    spec.group = q.string("group").value_or("");
-    spec.rules = q.string("rules").value_or(design::kDefaultQuarryRules);
-    q.check("rules", !spec.rules.empty(), "a rule set name or path");
-    const fs::path rules_file = scenario_rule_file(spec.rules, file, rules_dir);
-    if (const auto kind = detail::rule_file_kind(rules_file);
-        detail::is_other_rule_kind(kind, detail::RuleFileKind::quarry))
-      q.fail("rules", fmt::format("a quarry rule set (e.g. \"quarry-thesis-2015\", "
-                                  "\"quarry-conservative\"; {} is {})",
-                                  rules_file.string(), detail::describe(kind)));
-    try {
-      s.rules = load_quarry_rules(rules_file.string(), rules_dir);
-    } catch (const InputError& e) {
-      // An error inside the rule file is reported there; only a file that is not there (or
-      // cannot be read) is said at the scenario's rules key.
-      if (e.field() != "file") throw;
-      q.fail("rules", fmt::format("a rule set in {} or a path to a .toml file (e.g. "
-                                  "\"quarry-thesis-2015\", \"quarry-conservative\"; {}: {})",
-                                  rules.named(), e.file().string(), e.found()));
-    }
-    s.rules_file = rules_file;
-
-    spec.geometry.crest_x = q.number("crest");
-    spec.geometry.toe_x = q.number("toe");
-    spec.geometry.height = q.number("height");
-    if (spec.geometry.height) q.check("height", *spec.geometry.height > 0, "a height H > 0 (m)");
-    spec.geometry.floor_angle_deg = s.rules.floor_angle_deg;
-    spec.bench_width = q.number("bench_width");
-    if (spec.bench_width) q.check("bench_width", *spec.bench_width > 0, "a bench width > 0 (m)");
-    if (const toml::array* ex = q.array("exceedance")) {
-      spec.exceedance.clear();
-      const std::string expected = "a probability of exceedance in (0, 1)";
-      for (std::size_t k = 0; k < ex->size(); ++k) {
-        const toml::node& e = *ex->get(k);
-        const std::string field = fmt::format("{}[{}]", q.field("exceedance"), k);
-        const double v = coordinate(q, e, field, expected);
-        if (!(v > 0 && v < 1)) throw InputError(file, line_of(e), field, describe(e), expected);
-        if (std::find(spec.exceedance.begin(), spec.exceedance.end(), v) != spec.exceedance.end())
-          throw InputError(file, line_of(e), field, describe(e),
-                           "a probability not already in the list (each gives one row)");
-        spec.exceedance.push_back(v);
-      }
-    }
-
-    sim::Scenario& sc = s.scenario;
-    sc.name = spec.name;
-    sc.materials = materials;
-    sc.settings = settings;
-    if (auto seed = q.integer("seed")) {
-      q.check("seed", *seed >= 0, "an integer >= 0");
-      sc.settings.seed = static_cast<std::uint64_t>(*seed);
-      s.seed_given = true;
-    } else {
-      sc.settings.seed = section_seed(settings.seed, i);  // independent streams, pooled sections
-    }
-    sc.profile = detail::read_profile(q, materials, "quarries", s.notes);
-    detail::read_blocks(q, s.block_groups, sc.blocks, "quarries", s.notes);
-    detail::read_sources(q, sc, "quarries", s.notes);
-    {
-      // Each section is a run of its own: its count, not the sum, is what must stay countable.
-      // (`settings` may come from elsewhere than `root`: then the message names no line.)
-      const toml::node* throws = root.at_path("simulation.throws").node();
-      check_trajectory_count(sc, file, throws ? line_of(*throws) : 0, "simulation.throws",
-                             std::to_string(settings.throws),
-                             section_label(i, spec.name));
-    }
-    read_work_areas(q, spec);
-    read_observed(q, s);
-
-    // A toe or crest off the section is the value's own error, at its own key.
-    for (const auto& [key, x] : {std::pair{"toe", spec.geometry.toe_x},
-                                 std::pair{"crest", spec.geometry.crest_x}})
-      if (x)
-        q.check(key, *x >= sc.profile.x_min() && *x <= sc.profile.x_max(),
-                fmt::format("a {} x inside the section, {:g} to {:g} m", key, sc.profile.x_min(),
-                            sc.profile.x_max()));
-    auto g = design::quarry_geometry(sc.profile, spec.geometry);
-    if (g && !g->toe_vertex) {
-      // A toe given inside a segment: the floor is the profile past the toe (design-checks.md
-      // §2), so the segment is cut there into two collinear pieces (the same physics,
-      // model-2d.md §2) and the floor starts at the new vertex.
-      std::vector<geometry::ProfileIssue> issues;
-      auto cut = sc.profile.split_at(static_cast<std::size_t>(g->floor_segment), g->toe, &issues);
-      if (!cut) {  // a toe a hair from a vertex: the section cannot be cut there
-        const char* key = spec.geometry.toe_x ? "toe" : "profile";
-        const toml::node* n = q.find(key);
-        throw InputError(file, n ? line_of(*n) : q.line(), q.field(key),
-                         fmt::format("a toe at x = {:g} m that cuts segment {} of the section ({})",
-                                     g->toe.x, g->floor_segment,
-                                     issues.empty() ? "no reason given" : issues.front().what),
-                         "a toe on a vertex of the section or clear of its ends");
-      }
-      sc.profile = std::move(*cut);
-      g = design::quarry_geometry(sc.profile, spec.geometry);
-    }
-    if (!g) {
-      const char* key = spec.geometry.toe_x ? "toe" : spec.geometry.crest_x ? "crest" : "profile";
-      const toml::node* n = q.find(key);
-      throw InputError(file, n ? line_of(*n) : q.line(), q.field(key), g.error,
-                       "a section with a crest above a floor flatter than " +
-                           fmt::format("{}°", s.rules.floor_angle_deg) +
-                           " (or toe = x and crest = x of the section)");
-    }
-    s.geometry = *g;
-    sc.settings.floor_segment = s.geometry.floor_segment;
-    note_given_geometry(q, sc.profile, spec.geometry, s.geometry, s.notes);
-    note_beyond_floor(q, spec, s.geometry, s.notes);
-    out.push_back(std::move(s));
+  spec.rules = q.string("rules").value_or(design::kDefaultQuarryRules);
+  q.check("rules", !spec.rules.empty(), "a rule set name or path");
+  const fs::path rules_file = scenario_rule_file(spec.rules, file, rules_dir);
+  if (const auto kind = detail::rule_file_kind(rules_file);
+      detail::is_other_rule_kind(kind, detail::RuleFileKind::quarry))
+    q.fail("rules", fmt::format("a quarry rule set (e.g. \"quarry-thesis-2015\", "
+                                "\"quarry-conservative\"; {} is {})",
+                                rules_file.string(), detail::describe(kind)));
+  try {
+    s.rules = load_quarry_rules(rules_file.string(), rules_dir);
+  } catch (const InputError& e) {
+    // An error inside the rule file is reported there; only a file that is not there (or
+    // cannot be read) is said at the scenario's rules key.
+    if (e.field() != "file") throw;
+    q.fail("rules", fmt::format("a rule set in {} or a path to a .toml file (e.g. "
+                                "\"quarry-thesis-2015\", \"quarry-conservative\"; {}: {})",
+                                rules.named(), e.file().string(), e.found()));
   }
-  // The checks across sections report at the later section's table.
-  auto section_table = [&](std::size_t i) { return top.element("quarries", *a, i, {}); };
+  s.rules_file = rules_file;
+}
+
+// The probabilities of exceedance asked for (each gives a row of the exceedance table).
+void read_exceedance(const TomlTable& q, design::QuarrySpec& spec, const fs::path& file) {
+  if (const toml::array* ex = q.array("exceedance")) {
+    spec.exceedance.clear();
+    const std::string expected = "a probability of exceedance in (0, 1)";
+    for (std::size_t k = 0; k < ex->size(); ++k) {
+      const toml::node& e = *ex->get(k);
+      const std::string field = fmt::format("{}[{}]", q.field("exceedance"), k);
+      const double v = coordinate(q, e, field, expected);
+      if (!(v > 0 && v < 1)) throw InputError(file, line_of(e), field, describe(e), expected);
+      if (std::find(spec.exceedance.begin(), spec.exceedance.end(), v) != spec.exceedance.end())
+        throw InputError(file, line_of(e), field, describe(e),
+                         "a probability not already in the list (each gives one row)");
+      spec.exceedance.push_back(v);
+    }
+  }
+}
+
+// Crest, toe and H as given or found (design-checks.md §2); a toe inside a segment cuts it
+// there, so that the floor starts at a vertex.
+void read_section_geometry(const TomlTable& q, QuarrySection& s, const fs::path& file) {
+  design::QuarrySpec& spec = s.spec;
+  sim::Scenario& sc = s.scenario;
+  // A toe or crest off the section is the value's own error, at its own key.
+  for (const auto& [key, x] : {std::pair{"toe", spec.geometry.toe_x},
+                               std::pair{"crest", spec.geometry.crest_x}})
+    if (x)
+      q.check(key, *x >= sc.profile.x_min() && *x <= sc.profile.x_max(),
+              fmt::format("a {} x inside the section, {:g} to {:g} m", key, sc.profile.x_min(),
+                          sc.profile.x_max()));
+  auto g = design::quarry_geometry(sc.profile, spec.geometry);
+  if (g && !g->toe_vertex) {
+    // A toe given inside a segment: the floor is the profile past the toe (design-checks.md
+    // §2), so the segment is cut there into two collinear pieces (the same physics,
+    // model-2d.md §2) and the floor starts at the new vertex.
+    std::vector<geometry::ProfileIssue> issues;
+    auto cut = sc.profile.split_at(static_cast<std::size_t>(g->floor_segment), g->toe, &issues);
+    if (!cut) {  // a toe a hair from a vertex: the section cannot be cut there
+      const char* key = spec.geometry.toe_x ? "toe" : "profile";
+      const toml::node* n = q.find(key);
+      throw InputError(file, n ? line_of(*n) : q.line(), q.field(key),
+                       fmt::format("a toe at x = {:g} m that cuts segment {} of the section ({})",
+                                   g->toe.x, g->floor_segment,
+                                   issues.empty() ? "no reason given" : issues.front().what),
+                       "a toe on a vertex of the section or clear of its ends");
+    }
+    sc.profile = std::move(*cut);
+    g = design::quarry_geometry(sc.profile, spec.geometry);
+  }
+  if (!g) {
+    const char* key = spec.geometry.toe_x ? "toe" : spec.geometry.crest_x ? "crest" : "profile";
+    const toml::node* n = q.find(key);
+    throw InputError(file, n ? line_of(*n) : q.line(), q.field(key), g.error,
+                     "a section with a crest above a floor flatter than " +
+                         fmt::format("{}°", s.rules.floor_angle_deg) +
+                         " (or toe = x and crest = x of the section)");
+  }
+  s.geometry = *g;
+  sc.settings.floor_segment = s.geometry.floor_segment;
+  note_given_geometry(q, sc.profile, spec.geometry, s.geometry, s.notes);
+  note_beyond_floor(q, spec, s.geometry, s.notes);
+}
+
+// What the sections say together: a group follows one rule set, gives one kind of observed
+// values, and takes no name of a section outside it. Said at the later section's table.
+void check_groups(const std::vector<QuarrySection>& out, const TomlTable& top, const toml::array& a) {
+  auto section_table = [&](std::size_t i) { return top.element("quarries", a, i, {}); };
   // Sections pooled in one group must follow one rule set.
   for (std::size_t i = 0; i < out.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
@@ -478,6 +444,70 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
                                     "(quarries[{}] is named \"{}\")",
                                     j, out[j].spec.name));
       }
+}
+
+}  // namespace
+
+std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
+                                         const RulesFolder& rules,
+                                         const std::vector<model::Material>& materials,
+                                         const sim::SimulationSettings& settings) {
+  std::vector<QuarrySection> out;
+  const TomlTable top(file, root, "", 0, {});
+  const toml::array* a = top.array_of_tables("quarries");
+  if (!a) return out;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const TomlTable q = top.element(
+        "quarries", *a, i,
+        {"name", "group", "rules", "toe", "crest", "height", "bench_width", "seed", "exceedance",
+         "profile", "blocks", "sources", "work_areas", "observed"});
+    QuarrySection s;
+    design::QuarrySpec& spec = s.spec;
+    spec.name = q.required_string("name", "a name for the quarry section");
+    q.check("name", !spec.name.empty(), "a non-empty name");
+    q.check("name", names.insert(spec.name).second, "a name not used by another quarry section");
+    spec.group = q.string("group").value_or("");
+    read_section_rules(q, s, file, rules);
+
+    spec.geometry.crest_x = q.number("crest");
+    spec.geometry.toe_x = q.number("toe");
+    spec.geometry.height = q.number("height");
+    if (spec.geometry.height) q.check("height", *spec.geometry.height > 0, "a height H > 0 (m)");
+    spec.geometry.floor_angle_deg = s.rules.floor_angle_deg;
+    spec.bench_width = q.number("bench_width");
+    if (spec.bench_width) q.check("bench_width", *spec.bench_width > 0, "a bench width > 0 (m)");
+    read_exceedance(q, spec, file);
+
+    sim::Scenario& sc = s.scenario;
+    sc.name = spec.name;
+    sc.materials = materials;
+    sc.settings = settings;
+    if (auto seed = q.integer("seed")) {
+      q.check("seed", *seed >= 0, "an integer >= 0");
+      sc.settings.seed = static_cast<std::uint64_t>(*seed);
+      s.seed_given = true;
+    } else {
+      sc.settings.seed = section_seed(settings.seed, i);  // independent streams, pooled sections
+    }
+    sc.profile = detail::read_profile(q, materials, "quarries", s.notes);
+    detail::read_blocks(q, s.block_groups, sc.blocks, "quarries", s.notes);
+    detail::read_sources(q, sc, "quarries", s.notes);
+    {
+      // Each section is a run of its own: its count, not the sum, is what must stay countable.
+      // (`settings` may come from elsewhere than `root`: then the message names no line.)
+      const toml::node* throws = root.at_path("simulation.throws").node();
+      check_trajectory_count(sc, file, throws ? line_of(*throws) : 0, "simulation.throws",
+                             std::to_string(settings.throws),
+                             section_label(i, spec.name));
+    }
+    read_work_areas(q, spec);
+    read_observed(q, s);
+
+    read_section_geometry(q, s, file);
+    out.push_back(std::move(s));
+  }
+  check_groups(out, top, *a);
   return out;
 }
 
