@@ -171,9 +171,17 @@ double CsvTable::number(const CsvRow& row, std::size_t col) const {
   return v;
 }
 
-CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
-                  std::string_view expected_header, const ColumnAliases& aliases,
-                  const std::vector<std::string>& may_be_empty) {
+namespace {
+
+// Whether the cells from `from` on are all empty (a spreadsheet pads rows to its widest).
+bool all_empty(const std::vector<std::string>& cells, std::size_t from) {
+  return std::all_of(cells.begin() + static_cast<std::ptrdiff_t>(from), cells.end(),
+                     [](const std::string& c) { return c.empty(); });
+}
+
+// The file's text in UTF-8 without its byte-order mark, every line ended by LF; a UTF-16 text
+// or a NUL byte is said where it is.
+std::string csv_text(const std::filesystem::path& file, std::string_view expected_header) {
   std::string text = read_text(file, fmt::format("CSV file with header {}", expected_header));
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
   // Excel's "Unicode text" export is UTF-16: two bytes a character, half of them zero here.
@@ -199,6 +207,111 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
   // is the end of a Windows line and is trimmed with the line.
   for (std::size_t i = 0; i < text.size(); ++i)
     if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+  return text;
+}
+
+// The header's cells (empty ones a spreadsheet adds after the last already dropped) as column
+// names: matched without case and through the aliases, each an allowed column, once. A row of
+// values in its place, another separator, an unknown column are said. `commas_below`: the rows
+// below hold commas (with ';' separators, decimal commas).
+void name_columns(std::vector<std::string>& cells, const std::filesystem::path& file, long line_no,
+                  std::string_view line, const std::vector<std::string>& allowed,
+                  std::string_view expected_header, const ColumnAliases& aliases,
+                  bool commas_below) {
+  for (std::string& h : cells) {
+    if (auto bad = unwritable_text(h))
+      throw InputError(file, line_no, "header", *bad, std::string(kWritableText));
+    // The unit in the name, as pierre's own CSVs write it ("x_m", "mass_kg").
+    for (const auto& [alias, name] : aliases)
+      if (same_name(h, alias)) h = name;
+    for (const std::string& name : allowed)
+      if (same_name(h, name)) h = name;
+    // A file that starts with its data: the first row is taken for the header.
+    if (is_number(h) && std::find(allowed.begin(), allowed.end(), h) == allowed.end())
+      throw InputError(file, line_no, "header",
+                       fmt::format("a row of values (\"{}\") where the header belongs", line),
+                       fmt::format("a header line {} above the data rows", expected_header));
+    if (std::find(allowed.begin(), allowed.end(), h) == allowed.end()) {
+      const auto sep = other_separator(line);
+      if (sep && h.find_first_of(";\t") != std::string::npos)
+        throw InputError(file, line_no, "header",
+                         separated_line(line,
+                                        fmt::format("{} column{}", cells.size(),
+                                                    cells.size() == 1 ? "" : "s"),
+                                        *sep),
+                         fmt::format("cells separated by commas ({}){}", expected_header,
+                                     // A European export: its decimal commas go too.
+                                     *sep == "\";\"" && commas_below
+                                         ? "; the rows' decimal commas must then become "
+                                           "points (10,5 → 10.5)"
+                                         : ""));
+      throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
+                       fmt::format("only the columns {}{}", join(allowed),
+                                   aliases.empty() ? "" : alias_note(aliases)));
+    }
+    if (std::count(cells.begin(), cells.end(), h) > 1)
+      throw InputError(file, line_no, "header", fmt::format("column \"{}\" twice", h),
+                       "each column once");
+  }
+}
+
+// A row as wide as the header (empty cells past it dropped), or what is likely wrong: another
+// separator, a cut-off row (and how to leave a cell empty), a decimal comma, an unnamed column.
+void fit_row_to_header(std::vector<std::string>& cells, const CsvTable& t,
+                       const std::filesystem::path& file, long line_no, std::string_view line,
+                       std::size_t header_cells, const std::string& header_text,
+                       const std::vector<std::string>& may_be_empty) {
+  if (cells.size() < t.header.size()) {
+    if (const auto sep = other_separator(line))
+      throw InputError(file, line_no, "row",
+                       separated_line(line, fmt::format("{} of {} columns", cells.size(),
+                                                        t.header.size()),
+                                      *sep),
+                       fmt::format("cells separated by commas ({})", join(t.header)));
+    // Where the missing columns may be left empty (a block given by its mass in a table
+    // with a volume column), say how: a cut-off row and an empty cell differ by a comma.
+    const std::vector<std::string> missing(t.header.begin() + static_cast<std::ptrdiff_t>(cells.size()),
+                                           t.header.end());
+    const bool may_skip = std::all_of(missing.begin(), missing.end(), [&](const std::string& h) {
+      return std::find(may_be_empty.begin(), may_be_empty.end(), h) != may_be_empty.end();
+    });
+    throw InputError(
+        file, line_no, t.header[cells.size()],
+        fmt::format("nothing (the row has {} of {} columns)", cells.size(), t.header.size()),
+        may_skip ? fmt::format("a value or an empty cell in every column of {} (\"{}{}\" leaves "
+                               "{} empty)",
+                               join(t.header), line, std::string(missing.size(), ','),
+                               join(missing))
+                 : fmt::format("a value in every column of {}", join(t.header)));
+  }
+  if (cells.size() > t.header.size() && all_empty(cells, t.header.size()))
+    cells.resize(t.header.size());
+  if (cells.size() > t.header.size()) {
+    // The first value past the header's columns. Where the header has an empty name there
+    // ("x,z," for "x,z,material") the fault may be the header's, not the row's: say both.
+    std::size_t k = t.header.size();
+    while (cells[k].empty()) ++k;  // (not all are empty: see above)
+    const std::string unnamed =
+        header_cells > k ? fmt::format(", or a name for column {} in the header (line {}: \"{}\")",
+                                       k + 1, t.header_line, header_text)
+                         : "";
+    throw InputError(file, line_no, "row",
+                     fmt::format("{} columns (column {} holds \"{}\")", cells.size(), k + 1,
+                                 cells[k]),
+                     fmt::format("{} column{} ({}){}{}", t.header.size(),
+                                 t.header.size() == 1 ? "" : "s", join(t.header), unnamed,
+                                 fits_with_decimal_commas(cells, t.header)
+                                     ? "; a decimal comma? numbers take a point (16.5, not 16,5)"
+                                     : ""));
+  }
+}
+
+}  // namespace
+
+CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::string>& allowed,
+                  std::string_view expected_header, const ColumnAliases& aliases,
+                  const std::vector<std::string>& may_be_empty) {
+  const std::string text = csv_text(file, expected_header);
 
   CsvTable t;
   t.file = file;
@@ -207,10 +320,6 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
   std::size_t comments = 0;      // comment lines
   std::string header_text;       // the header line as written
   std::size_t header_cells = 0;  // its cells, with the empty ones a spreadsheet adds
-  auto all_empty = [](const std::vector<std::string>& cells, std::size_t from) {
-    return std::all_of(cells.begin() + static_cast<std::ptrdiff_t>(from), cells.end(),
-                       [](const std::string& c) { return c.empty(); });
-  };
   while (pos < text.size()) {
     std::size_t nl = text.find('\n', pos);
     if (nl == std::string::npos) nl = text.size();
@@ -231,87 +340,12 @@ CsvTable read_csv(const std::filesystem::path& file, const std::vector<std::stri
       header_text = line;
       header_cells = cells.size();
       while (cells.back().empty()) cells.pop_back();  // (not all are empty)
-      for (std::string& h : cells) {
-        if (auto bad = unwritable_text(h))
-          throw InputError(file, line_no, "header", *bad, std::string(kWritableText));
-        // The unit in the name, as pierre's own CSVs write it ("x_m", "mass_kg").
-        for (const auto& [alias, name] : aliases)
-          if (same_name(h, alias)) h = name;
-        for (const std::string& name : allowed)
-          if (same_name(h, name)) h = name;
-        // A file that starts with its data: the first row is taken for the header.
-        if (is_number(h) && std::find(allowed.begin(), allowed.end(), h) == allowed.end())
-          throw InputError(file, line_no, "header",
-                           fmt::format("a row of values (\"{}\") where the header belongs", line),
-                           fmt::format("a header line {} above the data rows", expected_header));
-        if (std::find(allowed.begin(), allowed.end(), h) == allowed.end()) {
-          const auto sep = other_separator(line);
-          if (sep && h.find_first_of(";\t") != std::string::npos)
-            throw InputError(file, line_no, "header",
-                             separated_line(line,
-                                            fmt::format("{} column{}", cells.size(),
-                                                        cells.size() == 1 ? "" : "s"),
-                                            *sep),
-                             fmt::format("cells separated by commas ({}){}", expected_header,
-                                         // A European export: its decimal commas go too.
-                                         *sep == "\";\"" && text.find(',', pos) != std::string::npos
-                                             ? "; the rows' decimal commas must then become "
-                                               "points (10,5 → 10.5)"
-                                             : ""));
-          throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
-                           fmt::format("only the columns {}{}", join(allowed),
-                                       aliases.empty() ? "" : alias_note(aliases)));
-        }
-        if (std::count(cells.begin(), cells.end(), h) > 1)
-          throw InputError(file, line_no, "header", fmt::format("column \"{}\" twice", h),
-                           "each column once");
-      }
+      name_columns(cells, file, line_no, line, allowed, expected_header, aliases,
+                   text.find(',', pos) != std::string::npos);
       t.header = std::move(cells);
       continue;
     }
-    if (cells.size() < t.header.size()) {
-      if (const auto sep = other_separator(line))
-        throw InputError(file, line_no, "row",
-                         separated_line(line, fmt::format("{} of {} columns", cells.size(),
-                                                          t.header.size()),
-                                        *sep),
-                         fmt::format("cells separated by commas ({})", join(t.header)));
-      // Where the missing columns may be left empty (a block given by its mass in a table
-      // with a volume column), say how: a cut-off row and an empty cell differ by a comma.
-      const std::vector<std::string> missing(t.header.begin() + static_cast<std::ptrdiff_t>(cells.size()),
-                                             t.header.end());
-      const bool may_skip = std::all_of(missing.begin(), missing.end(), [&](const std::string& h) {
-        return std::find(may_be_empty.begin(), may_be_empty.end(), h) != may_be_empty.end();
-      });
-      throw InputError(
-          file, line_no, t.header[cells.size()],
-          fmt::format("nothing (the row has {} of {} columns)", cells.size(), t.header.size()),
-          may_skip ? fmt::format("a value or an empty cell in every column of {} (\"{}{}\" leaves "
-                                 "{} empty)",
-                                 join(t.header), line, std::string(missing.size(), ','),
-                                 join(missing))
-                   : fmt::format("a value in every column of {}", join(t.header)));
-    }
-    if (cells.size() > t.header.size() && all_empty(cells, t.header.size()))
-      cells.resize(t.header.size());
-    if (cells.size() > t.header.size()) {
-      // The first value past the header's columns. Where the header has an empty name there
-      // ("x,z," for "x,z,material") the fault may be the header's, not the row's: say both.
-      std::size_t k = t.header.size();
-      while (cells[k].empty()) ++k;  // (not all are empty: see above)
-      const std::string unnamed =
-          header_cells > k ? fmt::format(", or a name for column {} in the header (line {}: \"{}\")",
-                                         k + 1, t.header_line, header_text)
-                           : "";
-      throw InputError(file, line_no, "row",
-                       fmt::format("{} columns (column {} holds \"{}\")", cells.size(), k + 1,
-                                   cells[k]),
-                       fmt::format("{} column{} ({}){}{}", t.header.size(),
-                                   t.header.size() == 1 ? "" : "s", join(t.header), unnamed,
-                                   fits_with_decimal_commas(cells, t.header)
-                                       ? "; a decimal comma? numbers take a point (16.5, not 16,5)"
-                                       : ""));
-    }
+    fit_row_to_header(cells, t, file, line_no, line, header_cells, header_text, may_be_empty);
     for (std::size_t c = 0; c < cells.size(); ++c)
       if (auto bad = unwritable_text(cells[c]))
         throw InputError(file, line_no, t.header[c], *bad, std::string(kWritableText));
