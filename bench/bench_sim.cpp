@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -178,14 +179,23 @@ int main(int argc, char** argv) {
     for (unsigned th : {1u, all}) {
       const fs::path out = fs::temp_directory_path() / fmt::format("pierre-bench-{}-{}", c.name, th);
       fs::remove_all(out);
-      const std::string cmd =
-          fmt::format("\"{}\" run \"{}\" --out \"{}\" --throws {} --threads {} --quiet > /dev/null",
-                      PIERRE_BINARY, file.string(), out.string(), c.throws, th);
+      // Its notes on stderr (quiet runs send them there) are kept, and shown only if it fails.
+      const fs::path err = out.string() + ".stderr";
+      const std::string cmd = fmt::format(
+          "\"{}\" run \"{}\" --out \"{}\" --throws {} --threads {} --quiet > /dev/null 2> \"{}\"",
+          PIERRE_BINARY, file.string(), out.string(), c.throws, th, err.string());
       const double t0 = now();
       const int rc = std::system(cmd.c_str());
       const double dt = now() - t0;
       fmt::print("  pierre run, {} thread(s): {:>10.0f} trajectories/s (exit {}, {:.2f} s)\n", th,
                  s.trajectory_count() / dt, rc, dt);
+      if (rc != 0)
+        if (std::FILE* f = std::fopen(err.c_str(), "r")) {
+          char buf[512];
+          while (std::fgets(buf, sizeof buf, f)) fmt::print("    {}", buf);
+          std::fclose(f);
+        }
+      fs::remove(err);
       fs::remove_all(out);
     }
   }
