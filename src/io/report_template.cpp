@@ -27,10 +27,10 @@ const Keys kCharts = {"speed_histogram", "height_histogram", "energy_histogram",
                       "speed_cdf",       "height_cdf",       "energy_cdf",
                       "profile",         "rd_histogram",     "id_histogram",
                       "rd_cdf",          "id_cdf",           "quarry_section"};
-const Keys kSheetKeys = {"summary",      "inputs",   "barrier", "quarry", "profile",
-                         "trajectories", "crossings"};
-const Keys kOrderKeys = {"summary", "barriers", "quarries", "profile",
-                         "inputs",  "trajectories", "crossings"};
+const Keys kSheetKeys = {"summary", "inputs",       "blocks",   "barrier", "quarry",
+                         "profile", "trajectories", "crossings"};
+const Keys kOrderKeys = {"summary", "barriers", "quarries",     "profile",
+                         "inputs",  "blocks",   "trajectories", "crossings"};
 // Sheet names holding "{name}" (one sheet per barrier / per quarry row).
 bool per_item_sheet(std::string_view key) { return key == "barrier" || key == "quarry"; }
 
@@ -65,7 +65,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "open_class_capacity", "input_notes", "quarry_all", "quarry_all_note", "travel_time",
                  "travel_time_value", "runout_quarry_note", "failing", "candidate_passes",
                  "candidate_fails", "candidate_warns", "verify_note", "passing_height_note",
-                 "translational_energy_note"};
+                 "translational_energy_note", "blocks_sheet"};
   s["basis"] = {"model", "not_modelled", "statistics", "barriers", "quarries"};
   s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
                             "class_mel", "class_sel", "mel_req", "sel_req",

@@ -67,7 +67,7 @@ void Report::write() {
     used.push_back(lower(name));
     return check_ptr(workbook_add_worksheet(wb_, name.c_str()), "workbook_add_worksheet");
   };
-  for (const char* k : {"summary", "inputs", "profile", "trajectories", "crossings"})
+  for (const char* k : {"summary", "inputs", "blocks", "profile", "trajectories", "crossings"})
     used.push_back(lower(t_.get("sheets", k)));
   used.push_back("history");  // reserved by Excel, which refuses a workbook with such a sheet
   std::vector<std::string> barrier_names, quarry_names;
@@ -95,6 +95,7 @@ void Report::write() {
     quarry(quarry_sheets[i], quarry_names[i], i);
   profile(sheets.at("profile"), t_.get("sheets", "profile"));
   inputs(sheets.at("inputs"));
+  blocks(sheets.at("blocks"));
   trajectories(sheets.at("trajectories"));
   crossings(sheets.at("crossings"));
   worksheet_activate(sheets.at("summary"));

@@ -1,5 +1,8 @@
-// The Inputs sheet: the scenario as read (simulation settings, materials, blocks, sources, the
-// profile's vertices, observation lines), the barriers' inputs, and the scenario's text.
+// The Inputs sheet: the scenario as read (simulation settings, materials, sources, the profile's
+// vertices, observation lines), the barriers' inputs, and the scenario's text; and the Blocks
+// sheet: the block groups, a table that runs over pages (100 blocks at Vaujany), on a sheet of
+// its own so that its headings repeat on every printed page (Excel repeats one row range a
+// sheet).
 #include "xlsx_report_writer.hpp"
 
 #include <cmath>
@@ -27,7 +30,10 @@ void Report::inputs(lxw_worksheet* ws) {
   if (sc) {
     r = inputs_simulation(ws, r, *sc);
     r = inputs_materials(ws, r, *sc);
-    r = inputs_blocks(ws, r, *sc);
+    // The block groups are on a sheet of their own: say where.
+    r = table_title(ws, r, "blocks");
+    text(ws, r++, 0, replace_all(t_.get("labels", "blocks_sheet"), "{sheet}", t_.get("sheets", "blocks")),
+         note());
     r = inputs_sources(ws, r, *sc);
     r = inputs_vertices(ws, r, *sc);
     r = inputs_lines(ws, r, *sc);
@@ -104,8 +110,20 @@ Row Report::inputs_materials(lxw_worksheet* ws, Row r, const LoadedScenario& sc)
   return r;
 }
 
+void Report::blocks(lxw_worksheet* ws) {
+  page_setup(ws);
+  width(ws, 0, 0, 30);
+  width(ws, 1, 6, 16);
+  text(ws, 0, 0, t_.get("titles", "blocks"), title());
+  if (!d_.scenario) return;
+  const Row head = 2;
+  const Row end = inputs_blocks(ws, head, *d_.scenario);
+  check(worksheet_print_area(ws, 0, 0, end > 0 ? end - 1 : 0, 6), "worksheet_print_area");
+  check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
+}
+
+// The block groups' table from row r (its heading there), a quarry section's under its name.
 Row Report::inputs_blocks(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
-  r = table_title(ws, r, "blocks");
   headings(ws, r++, 0, "blocks",
            {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"});
   each_section(ws, r, sc, [&](const std::vector<BlockGroup>& groups, const sim::Scenario&) {

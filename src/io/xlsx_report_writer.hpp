@@ -254,6 +254,7 @@ class Report {
 
   // -- Inputs (xlsx_report_inputs.cpp)
   void inputs(lxw_worksheet* ws);
+  void blocks(lxw_worksheet* ws);  // the block groups, on a sheet of their own (xlsx_report_inputs.cpp)
   template <class Write>
   void each_section(lxw_worksheet* ws, Row& r, const LoadedScenario& sc, Write&& write);
   Row inputs_simulation(lxw_worksheet* ws, Row r, const LoadedScenario& sc);

@@ -523,8 +523,8 @@ TEST_F(Check, WritesTheDesignReportWithABarrierSheetAndItsCharts) {
   PIERRE_NEED_PROGRAM("unzip");
   const std::string parts = zip_listing(out / "report.xlsx");
   ASSERT_FALSE(parts.empty()) << "unzip lists nothing: report.xlsx is not a zip";
-  // Summary, Inputs, Profile, Trajectories, Crossings and one sheet for the one barrier.
-  EXPECT_EQ(count_of(parts, "xl/worksheets/sheet"), 6u) << parts;
+  // Summary, Inputs, Blocks, Profile, Trajectories, Crossings and one sheet for the one barrier.
+  EXPECT_EQ(count_of(parts, "xl/worksheets/sheet"), 7u) << parts;
   // Six charts on the barrier sheet (3 histograms, 3 CDFs) and the profile.
   EXPECT_EQ(count_of(parts, "xl/charts/chart"), 7u) << parts;
 }

@@ -46,7 +46,7 @@ TEST(ReportTemplate, ShippedTemplateHasEveryKey) {
   EXPECT_EQ(t.get("headings.design", "mel_req"), "MEL_req (kJ)");
   EXPECT_EQ(t.colour("fail_fill"), 0xFFC7CEu);
   EXPECT_EQ(t.trajectory_rows, 10000u);
-  EXPECT_EQ(t.order.size(), 7u);
+  EXPECT_EQ(t.order.size(), 8u);
   EXPECT_EQ(t.order.front(), "summary");
   EXPECT_THROW((void)t.get("sheets", "nope"), std::out_of_range);
 }
@@ -183,15 +183,16 @@ TEST(ReportTemplate, KeysAnEarlierLayoutHadAreIgnoredAndListed) {
 // follows in the built-in order, the copy's own order of the rest is kept, and it is listed.
 TEST(ReportTemplate, SheetsACopysOrderLeavesOutGoInAfterTheirBuiltInPredecessor) {
   const std::string text = shipped_with(
-      "order = [\"summary\", \"barriers\", \"quarries\", \"profile\", \"inputs\", \"trajectories\", "
-      "\"crossings\"]",
+      "order = [\"summary\", \"barriers\", \"quarries\", \"profile\", \"inputs\", \"blocks\", "
+      "\"trajectories\", \"crossings\"]",
       "order = [\"crossings\", \"summary\", \"barriers\", \"profile\", \"trajectories\"]");
   TempDir dir;
   const auto t = load_report_template(dir.write("report.toml", text));
   EXPECT_EQ(t.order, (std::vector<std::string>{"crossings", "summary", "barriers", "quarries",
-                                               "profile", "inputs", "trajectories"}));
+                                               "profile", "inputs", "blocks", "trajectories"}));
   EXPECT_EQ(t.built_in_keys,
-            (std::vector<std::string>{"sheets.order: quarries", "sheets.order: inputs"}));
+            (std::vector<std::string>{"sheets.order: quarries", "sheets.order: inputs",
+                                      "sheets.order: blocks"}));
   // The first sheet of the built-in order, left out, goes first.
   const auto first = load_report_template(dir.write(
       "first.toml", shipped_with("order = [\"summary\", ", "order = [")));

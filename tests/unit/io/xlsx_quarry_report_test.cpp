@@ -196,9 +196,8 @@ std::unique_ptr<Fixture> make_fixture() {
   return f;
 }
 
-const std::vector<std::string> kOrder = {"Summary",      "Quarry Face A", "Quarry East",
-                                         "Profile",      "Inputs",        "Trajectories",
-                                         "Crossings"};
+const std::vector<std::string> kOrder = {"Summary", "Quarry Face A", "Quarry East",  "Profile",
+                                         "Inputs",  "Blocks",        "Trajectories", "Crossings"};
 
 TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
   PIERRE_NEED_PROGRAM("unzip");

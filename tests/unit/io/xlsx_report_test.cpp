@@ -261,7 +261,7 @@ TEST(XlsxReport, WorkbookStructureChartsAndConditionalFormats) {
     const auto b = p + 13;
     order.push_back(wb.substr(b, wb.find('"', b) - b));
   }
-  EXPECT_EQ(order, (std::vector<std::string>{"Summary", "Screen A", "Profile", "Inputs",
+  EXPECT_EQ(order, (std::vector<std::string>{"Summary", "Screen A", "Profile", "Inputs", "Blocks",
                                              "Trajectories", "Crossings"}));
 
   // Summary (sheet1): status cells coloured by conditional formats, not by static fills.
@@ -389,7 +389,7 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   // Every sheet, raw values rather than as shown.
   auto [r, sheets] = export_sheets(xlsx, dir.path());
   ASSERT_EQ(r.status, 0) << r.output;
-  for (const char* s : {"Summary", "Screen A", "Profile", "Inputs", "Trajectories", "Crossings"})
+  for (const char* s : {"Summary", "Screen A", "Profile", "Inputs", "Blocks", "Trajectories", "Crossings"})
     EXPECT_TRUE(sheets.count(s)) << "no sheet " << s << "\n" << r.output;
   ASSERT_TRUE(sheets.count("Summary") && sheets.count("Screen A"));
 
@@ -968,6 +968,35 @@ void write_zip(const fs::path& zip_file, const std::vector<std::pair<std::string
     ASSERT_EQ(zipCloseFileInZip(z), ZIP_OK);
   }
   ASSERT_EQ(zipClose(z, nullptr), ZIP_OK);
+}
+
+// The block groups are on a sheet of their own, their headings repeated on every printed page
+// (the print titles; on Inputs the table ran over pages without them), and Inputs says where.
+TEST(XlsxReport, TheBlockGroupsHaveASheetWithHeadingsOnEveryPage) {
+  PIERRE_NEED_PROGRAM("soffice");
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  const auto f = make_fixture();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const std::string wb = zip_entry(xlsx, "xl/workbook.xml", dir.path());
+  EXPECT_NE(wb.find(">Blocks!$3:$3</definedName>"), std::string::npos) << wb;
+  const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Sheet& b = sheets.at("Blocks");
+  ASSERT_GT(b.size(), 2u);
+  EXPECT_EQ(cell(b, 0, 0)->text, "Block groups");
+  EXPECT_EQ(cell(b, 2, 0)->text, "Block group");
+  const auto& groups = f->scenario.block_groups;
+  ASSERT_FALSE(groups.empty());
+  EXPECT_EQ(b.size(), 3u + groups.size());
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    EXPECT_EQ(cell(b, 3 + k, 0)->text, groups[k].id);
+    EXPECT_EQ(number(b, 3 + k, 6), static_cast<double>(groups[k].count));
+  }
+  const Sheet& in = sheets.at("Inputs");
+  EXPECT_TRUE(find_row(in, 0, "On the sheet Blocks: a long table, on a sheet of its own so that "
+                              "its headings are on every printed page."));
 }
 
 // The read-back that catches a part libxlsxwriter cut short (xlsx_parts_check.hpp) passes a
