@@ -109,14 +109,14 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
                                                         : "",  // "-": no values
                           l.gov->how);
       if (first)
-        fmt::print(out, "{:<{}} {:>6} {:>6.1f}  ", r.name, wq, l.s->count, H);
+        fmt::print(out, "{:<{}} {:>6} {:>6}  ", r.name, wq, l.s->count, metres(H));
       else if (l.s == &r.id && !l.per_h)
         fmt::print(out, "{:<{}} {:>6} {:>6}  ", "", wq, l.s->count, "");
       else
         fmt::print(out, "{:<{}} {:>6} {:>6}  ", "", wq, "", "");
       first = false;
-      fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}  {}\n", l.label, pair(p50, o50),
-                 pair(p95, o95), metres(p99), pair(mx, omx), gov);
+      fmt::print(out, "{:<6} {:>15} {:>15} {:>8} {:>15}{}\n", l.label, pair(p50, o50),
+                 pair(p95, o95), metres(p99), pair(mx, omx), gov.empty() ? "" : "  " + gov);
     }
     // A group's sections, each on its own (docs/quarry.md: per section and pooled).
     if (r.sections.size() > 1)
@@ -125,7 +125,7 @@ void print_quarries(std::FILE* out, const design::QuarryDesign& d, bool follows_
         for (const auto* st : {&sec.rd, &sec.id})
           fmt::print(out, "{:<{}} {:>6} {:>6}  {:<6} {:>15} {:>15} {:>8} {:>15}\n",
                      st == &sec.rd ? "  " + sec.spec.name : "", wq, st->count,
-                     st == &sec.rd ? fmt::format("{:.1f}", sec.geometry.height) : "",
+                     st == &sec.rd ? metres(sec.geometry.height) : "",
                      st == &sec.rd ? "RD m" : "ID m", metres(st->p50), metres(st->p95),
                      metres(st->p99), metres(st->max));
       }
