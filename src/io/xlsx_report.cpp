@@ -133,8 +133,10 @@ void write_report(const std::filesystem::path& file, const ReportData& data,
   const lxw_error e = workbook_close(wb);  // writes the file and frees the workbook
   if (e != LXW_NO_ERROR) {
     // libxlsxwriter's own text for a failed write is "Zip generic error ZIP_ERRNO": the
-    // system's reason (a full disk, a file size limit) says more.
-    const std::string why = errno != 0 ? std::strerror(errno) : lxw_strerror(e);
+    // system's reason (a full disk, a file size limit) beside it says more.
+    std::string why = lxw_strerror(e);
+    if (!why.empty() && why.back() == '.') why.pop_back();
+    if (errno != 0) why += fmt::format(" ({})", std::strerror(errno));
     fs::remove(tmp, ec);
     throw OutputWriteError(file, why);
   }
