@@ -1,7 +1,12 @@
 #include "console.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include <fmt/format.h>
@@ -11,34 +16,53 @@
 
 namespace pierre::app {
 
-ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), start_(clock::now()), last_(start_) {}
+ProgressBar::ProgressBar(Mode mode, double log_seconds)
+    : mode_(mode), log_seconds_(log_seconds), start_(clock::now()), last_(start_) {}
 
 void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
-  if (!enabled_ || total == 0) return;
+  if (mode_ == Mode::off || total == 0) return;
   const auto now = clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  if (done < total && (now - last_ < std::chrono::milliseconds(200) || elapsed < 0.3)) return;
+  const double since = std::chrono::duration<double>(now - last_).count();
+  if (mode_ == Mode::bar && done < total && (since < 0.2 || elapsed < 0.3)) return;
+  // The log: every log_seconds, and the end of a run that has logged.
+  if (mode_ == Mode::log && !(since >= log_seconds_ || (done == total && logged_))) return;
   last_ = now;
   const double frac = static_cast<double>(done) / static_cast<double>(total);
   const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
   const double eta = rate > 0 ? static_cast<double>(total - done) / rate : 0.0;
-  constexpr int width = 30;
-  const int filled = static_cast<int>(frac * width);
   const auto eta_s = static_cast<long>(std::lround(eta));
+  const std::string eta_text =
+      fmt::format("ETA {}:{:02d}:{:02d}", eta_s / 3600, (eta_s / 60) % 60, eta_s % 60);
   // fputs, not fmt::print: a write to a terminal that has gone away fails (EIO), and fmt would
   // throw from a worker thread, which ends the program without cleaning up.
-  std::fputs(fmt::format("\r[{}{}] {:5.1f}%  {:.0f} trajectories/s  ETA {}:{:02d}:{:02d} ",
-                         std::string(static_cast<std::size_t>(filled), '#'),
-                         std::string(static_cast<std::size_t>(width - filled), ' '), 100.0 * frac,
-                         rate, eta_s / 3600, (eta_s / 60) % 60, eta_s % 60)
-                 .c_str(),
-             stderr);
+  if (mode_ == Mode::log) {
+    std::fputs(fmt::format("pierre: {:.1f} % of {} trajectories, {:.0f} trajectories/s, {}\n",
+                           100.0 * frac, total, rate, eta_text)
+                   .c_str(),
+               stderr);
+    logged_ = true;
+  } else {
+    constexpr int width = 30;
+    const int filled = static_cast<int>(frac * width);
+    std::fputs(fmt::format("\r[{}{}] {:5.1f}%  {:.0f} trajectories/s  {} ",
+                           std::string(static_cast<std::size_t>(filled), '#'),
+                           std::string(static_cast<std::size_t>(width - filled), ' '), 100.0 * frac,
+                           rate, eta_text)
+                   .c_str(),
+               stderr);
+    drawn_ = true;
+  }
   std::fflush(stderr);
-  drawn_ = true;
 }
 
 void ProgressBar::stage(std::string_view what) {
-  if (!enabled_) return;
+  if (mode_ == Mode::log) {
+    if (logged_) std::fputs(fmt::format("pierre: {} ...\n", what).c_str(), stderr);
+    std::fflush(stderr);
+    return;
+  }
+  if (mode_ != Mode::bar) return;
   std::string line = fmt::format("\r{} ...", what);
   if (line.size() < 80) line.resize(80, ' ');  // over the bar drawn before
   std::fputs(line.c_str(), stderr);
@@ -51,6 +75,24 @@ void ProgressBar::finish() {
   std::fputs(("\r" + std::string(79, ' ') + "\r").c_str(), stderr);  // never throws
   std::fflush(stderr);
   drawn_ = false;
+}
+
+ProgressBar::Mode progress_mode(bool quiet) {
+  if (::isatty(2)) return quiet ? ProgressBar::Mode::off : ProgressBar::Mode::bar;
+  return ProgressBar::Mode::log;
+}
+
+double progress_log_seconds() {
+  const char* v = std::getenv("PIERRE_PROGRESS_SECONDS");
+  if (!v || !*v) return ProgressBar::kDefaultLogSeconds;
+  double s = 0;
+  const char* end = v + std::strlen(v);
+  const auto [ptr, ec] = std::from_chars(v, end, s);
+  if (ec != std::errc{} || ptr != end || !(s > 0) || !std::isfinite(s))
+    throw io::InputError("environment", 0, "PIERRE_PROGRESS_SECONDS", fmt::format("\"{}\"", v),
+                         "a number of seconds > 0 between progress lines of a run whose stderr "
+                         "is not a terminal (default 60)");
+  return s;
 }
 
 namespace {

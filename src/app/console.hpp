@@ -44,26 +44,41 @@ void print_to_stdout(Print&& print) {
   }
 }
 
-// Percentage, trajectories per second and ETA on one line of stderr, redrawn at most five times
-// a second. Disabled (does nothing) unless `enabled`; the caller passes isatty(2) && !quiet.
+// Progress of a run on stderr. On a terminal (bar): percentage, trajectories per second and ETA
+// on one line, redrawn at most five times a second, erased at the end. Elsewhere (log: a CI job's
+// log, a file): a line of the same once the run has lasted `log_seconds`, and again every
+// `log_seconds`, so that a long run is not silent for hours (and a CI system that stops a job
+// without output does not stop it); a short run logs nothing. Off: nothing.
 class ProgressBar {
  public:
-  explicit ProgressBar(bool enabled);
+  enum class Mode { off, bar, log };
+  explicit ProgressBar(Mode mode, double log_seconds = kDefaultLogSeconds);
   ~ProgressBar() { finish(); }  // an error's message then starts on a clean line
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
   void update(std::uint64_t done, std::uint64_t total);  // from one thread at a time
   // Replaces the line with the step under way after the simulation (statistics, bootstraps,
   // the report): on a large run they take seconds, and the terminal should not fall silent.
+  // (Logged as a line of its own when the run has logged its progress.)
   void stage(std::string_view what);
-  void finish();  // erases the line
+  void finish();  // erases the bar's line
+
+  static constexpr double kDefaultLogSeconds = 60;
 
  private:
   using clock = std::chrono::steady_clock;
-  bool enabled_;
-  bool drawn_ = false;
+  Mode mode_;
+  double log_seconds_;
+  bool drawn_ = false;   // the bar is on the terminal's line
+  bool logged_ = false;  // a log line was written
   clock::time_point start_, last_;
 };
+
+// The progress mode and log interval for a run: the bar on a terminal unless quiet, else the
+// log (quiet too: a long CI job must not look hung), every $PIERRE_PROGRESS_SECONDS seconds
+// (default 60). A value that is not a number of seconds > 0 is bad input (io::InputError).
+ProgressBar::Mode progress_mode(bool quiet);
+double progress_log_seconds();
 
 // The reader's notes on the input (io::LoadedScenario::notes), one line each: "Note: <file>:<line>:
 // <field>: <text>".

@@ -218,7 +218,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   design::RunSamples all(0, 1);
   std::vector<design::QuarrySectionInput> inputs;
   std::vector<std::uint64_t> seeds;
-  ProgressBar bar(!o.quiet && ::isatty(2));
+  ProgressBar bar(progress_mode(o.quiet), o.log_seconds);
   const auto t0 = std::chrono::steady_clock::now();
   std::uint64_t before = 0;
   // The report's data sheets: the first rows over all sections, each with its section.

@@ -117,6 +117,7 @@ class RunCommand final : public Command {
     // copy leaves out) goes to stderr even with --quiet: the firm running it must hear of it.
     const io::ReportTemplate layout = load_report_layout(stderr);
     (void)report_date();  // nor a bad SOURCE_DATE_EPOCH
+    const double log_seconds = progress_log_seconds();  // nor a bad PIERRE_PROGRESS_SECONDS
     const auto seed =
         seed_opt_->count() ? std::optional<std::uint64_t>(seed_) : std::nullopt;
     const auto throws =
@@ -134,6 +135,7 @@ class RunCommand final : public Command {
       q.impacts = impacts_;
       q.all_crossings = all_crossings_;
       q.quiet = quiet_;
+      q.log_seconds = log_seconds;
       q.check = check_;
       return run_quarries(loaded, layout, q);
     }
@@ -154,7 +156,7 @@ class RunCommand final : public Command {
     io::ResultFiles files(folder->staging(), sc, impacts_, all_crossings_);
     // The report's data sheets: as many rows as its layout shows (the CSVs hold every row).
     FirstRows first(files, layout.trajectory_rows, layout.crossing_rows);
-    ProgressBar bar(!quiet_ && ::isatty(2));
+    ProgressBar bar(progress_mode(quiet_), log_seconds);
     const auto t0 = std::chrono::steady_clock::now();
     const sim::RunReport rep = sim::run_simulation(
         sc, opt, first, [&](std::uint64_t done, std::uint64_t n) { bar.update(done, n); });

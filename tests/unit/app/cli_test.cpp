@@ -16,6 +16,7 @@
 #include <regex>
 #include <sstream>
 #include <map>
+#include <algorithm>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -633,6 +634,45 @@ TEST_F(Cli, ARunThatCannotWriteItsResultsLeavesTheEarlierOnes) {
       after[e.path().filename().string()] = slurp(e.path());
     EXPECT_TRUE(after == before) << "the earlier results changed, or a staging folder was left";
   }
+}
+
+// A run whose stderr is not a terminal (a CI job's log) logs its progress every
+// $PIERRE_PROGRESS_SECONDS (default 60: a short run logs nothing, as the other tests see), then
+// the steps after the simulation; quiet too, so that a long job does not look hung. A bad value
+// is bad input, said before anything is written.
+TEST_F(Cli, ARunLogsItsProgressWhenStderrIsNotATerminal) {
+  const std::string vaujany = PIERRE_SOURCE_DIR "/examples/vaujany-2d/scenario.toml";
+  const Result r = pierre_with_env(
+      "PIERRE_PROGRESS_SECONDS=0.01",
+      "run '" + vaujany + "' --quiet --threads 1 --throws 1000 --out " + q(dir_ / "out"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  std::vector<double> shares;
+  std::istringstream lines(r.err);
+  std::string line, last;
+  const std::string lead = "pierre: ", of = " % of 100000 trajectories, ";
+  while (std::getline(lines, line)) {
+    if (line.rfind(lead, 0) != 0) continue;
+    last = line;
+    const auto at = line.find(of);
+    if (at == std::string::npos) continue;  // a step after the simulation
+    shares.push_back(std::stod(line.substr(lead.size(), at - lead.size())));
+    EXPECT_NE(line.find(" trajectories/s, ETA "), std::string::npos) << line;
+  }
+  // 100 000 trajectories take a good fraction of a second: lines every 10 ms, the last at 100 %.
+  ASSERT_GE(shares.size(), 2u) << r.err;
+  EXPECT_TRUE(std::is_sorted(shares.begin(), shares.end())) << r.err;
+  EXPECT_EQ(shares.back(), 100.0) << r.err;
+  EXPECT_EQ(last, "pierre: writing summary.json and report.xlsx ...") << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / "report.xlsx"));
+
+  const Result bad = pierre_with_env("PIERRE_PROGRESS_SECONDS=soon",
+                                     "run '" + vaujany + "' --quiet --out " + q(dir_ / "bad"));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("PIERRE_PROGRESS_SECONDS: found \"soon\", expected a number of seconds > 0"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
 }
 
 // SOURCE_DATE_EPOCH fixes the report's date. One in milliseconds (a common slip) or not a
