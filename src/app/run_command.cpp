@@ -77,8 +77,8 @@ class RunCommand final : public Command {
                       ->check(whole_number(1, std::numeric_limits<std::uint32_t>::max()))
                       ->type_name("N");
     c->add_flag("--quiet,-q", quiet_,
-                check_ ? "No progress bar and no run statistics (the barrier and quarry tables and the check lines are still printed)"
-                       : "No progress bar and no results table");
+                check_ ? "No progress bar and no run statistics (the barrier and quarry tables and the check lines are still printed; a long run's progress lines still go to a stderr that is not a terminal)"
+                       : "No progress bar and no results table (a long run's progress lines still go to a stderr that is not a terminal)");
     c->add_flag("--impacts", impacts_, "Also write impacts.csv (every impact; large)");
     c->add_flag("--all-crossings", all_crossings_,
                 "Record every line crossing, both ways, and count them all (barriers still use "
