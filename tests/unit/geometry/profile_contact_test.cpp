@@ -77,6 +77,8 @@ TEST(ProfileContact, OverhangIsHitFromBelow) {
   // 1 + 12 t - g t²/2 = 6: the first (rising) root.
   const double t = (12 - std::sqrt(144 - 2 * g * 5)) / g;
   EXPECT_NEAR(c->t, t, 1e-12);
+  // Where: x = 5 + 0.5 t on the underside, measured from its start vertex (10, 6) going -x.
+  EXPECT_NEAR(c->s, 10 - (5 + 0.5 * t), 1e-12);
 }
 
 TEST(ProfileContact, DepartureFromASegmentFindsTheNextContactNotTimeZero) {

@@ -373,7 +373,7 @@ TEST(Trajectory, FreeFallMeetsTheGroundAtRootTwoGH) {
     ASSERT_FALSE(r.impacts.empty());
     const auto& first = r.impacts.front();
     const double v = std::sqrt(2 * 9.81 * h);
-    EXPECT_NEAR(first.time, std::sqrt(2 * h / 9.81), 1e-12 * std::sqrt(h));
+    EXPECT_NEAR(first.time, std::sqrt(2 * h / 9.81), 1e-12 * std::sqrt(2 * h / 9.81));  // 1e-12 relative (§7 test 1)
     EXPECT_NEAR(first.detail.vn_in, -v, 1e-12 * v);  // into the ground
     EXPECT_NEAR(first.detail.vt_in, 0.0, 1e-12 * v);
     EXPECT_NEAR(first.position.x, 50.0, 1e-12);
