@@ -513,6 +513,48 @@ TEST(TimeStepOracle, SlidingChuteTrajectoriesAgree) {
 TEST(TimeStepOracle, VaujanyDistributionsAreStatisticallyEqual) { check_distributions(vaujany_run()); }
 TEST(TimeStepOracle, QuarryDistributionsAreStatisticallyEqual) { check_distributions(quarry_run()); }
 
+// The same distributions from independent draws: the oracle runs with another seed, so its
+// sample is a second, independent sample of the model, and the two-sample KS can fail on its own
+// (with shared draws it fails only through the divergences the agreement tests already bound).
+// Twelve comparisons (the runout, and each line's speed and passing height: two lines at
+// Vaujany, three at Preg) at a family-wise 1 %: p > 0.01 / 12 each (Bonferroni).
+TEST(TimeStepOracle, IndependentDrawsGiveTheSameDistributions) {
+  int compared = 0;
+  for (sim::Scenario s : {vaujany(), quarry()}) {
+    SCOPED_TRACE(s.name);
+    sim::Scenario other = s;
+    other.settings.seed = s.settings.seed + 1;
+    const RunPair r = run_both(s, &other);
+    std::vector<std::pair<std::vector<double>, std::vector<double>>> samples;
+    std::vector<std::string> what;
+    samples.emplace_back();
+    what.push_back("runout");
+    for (const auto& t : r.core.trajectories) samples.back().first.push_back(t.runout());
+    for (const auto& t : r.oracle) samples.back().second.push_back(std::abs(t.stop.x - t.start.x));
+    for (std::size_t l = 0; l < s.lines.size(); ++l)
+      for (const bool speed : {true, false}) {
+        samples.emplace_back();
+        what.push_back(s.lines[l].name + (speed ? " speed" : " passing height"));
+        for (const auto& c : r.core.crossings)
+          if (c.line == l) samples.back().first.push_back(speed ? c.speed : c.height);
+        for (const auto& t : r.oracle)
+          for (const auto& c : t.crossings)
+            if (c.line == l) samples.back().second.push_back(speed ? c.speed : c.height);
+      }
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      const auto& [core, oracle] = samples[k];
+      if (core.empty() && oracle.empty()) continue;
+      const auto ks = stats::kolmogorov_smirnov_two_sample(core, oracle);
+      ASSERT_TRUE(ks.ok()) << what[k] << ": " << ks.error;
+      std::cout << "[oracle] independent draws, " << s.name << " " << what[k] << " (" << core.size()
+                << " vs " << oracle.size() << "): D " << ks->statistic << ", p " << ks->p_value << "\n";
+      EXPECT_GT(ks->p_value, 0.01 / 12) << what[k];
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 12);  // the count the threshold is divided by
+}
+
 // The comparison has power: small changes of the model given to the oracle alone are seen.
 TEST(TimeStepOracle, ComparisonSeesSmallModelChanges) {
   sim::Scenario rough = vaujany();
