@@ -712,6 +712,14 @@ TEST_F(Cli, ThreadCountDoesNotChangeResults) {
   j1.erase("threads");
   j2.erase("threads");
   EXPECT_EQ(j1, j2);
+  // Eight threads on enough trajectories for each to take chunks (2 × 2600 = 5200 trajectories,
+  // eleven chunks of 512): the same files as one thread, byte for byte (model-2d.md §7 test 9).
+  const std::string many = " --quiet --impacts --throws 2600 --out ";
+  ASSERT_EQ(pierre("run " + kScenario + many + q(dir_ / "m1") + " --threads 1").code, 0);
+  ASSERT_EQ(pierre("run " + kScenario + many + q(dir_ / "m8") + " --threads 8").code, 0);
+  EXPECT_EQ(summary(dir_ / "m8")["threads"], 8);
+  for (const char* f : {"trajectories.csv", "crossings.csv", "impacts.csv"})
+    EXPECT_EQ(slurp(dir_ / "m1" / f), slurp(dir_ / "m8" / f)) << f;
 }
 
 

@@ -384,11 +384,14 @@ TEST(OutputFolder, ACommitWaitsForAnotherRunsCommit) {
   const int held = ::open(out.c_str(), O_RDONLY | O_DIRECTORY);
   ASSERT_GE(held, 0);
   ASSERT_EQ(::flock(held, LOCK_EX), 0);
-  std::atomic<bool> committed{false};
+  std::atomic<bool> started{false}, committed{false};
   std::thread t([&] {
+    started = true;
     f.commit();
     committed = true;
   });
+  // Once the other thread is on its way to the commit, give it ample time to pass a broken lock.
+  while (!started.load()) std::this_thread::yield();
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_FALSE(committed.load());  // cannot have gone on while the lock is held
   EXPECT_FALSE(std::filesystem::exists(out / "x.csv"));
