@@ -39,9 +39,12 @@ Out exact_replicates(std::span<const double> sample, double p, std::uint64_t see
   out.method = WeibullBootstrapMethod::exact;
   out.weibull.resize(o.resamples);
   if (o.empirical) out.empirical.resize(o.resamples);
+  // Each resample's shape is near the sample's own: Newton from there (weibull_fit.hpp).
+  const auto whole = fit_weibull(sample);
+  const double k_hat = whole ? whole->shape : kNaN;
   const auto n = visit_resamples(sample, seed, o.resamples, o.threads,
                                  [&](std::size_t r, std::span<double> x) {
-                                   const auto w = fit_weibull(x);
+                                   const auto w = whole ? fit_weibull(x, k_hat) : fit_weibull(x);
                                    // percentile copies: x is not reordered
                                    if (o.empirical) out.empirical[r] = percentile(x, p);
                                    out.weibull[r] = w ? quantile(*w, p / 100.0) : kNaN;

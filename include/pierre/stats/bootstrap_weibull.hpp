@@ -8,9 +8,10 @@
 //
 // exact (n <= exact_up_to, 20 000 by default): Efron's bootstrap as bootstrap_replicates —
 //   n indices per resample from ResampleIndexStream, fit_weibull and percentile on the
-//   resample. Bit for bit what the design procedure computed before the binned path
-//   existed. Cost: R · n · (one Philox index, one log, ~9 exp: fit_weibull's bracketing and
-//   Newton passes): 0.9 s per quantity at n = 20 000 and 1000 resamples, 45 s at 10^6.
+//   resample, each fit's Newton started from the sample's own shape k̂ (a resample's is
+//   near it). Cost: R · n · (one Philox index, one log, ~6 exp: the Newton passes; ~10 from
+//   Menon's estimate with the bracketing, before 2026-11-24): 0.7 s per quantity at
+//   n = 20 000 and 1000 resamples, 35 s at 10^6.
 //
 // binned (n > exact_up_to): the Poisson bootstrap over quantile bins, O(n log n) once and
 //   O(bins) per resample (bins <= rank_bins + a few hundred: 4 332 at n = 10^6; 0.3 s per
