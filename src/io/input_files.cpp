@@ -18,7 +18,7 @@ void InputFilesRecord::note(const std::filesystem::path& file, const std::string
   auto& files = active->files_;
   if (std::any_of(files.begin(), files.end(), [&](const InputFile& f) { return f.file == file; }))
     return;  // a rule set shared by two barriers: once
-  files.push_back({file, sha256_hex(text), text.size()});
+  files.push_back(input_file(file, text));
 }
 
 std::string sha256_hex(const std::string& bytes) {
@@ -34,6 +34,10 @@ std::string sha256_hex(const std::string& bytes) {
     hex += kHex[b & 0xF];
   }
   return hex;
+}
+
+InputFile input_file(const std::filesystem::path& file, const std::string& text) {
+  return {file, sha256_hex(text), text.size()};
 }
 
 }  // namespace pierre::io

@@ -393,7 +393,7 @@ ReportTemplate load_report_template(const std::filesystem::path& file) {
 
   ReportTemplate tpl;
   tpl.file = file;
-  tpl.source = {file, sha256_hex(text), text.size()};
+  tpl.source = input_file(file, text);
   tpl.built_in_keys = std::move(filled);
   const auto& sections = report_template_sections();
 

@@ -38,4 +38,7 @@ class InputFilesRecord {
 // SHA-256 of `bytes`, in hex (nettle).
 std::string sha256_hex(const std::string& bytes);
 
+// The record of `file`, read as `text`: its hash and size.
+InputFile input_file(const std::filesystem::path& file, const std::string& text);
+
 }  // namespace pierre::io
