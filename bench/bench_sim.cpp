@@ -23,6 +23,7 @@
 #include "pierre/io/scenario_reader.hpp"
 #include "pierre/sim/random_stream.hpp"
 #include "pierre/sim/runner.hpp"
+#include "plain_simulator.hpp"
 #include "subdivided.hpp"
 
 using namespace pierre;
@@ -37,6 +38,7 @@ double now() {
 
 struct Rate {
   double traj_per_s, impacts_per_s, seconds;
+  double mean_stop_x = 0;  // m: what the yardstick's stop points are compared with
 };
 
 Rate simulate(const sim::Scenario& s, unsigned threads) {
@@ -46,7 +48,31 @@ Rate simulate(const sim::Scenario& s, unsigned threads) {
   const double t0 = now();
   const auto rep = sim::run_simulation(s, o, sink);
   const double dt = now() - t0;
-  return {rep.trajectories / dt, rep.impacts / dt, dt};
+  double sum = 0;
+  for (const auto& t : sink.trajectories) sum += t.stop.x;
+  return {rep.trajectories / dt, rep.impacts / dt, dt, sum / sink.trajectories.size()};
+}
+
+// Three runs, sorted by rate: the median stands for the code and the range is printed, so that
+// one run slowed by the shared machine (another process, a frequency step) does not.
+struct Rates {
+  Rate slowest, median, fastest;
+};
+template <class Run>
+Rates three_runs(Run run) {
+  Rate r[3] = {run(), run(), run()};
+  std::sort(std::begin(r), std::end(r),
+            [](const Rate& a, const Rate& b) { return a.traj_per_s < b.traj_per_s; });
+  return {r[0], r[1], r[2]};
+}
+
+// The plain yardstick (plain_simulator.hpp) on one thread.
+Rate plain(const sim::Scenario& s) {
+  bench::PlainSimulator p(s);
+  const double t0 = now();
+  const auto r = p.run();
+  const double dt = now() - t0;
+  return {r.trajectories / dt, r.impacts / dt, dt, r.mean_stop_x};
 }
 
 // One impact setting for both loops: the first material, the first block, the first segment
@@ -131,7 +157,11 @@ double peak_rss_mb() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
+  const bool quick = argc == 2 && std::string(argv[1]) == "--quick";
+  if (argc > 2 || (argc == 2 && !quick)) {
+    fmt::print(stderr, "usage: bench_sim [--quick]   (found: {})\n", argv[1]);
+    return 2;
+  }
   const fs::path root = PIERRE_SOURCE_DIR;
   const unsigned all = std::max(1u, std::thread::hardware_concurrency());
   fmt::print("pierre bench_sim — {} hardware threads{}\n\n", all, quick ? " (quick)" : "");
@@ -148,18 +178,20 @@ int main(int argc, char** argv) {
     s.settings.throws = c.throws;
     fmt::print("== {} : {} trajectories, {} profile vertices\n", c.name, s.trajectory_count(),
                s.profile.vertices().size());
-    // One thread, three runs: the median is printed, with the range, so that one run slowed
-    // by the machine (another process, a frequency step) does not stand for the code.
-    Rate runs[3] = {simulate(s, 1), simulate(s, 1), simulate(s, 1)};
-    std::sort(std::begin(runs), std::end(runs),
-              [](const Rate& a, const Rate& b) { return a.traj_per_s < b.traj_per_s; });
-    const Rate r1 = runs[1];
+    const Rates one = three_runs([&] { return simulate(s, 1); });
+    const Rate r1 = one.median;
     fmt::print("  simulation, 1 thread   : {:>10.0f} trajectories/s {:>11.0f} impacts/s ({:.2f} impacts/trajectory; median of 3 runs, {:.0f}-{:.0f} trajectories/s)\n",
                r1.traj_per_s, r1.impacts_per_s, r1.impacts_per_s / r1.traj_per_s,
-               runs[0].traj_per_s, runs[2].traj_per_s);
-    const Rate rn = simulate(s, all);
-    fmt::print("  simulation, {} threads  : {:>10.0f} trajectories/s {:>11.0f} impacts/s (x{:.2f})\n", all,
-               rn.traj_per_s, rn.impacts_per_s, rn.traj_per_s / r1.traj_per_s);
+               one.slowest.traj_per_s, one.fastest.traj_per_s);
+    const Rates many = three_runs([&] { return simulate(s, all); });
+    const Rate rn = many.median;
+    fmt::print("  simulation, {} threads  : {:>10.0f} trajectories/s {:>11.0f} impacts/s (x{:.2f}; median of 3 runs, {:.0f}-{:.0f} trajectories/s)\n",
+               all, rn.traj_per_s, rn.impacts_per_s, rn.traj_per_s / r1.traj_per_s,
+               many.slowest.traj_per_s, many.fastest.traj_per_s);
+    const Rates yard = three_runs([&] { return plain(s); });
+    fmt::print("  plain implementation   : {:>10.0f} trajectories/s {:>11.0f} impacts/s (linear segment scan, mt19937, std::normal_distribution; median of 3); simulator/plain = {:.2f}; mean stop x {:.2f} m against the simulator's {:.2f} m\n",
+               yard.median.traj_per_s, yard.median.impacts_per_s,
+               r1.traj_per_s / yard.median.traj_per_s, yard.median.mean_stop_x, r1.mean_stop_x);
     const double bare = bare_impact_loop(s, quick ? 2'000'000 : 20'000'000);
     fmt::print("  bare impact-law loop   : {:>10.0f} impacts/s; simulator/bare = {:.2f}\n", bare,
                r1.impacts_per_s / bare);
