@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "run_steps.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/version.hpp"
@@ -148,6 +149,10 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     std::fputs(("error: cannot put the results in place: " + std::string(e.what()) + "\n").c_str(),
                stderr);
+    return kExitInput;
+  } catch (const pierre::app::RunOutOfMemory& e) {  // a run too large for the memory it has
+    std::fflush(stdout);
+    std::fputs(("error: " + std::string(e.what()) + "\n").c_str(), stderr);
     return kExitInput;
   } catch (const pierre::io::OutputWriteError& e) {  // a full disk, a file size limit
     std::fflush(stdout);

@@ -234,6 +234,8 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
     const sim::RunReport rep = sim::run_simulation(
         s.scenario, opt, first,
         [&](std::uint64_t done, std::uint64_t) { bar.update(before + done, total); });
+    if (rep.out_of_memory)
+      throw RunOutOfMemory(out_of_memory_message(loaded, total, before + rep.delivered, o.out));
     if (rep.error)
       throw std::runtime_error(fmt::format("writing the results of section \"{}\" failed: {}",
                                            s.spec.name, *rep.error));

@@ -128,6 +128,28 @@ class RunCommand final : public Command {
     // far above the ground or falling against the vertex order, a material no segment uses):
     // said even when quiet, on stderr, where a pipeline's log keeps them.
     print_input_notes(quiet_ ? stderr : stdout, loaded.notes);
+    // Memory grows with the trajectories (the statistics keep each one's runout and crossings):
+    // running out of it, here or in a quarry's sections, is a count to lower, said as such.
+    try {
+      return simulate_and_report(loaded, layout, log_seconds);
+    } catch (const std::bad_alloc&) {
+      throw RunOutOfMemory(out_of_memory_message(loaded, total_trajectories(loaded), std::nullopt, out_));
+    }
+  }
+
+ private:
+  static std::uint64_t total_trajectories(const io::LoadedScenario& loaded) {
+    std::uint64_t n = loaded.scenario.trajectory_count();
+    if (!loaded.quarries.empty()) {
+      n = 0;
+      for (const io::QuarrySection& s : loaded.quarries) n += s.scenario.trajectory_count();
+    }
+    return n;
+  }
+
+  // The run after its input was read and checked: simulate, compute, write, print.
+  int simulate_and_report(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
+                          double log_seconds) {
     if (!loaded.quarries.empty()) {  // a quarry scenario: its sections, one after the other
       QuarryRunOptions q;
       q.out = out_;
@@ -163,6 +185,8 @@ class RunCommand final : public Command {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bar.finish();
+    if (rep.out_of_memory)
+      throw RunOutOfMemory(out_of_memory_message(loaded, total, rep.delivered, out_));
     if (rep.error) throw std::runtime_error("writing the results failed: " + *rep.error);
     if (rep.interrupted || interrupt.interrupted()) return report_interrupted(out_.c_str());
     bar.stage(loaded.barriers.empty() ? "statistics" : "statistics and the barriers' bootstraps");

@@ -98,8 +98,12 @@ void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std:
   if (throws) top.throws = *throws;
   if (loaded.quarries.empty()) {
     // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
-    if (throws)
+    if (throws) {
       io::check_trajectory_count(loaded.scenario, loaded.file, 0, "--throws", std::to_string(*throws));
+      io::check_memory_holds(static_cast<double>(loaded.scenario.trajectory_count()), loaded.file,
+                             0, "--throws", std::to_string(*throws),
+                             io::trajectory_count_text(loaded.scenario));
+    }
     return;
   }
   for (std::size_t i = 0; i < loaded.quarries.size(); ++i) {
@@ -112,6 +116,27 @@ void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std:
                                  io::section_label(i, loaded.quarries[i].spec.name));
     }
   }
+  if (throws)
+    io::check_sections_memory(loaded.quarries, loaded.file, 0, "--throws", std::to_string(*throws));
+}
+
+std::string out_of_memory_message(const io::LoadedScenario& loaded, std::uint64_t total,
+                                  std::optional<std::uint64_t> done, const std::string& out) {
+  const bool by_option = std::any_of(loaded.overrides.begin(), loaded.overrides.end(),
+                                     [](const std::string& o) { return o.starts_with("--throws "); });
+  const std::uint32_t throws = loaded.scenario.settings.throws;
+  const std::string where =
+      by_option ? fmt::format("--throws {}", throws)
+                : fmt::format("simulation.throws = {} in {}", throws, loaded.file.string());
+  const std::string when =
+      done ? fmt::format("after about {} of {} trajectories", *done, total)
+           : fmt::format("after the {} trajectories were simulated, in their statistics or the report",
+                         total);
+  return fmt::format(
+      "out of memory {}; nothing was written to {}. A run keeps every trajectory's runout and "
+      "every first crossing of an observation line in memory for the statistics (all crossings "
+      "with --all-crossings): run fewer trajectories, lowering {}",
+      when, out, where);
 }
 
 }  // namespace pierre::app

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "pierre/io/output_folder.hpp"
@@ -38,5 +40,19 @@ std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded
 // when the throws give the scenario, or a section, more trajectories than the reader allows.
 void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
                                   std::optional<std::uint32_t> throws);
+
+// A run that ran out of memory: the statistics keep every trajectory's runout and every first
+// crossing's values, so memory grows with the trajectories, and a count too large for what this
+// process may use is a count to lower (exit 2, nothing written, as for other input).
+class RunOutOfMemory : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Its message: how far the run got (`done` trajectories of `total` simulated; none: it ran out
+// after the simulation, in the statistics or the report), that nothing was written to `out`, and
+// the throws to lower, as the file or --throws set them.
+std::string out_of_memory_message(const io::LoadedScenario& loaded, std::uint64_t total,
+                                  std::optional<std::uint64_t> done, const std::string& out);
 
 }  // namespace pierre::app

@@ -448,6 +448,20 @@ void check_groups(const std::vector<QuarrySection>& out, const TomlTable& top, c
 
 }  // namespace
 
+void check_sections_memory(const std::vector<QuarrySection>& sections,
+                           const std::filesystem::path& file, long line, const std::string& field,
+                           const std::string& found) {
+  double total = 0;
+  std::string counted;
+  for (const QuarrySection& s : sections) {
+    total += static_cast<double>(s.scenario.trajectory_count());
+    counted += (counted.empty() ? "" : "; ") + section_label(&s - sections.data(), s.spec.name) +
+               ": " + trajectory_count_text(s.scenario);
+  }
+  if (sections.size() > 1) counted += fmt::format("; {:.3g} in all", total);
+  check_memory_holds(total, file, line, field, found, counted);
+}
+
 std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
                                          const RulesFolder& rules,
                                          const std::vector<model::Material>& materials,
@@ -508,6 +522,9 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     out.push_back(std::move(s));
   }
   check_groups(out, top, *a);
+  const toml::node* throws = root.at_path("simulation.throws").node();
+  check_sections_memory(out, file, throws ? line_of(*throws) : 0, "simulation.throws",
+                        std::to_string(settings.throws));
   return out;
 }
 

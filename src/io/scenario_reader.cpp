@@ -14,6 +14,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "barrier_reader.hpp"
 #include "pierre/io/quarry_reader.hpp"
@@ -428,6 +429,9 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
     const toml::node& throws = *s->find("throws");
     check_trajectory_count(out.scenario, scenario_file, line_of(throws), s->field("throws"),
                            describe(throws));
+    check_memory_holds(static_cast<double>(out.scenario.trajectory_count()), scenario_file,
+                       line_of(throws), s->field("throws"), describe(throws),
+                       trajectory_count_text(out.scenario));
   }
   read_lines(top, out.scenario, out.notes);
   detail::read_barriers(top, rules, out);
@@ -445,6 +449,12 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
   return out;
 }
 
+std::optional<double> physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return std::nullopt;
+  return static_cast<double>(pages) * static_cast<double>(page);
+}
+
 void check_trajectory_count(const sim::Scenario& sc, const std::filesystem::path& file, long line,
                             const std::string& field, const std::string& found,
                             const std::string& what) {
@@ -458,6 +468,27 @@ void check_trajectory_count(const sim::Scenario& sc, const std::filesystem::path
                                  what.empty() ? "in all" : "a section", what,
                                  what.empty() ? "" : ": ", sc.sources.size(), sc.blocks.size(),
                                  sc.settings.throws, static_cast<double>(n)));
+}
+
+std::string trajectory_count_text(const sim::Scenario& sc) {
+  return fmt::format("{} sources × {} blocks × {} throws are {:.3g}", sc.sources.size(),
+                     sc.blocks.size(), sc.settings.throws,
+                     static_cast<double>(sc.trajectory_count()));
+}
+
+void check_memory_holds(double trajectories, const std::filesystem::path& file, long line,
+                        const std::string& field, const std::string& found,
+                        const std::string& counted) {
+  // A count no machine of this size can hold (a throws with zeros too many): said now, not
+  // after hours of running. The least a trajectory keeps is its runout, for the percentiles.
+  const auto memory = physical_memory_bytes();
+  if (memory && trajectories * kLeastBytesPerTrajectory > *memory)
+    throw InputError(file, line, field, found,
+                     fmt::format("at most {:.3g} trajectories on this machine: the statistics keep "
+                                 "at least {} bytes of each in memory (its runout), and it has "
+                                 "{:.1f} GB ({})",
+                                 *memory / kLeastBytesPerTrajectory, kLeastBytesPerTrajectory,
+                                 *memory / 1e9, counted));
 }
 
 }  // namespace pierre::io

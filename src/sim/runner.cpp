@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <condition_variable>
 #include <exception>
+#include <new>
 #include <map>
 #include <mutex>
 #include <system_error>
@@ -47,7 +48,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   std::condition_variable cv;
   std::map<std::uint64_t, ChunkResult> pending;
   std::uint64_t next_claim = 0, next_deliver = 0, impacts = 0;
-  bool failed = false, delivering = false;
+  bool failed = false, delivering = false, out_of_memory = false;
   std::optional<std::string> error;
 
   auto stopped = [&] { return options.stop && options.stop->load(std::memory_order_relaxed); };
@@ -96,8 +97,12 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
           pending.erase(pending.begin());
           lock.unlock();
           std::optional<std::string> failure;
+          bool no_memory = false;
           try {
             sink.consume(std::move(ready));
+          } catch (const std::bad_alloc& e) {
+            failure = e.what();
+            no_memory = true;
           } catch (const std::exception& e) {
             failure = e.what();
           }
@@ -105,6 +110,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
           if (failure) {
             failed = true;
             error = failure;
+            out_of_memory = no_memory;
           }
           ++next_deliver;
           if (progress && !failed) progress(std::min(total, next_deliver * chunk), total);
@@ -120,16 +126,23 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   // --impacts, a throwing progress callback) stops the others and is reported like a sink's.
   auto guarded = [&] {
     std::string what;
+    bool no_memory = false;
     try {
       worker();
       return;
+    } catch (const std::bad_alloc& e) {
+      what = e.what();
+      no_memory = true;
     } catch (const std::exception& e) {
       what = e.what();
     } catch (...) {
       what = "a worker thread failed";
     }
     const std::lock_guard lock(mu);
-    if (!failed) error = std::move(what);
+    if (!failed) {
+      error = std::move(what);
+      out_of_memory = no_memory;
+    }
     failed = true;
     cv.notify_all();
   };
@@ -150,6 +163,8 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   rep.trajectories = total;
   rep.impacts = impacts;
   rep.error = error;
+  rep.out_of_memory = out_of_memory;
+  rep.delivered = std::min(total, next_deliver * chunk);
   rep.interrupted = next_deliver < n_chunks && !failed;
   return rep;
 }

@@ -71,6 +71,8 @@ struct RunReport {
   // A sink failure, reported instead of thrown across threads; or a scenario_fault, in which
   // case nothing was run.
   std::optional<std::string> error;
+  bool out_of_memory = false;  // the error was an allocation that failed (std::bad_alloc)
+  std::uint64_t delivered = 0;  // trajectories the sink received, in order, before it stopped
   bool interrupted = false;  // RunOptions::stop was set before every chunk was delivered
 };
 

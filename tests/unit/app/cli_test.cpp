@@ -24,6 +24,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "pierre/io/scenario_reader.hpp"
 #include "support/cli_fixture.hpp"
 #include "support/tools.hpp"
 #include "support/workbook_reader.hpp"
@@ -195,21 +196,78 @@ TEST_F(Cli, BadInputExitsTwoAndCreatesNothing) {
 
 // --throws is held to the reader's limit of 2^53 trajectories (simulation.throws is). It was
 // not: 4400 sources × 1e6 blocks × 4294967295 throws wrapped past 2^64 and the run ended in an
-// "internal error" (exit 3); a count between 2^53 and 2^64 started a run of that many.
+// "internal error" (exit 3); a count between 2^53 and 2^64 started a run of that many. (A file
+// of 4.4e9 trajectories is now refused on most machines for their memory, before --throws is
+// looked at: 3 sources × 1e6 blocks here.)
 TEST_F(Cli, ThrowsOptionIsHeldToTheTrajectoryLimitBeforeAnythingIsWritten) {
   std::string text =
       "[scenario]\nname = \"many\"\n[simulation]\nseed = 1\nthrows = 1\n[profile]\n"
       "file = \"profile.csv\"\n[materials.talus]\npreset = \"talus\"\n[materials.road]\n"
       "preset = \"talus\"\n[blocks]\n[[blocks.table]]\nmass = 500.0\ncount = 1000000\n";
-  for (int i = 0; i < 4400; ++i) text += "[[sources]]\nx = 5.0\nz = 67.5\n";
+  for (int i = 0; i < 3; ++i) text += "[[sources]]\nx = 5.0\nz = 67.5\n";
   std::ofstream(dir_ / "many.toml") << text;
   fs::copy_file(PIERRE_TEST_DATA "/small/profile.csv", dir_ / "profile.csv");
-  ASSERT_EQ(pierre("validate " + q(dir_ / "many.toml")).code, 0);  // 4.4e9 trajectories
+  ASSERT_EQ(pierre("validate " + q(dir_ / "many.toml")).code, 0);  // 3e6 trajectories
   expect_refused_before_writing(
       dir_ / "many.toml", "--throws 4294967295",
       (dir_ / "many.toml").string() +
           ": --throws: found 4294967295, expected at most 2^53 trajectories in all "
-          "(4400 sources × 1000000 blocks × 4294967295 throws are 1.89e+19)");
+          "(3 sources × 1000000 blocks × 4294967295 throws are 1.29e+16)");
+}
+
+// A count this machine cannot hold (each trajectory keeps at least its runout, 8 bytes, for the
+// percentiles) is refused when the scenario is read, not after hours of running: a throws with
+// zeros too many, in the file or on the command line.
+TEST_F(Cli, AThrowsThisMachineCannotHoldIsRefusedBeforeTheRun) {
+  const auto memory = pierre::io::physical_memory_bytes();
+  ASSERT_TRUE(memory);
+  // 1000 blocks from one source: the throws that ask for just more than memory / 8 trajectories.
+  const auto throws = static_cast<std::uint64_t>(std::ceil(*memory / 8 / 1000)) + 1;
+  ASSERT_LE(throws, 4294967295u) << "a machine of more than 34 TB";
+  const std::string head =
+      "[scenario]\nname = \"many\"\n[simulation]\nseed = 1\nthrows = ";
+  const std::string rest =
+      "\n[profile]\nfile = \"profile.csv\"\n[materials.talus]\npreset = \"talus\"\n"
+      "[materials.road]\npreset = \"talus\"\n[blocks]\n[[blocks.table]]\nmass = 500.0\n"
+      "count = 1000\n[[sources]]\nx = 5.0\nz = 67.5\n";
+  fs::copy_file(PIERRE_TEST_DATA "/small/profile.csv", dir_ / "profile.csv");
+  std::ofstream(dir_ / "few.toml") << head + std::to_string(throws - 2) + rest;
+  std::ofstream(dir_ / "many.toml") << head + std::to_string(throws) + rest;
+  EXPECT_EQ(pierre("validate " + q(dir_ / "few.toml")).code, 0);
+  const std::string expected = fmt::format(
+      "expected at most {:.3g} trajectories on this machine: the statistics keep at least 8 "
+      "bytes of each in memory (its runout), and it has {:.1f} GB (1 sources × 1000 blocks × {} "
+      "throws are {:.3g})",
+      *memory / 8, *memory / 1e9, throws, throws * 1000.0);
+  const Result v = pierre("validate " + q(dir_ / "many.toml"));
+  EXPECT_EQ(v.code, 2);
+  EXPECT_NE(v.err.find((dir_ / "many.toml").string() + ":5: simulation.throws: found " +
+                       std::to_string(throws) + ", " + expected),
+            std::string::npos)
+      << v.err;
+  expect_refused_before_writing(dir_ / "few.toml", "--throws " + std::to_string(throws),
+                                (dir_ / "few.toml").string() + ": --throws: found " +
+                                    std::to_string(throws) + ", " + expected);
+}
+
+// A run that runs out of memory all the same (here under a limit on the address space) says so,
+// with how far it got and the throws to lower, exits 2 and leaves nothing behind. It was an
+// "internal error: writing the results failed: std::bad_alloc" (exit 3).
+TEST_F(Cli, ARunOutOfMemoryExitsTwoNamingTheThrows) {
+  const fs::path out = dir_ / "out";
+  // The program runs the test scenario in under 40 MB of address space (measured); 60 MB hold
+  // some 3·10⁵ of its trajectories (each keeps ~70 bytes for its lines and runout, more while a
+  // vector grows), not 2·10⁶. One thread: each thread's malloc arena reserves 64 MB of its own.
+  const Result r = pierre_with_env(
+      "ulimit -v 60000;", "run " + kScenario + " --quiet --threads 1 --throws 1000000 --out " + q(out));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: out of memory after about "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" of 2000000 trajectories; nothing was written to " + out.string() +
+                       ". A run keeps every trajectory's runout"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("run fewer trajectories, lowering --throws 1000000\n"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(Cli, MissingScenarioExitsTwo) {
