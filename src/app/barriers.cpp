@@ -1,5 +1,7 @@
 #include "barriers.hpp"
 
+#include "run_steps.hpp"
+
 #include <algorithm>
 #include <thread>
 
@@ -10,6 +12,7 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
   if (threads == 0) threads = std::thread::hardware_concurrency();
   io::DesignResults out;
   const sim::Scenario& sc = loaded.scenario;
+  const std::vector<design::DoubtedInput> doubts = doubted_inputs(loaded.notes);
   for (std::size_t i = 0; i < loaded.barriers.size(); ++i) {
     const design::BarrierSpec& spec = loaded.barriers[i];
     const auto it = std::find_if(sc.lines.begin(), sc.lines.end(),
@@ -27,11 +30,12 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
     s.not_reached = n >= s.speed.size() ? n - s.speed.size() : 0;
     s.blocks = design::blocks_thrown(sc.blocks);
     s.throws = sc.settings.throws;
-    const design::BarrierOutcome o = design::design_barrier(
+    design::BarrierOutcome o = design::design_barrier(
         spec, loaded.barrier_rules[i], loaded.barrier_classes[i], s, loaded.barrier_observed[i],
         it == sc.lines.end() ? 0.0 : it->x,
         design::barrier_bootstrap_seed(sc.settings.seed, i), threads);
     if (o.design) {
+      design::doubt_passes(o.design->checks, doubts);
       out.checks.insert(out.checks.end(), o.design->checks.begin(), o.design->checks.end());
       out.barriers.push_back(*o.design);
     } else {

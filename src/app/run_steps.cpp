@@ -120,6 +120,13 @@ void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std:
     io::check_sections_memory(loaded.quarries, loaded.file, 0, "--throws", std::to_string(*throws));
 }
 
+std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote>& notes) {
+  std::vector<design::DoubtedInput> out;
+  for (const io::InputNote& n : notes)
+    if (n.doubt) out.push_back(*n.doubt);
+  return out;
+}
+
 std::string out_of_memory_message(const io::LoadedScenario& loaded, std::uint64_t total,
                                   std::optional<std::uint64_t> done, const std::string& out) {
   const bool by_option = std::any_of(loaded.overrides.begin(), loaded.overrides.end(),

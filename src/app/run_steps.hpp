@@ -41,6 +41,9 @@ std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded
 void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
                                   std::optional<std::uint32_t> throws);
 
+// What the input notes doubt (likely slips), for design::doubt_passes.
+std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote>& notes);
+
 // A run that ran out of memory: the statistics keep every trajectory's runout and every first
 // crossing's values, so memory grows with the trajectories, and a count too large for what this
 // process may use is a count to lower (exit 2, nothing written, as for other input).

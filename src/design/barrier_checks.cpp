@@ -274,29 +274,6 @@ void sample_line(Builder& b) {
           num(tol, 3) + ")² with n = " + num(n, 9) + ")" + throws_needed_text(needed));
 }
 
-// A line that passes on a capacity the reader noted as likely typed in the smaller unit (3 000
-// 000 "kJ", 5 000 "m") is a WARN: `pierre check` is the gate a pipeline relies on, and a value
-// the program itself doubts must not come out as a plain PASS.
-void doubt_unit_slips(Builder& b, const CandidateBarrier& c) {
-  struct Uses {
-    const char* field;
-    const char* said;
-    const char* lines[2];
-  };
-  const Uses uses[] = {{"mel", "MEL", {"energy.mel", "exceedance.energy"}},
-                       {"sel", "SEL", {"energy.sel", nullptr}},
-                       {"height", "height", {"height.interception", "exceedance.height"}}};
-  for (const Uses& u : uses) {
-    if (std::find(c.unit_doubts.begin(), c.unit_doubts.end(), u.field) == c.unit_doubts.end())
-      continue;
-    for (CheckLine& l : b.lines)
-      if (l.status == CheckStatus::pass && (l.id == u.lines[0] || (u.lines[1] && l.id == u.lines[1])))
-        set(l, CheckStatus::warn,
-            l.reason + ", but the candidate's " + u.said + " was noted as likely typed in the " +
-                "smaller unit (see the input notes): confirm it before relying on this line");
-  }
-}
-
 }  // namespace
 
 std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const BarrierRuleSet& rules) {
@@ -351,7 +328,6 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
                     "P(h > h_i) from the Weibull fit of the simulated passing heights", column(2),
                     d.spec.acceptable_height_exceedance, d.height, "fit.h",
                     {"height", c.height.value_or(kNaN), "m", "height.interception"});
-    doubt_unit_slips(b, c);
   }
   fit_line(b, "fit.v", "the speeds", d.speed);
   fit_line(b, "fit.h", "the passing heights", d.height);

@@ -21,6 +21,28 @@ bool any_failure(const std::vector<CheckLine>& lines) {
                      [](const CheckLine& l) { return l.status == CheckStatus::fail; });
 }
 
+void doubt_passes(std::vector<CheckLine>& lines, const std::vector<DoubtedInput>& doubts) {
+  auto bears_on = [](const DoubtedInput& d, const CheckLine& l) {
+    if (!d.subject.empty() && d.subject != l.subject) return false;
+    if (d.ids.empty()) return true;
+    return std::any_of(d.ids.begin(), d.ids.end(), [&](const std::string& id) {
+      return id == l.id || (id.ends_with('.') && l.id.starts_with(id));
+    });
+  };
+  for (CheckLine& l : lines) {
+    if (l.status != CheckStatus::pass) continue;
+    std::string fields;
+    for (const DoubtedInput& d : doubts)
+      if (bears_on(d, l) && fields.find(d.field) == std::string::npos)
+        fields += (fields.empty() ? "" : ", ") + d.field;
+    if (fields.empty()) continue;
+    l.status = CheckStatus::warn;
+    l.reason += ", but it rests on " + fields +
+                ", noted as a likely slip (see the input notes): confirm it before relying on "
+                "this line";
+  }
+}
+
 SampleNeeded sample_needed(double trajectories, std::uint32_t throws, double relative,
                            double tolerance) {
   const double factor = (relative / tolerance) * (relative / tolerance);

@@ -28,14 +28,19 @@ using model::InputLimits;
 
 // The design block's density, where it is given, said when it is not a rock's: the unit slip
 // the blocks' densities are checked for (section_readers.cpp).
-void note_density(const TomlTable& d, double density, std::vector<InputNote>& notes) {
+// `barrier`: whose design block it is; its energies and their exceedance rest on it.
+void note_density(const TomlTable& d, double density, const std::string& barrier,
+                  std::vector<InputNote>& notes) {
+  const design::DoubtedInput doubt{d.field("density"), barrier, {"energy.", "exceedance.energy"}};
   if (density >= detail::kRockDensityMin && density <= detail::kRockDensityMax) return;
   notes.push_back({d.file(), line_of(*d.find("density")), d.field("density"),
                    fmt::format("the design block's density {:g} kg/m³ is {}", density,
-                               detail::density_slip(density, "an energy 1000 times too small"))});
+                               detail::density_slip(density, "an energy 1000 times too small")),
+      doubt});
 }
 
-design::DesignBlock read_design_block(const TomlTable& t, std::vector<InputNote>& notes) {
+design::DesignBlock read_design_block(const TomlTable& t, const std::string& barrier,
+                                      std::vector<InputNote>& notes) {
   const std::string expected =
       "\"largest\", { percentile = p } (of the block volumes, optional density) or "
       "{ volume = m³, density = kg/m³ }";
@@ -60,7 +65,7 @@ design::DesignBlock read_design_block(const TomlTable& t, std::vector<InputNote>
     if (d->has("density")) {
       b.density = d->required_number("density", "a density > 0 (kg/m³)");
       d->check("density", b.density > 0, "a density > 0 (kg/m³)");
-      note_density(*d, b.density, notes);
+      note_density(*d, b.density, barrier, notes);
     }
     return b;
   }
@@ -73,7 +78,7 @@ design::DesignBlock read_design_block(const TomlTable& t, std::vector<InputNote>
   const double mass = b.volume * b.density;
   d->check("volume", mass <= InputLimits::max_block_mass,
            detail::block_mass_limit("a design block", b.volume, b.density, mass, true));
-  note_density(*d, b.density, notes);
+  note_density(*d, b.density, barrier, notes);
   return b;
 }
 
@@ -97,15 +102,19 @@ struct UnitSlip {
 // A number as typed: 15 significant digits, no exponent below 10^15 (3000000, not 3e+06; 1.1).
 std::string typed(double v) { return design::number_text(v, 15); }
 
-bool note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
-                    const UnitSlip& u, std::vector<InputNote>& notes) {
-  if (!(v > u.limit)) return false;
+// `lines`: the check ids of barrier `barrier` that rest on the value (none: doubt none).
+void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
+                    const UnitSlip& u, std::vector<InputNote>& notes, const std::string& barrier = "",
+                    std::vector<std::string> lines = {}) {
+  std::optional<design::DoubtedInput> doubt;
+  if (!lines.empty()) doubt = design::DoubtedInput{t.field(key), barrier, std::move(lines)};
+  if (!(v > u.limit)) return;
   notes.push_back({t.file(), line_of(*t.find(key)), t.field(key),
                    fmt::format("{} {} {} is more than {} {}{}: it is read in {}; if it was "
                                "meant in {}, it is {} {}",
                                what, typed(v), u.unit, typed(u.limit), u.unit, u.beyond, u.unit,
-                               u.small_unit, typed(v / 1000), u.unit)});
-  return true;
+                               u.small_unit, typed(v / 1000), u.unit),
+      doubt});
 }
 
 // Rockfall barriers are some metres high and stretch some metres; their energies are up to
@@ -116,9 +125,9 @@ constexpr double kLongestElongation = 30.0;         // m
 constexpr double kLargestBarrierEnergy = 30e3;      // kJ
 constexpr double kLargestFreeBoardDiameter = 10.0;  // m: a block of some 1 400 t at 2650 kg/m³
 
-// The candidate's MEL, SEL and height so noted go into k.unit_doubts too: a check that
-// passes on one of them must not read as a plain PASS (barrier_checks.cpp).
-void note_candidate(const TomlTable& c, design::CandidateBarrier& k,
+// The candidate's MEL, SEL and height so noted doubt the lines of barrier `barrier` that pass
+// on them (design::doubt_passes); an elongation in mm only makes its check stricter.
+void note_candidate(const TomlTable& c, const design::CandidateBarrier& k, const std::string& barrier,
                     const design::EnergyClassTable& classes, std::vector<InputNote>& notes) {
   const design::EnergyClass* top = nullptr;
   for (const auto& e : classes.classes)
@@ -132,14 +141,15 @@ void note_candidate(const TomlTable& c, design::CandidateBarrier& k,
   };
   const UnitSlip length{kTallestBarrier, "m", "mm", ""};
   const UnitSlip stretch{kLongestElongation, "m", "mm", ""};
-  if (k.mel_kJ && note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ,
-                                 energy("MEL", top ? top->mel_kJ : 0), notes))
-    k.unit_doubts.push_back("mel");
-  if (k.sel_kJ && note_unit_slip(c, "sel", "the candidate's SEL", *k.sel_kJ,
-                                 energy("SEL", top ? top->sel_kJ : 0), notes))
-    k.unit_doubts.push_back("sel");
-  if (k.height && note_unit_slip(c, "height", "the candidate's height", *k.height, length, notes))
-    k.unit_doubts.push_back("height");
+  if (k.mel_kJ)
+    note_unit_slip(c, "mel", "the candidate's MEL", *k.mel_kJ, energy("MEL", top ? top->mel_kJ : 0),
+                   notes, barrier, {"energy.mel", "exceedance.energy"});
+  if (k.sel_kJ)
+    note_unit_slip(c, "sel", "the candidate's SEL", *k.sel_kJ, energy("SEL", top ? top->sel_kJ : 0),
+                   notes, barrier, {"energy.sel"});
+  if (k.height)
+    note_unit_slip(c, "height", "the candidate's height", *k.height, length, notes, barrier,
+                   {"height.interception", "exceedance.height"});
   if (k.elongation_mel)
     note_unit_slip(c, "elongation_mel", "the elongation in the MEL test", *k.elongation_mel,
                    stretch, notes);
@@ -248,7 +258,8 @@ design::ObservedSample read_observed(const fs::path& file, std::vector<InputNote
                        c.name, typed(first), c.unit,
                        beyond > 1 ? fmt::format(" (and {} more rows like it)", beyond - 1) : "",
                        typed(c.limit), c.unit, c.beyond, c.unit, c.slip, typed(first),
-                       first * c.slip_factor, c.unit)});
+                       first * c.slip_factor, c.unit),
+      {}});
   }
   if (!any)
     throw InputError(file, t.header_line, "header", "none of the columns",
@@ -341,7 +352,7 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
     const design::BarrierRuleSet& rules = cached->second.first;
     const design::EnergyClassTable& classes = cached->second.second;
 
-    b.design_block = read_design_block(t, out.notes);
+    b.design_block = read_design_block(t, b.name, out.notes);
     b.free_board_diameter = positive_number(t, "free_board_diameter", "a diameter > 0 (m)");
     if (b.free_board_diameter)
       note_unit_slip(
@@ -398,7 +409,7 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
             t.subtable("candidate", {"energy_class", "mel", "sel", "height", "elongation_mel",
                                      "elongation_sel", "distance_to_object", "residual_height"})) {
       b.candidate = read_candidate(*c, classes);
-      note_candidate(*c, *b.candidate, classes, out.notes);
+      note_candidate(*c, *b.candidate, b.name, classes, out.notes);
     }
     for (const char* key : {"acceptable_energy_exceedance", "acceptable_height_exceedance"}) {
       const auto p = t.number(key);

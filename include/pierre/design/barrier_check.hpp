@@ -29,9 +29,6 @@ struct CandidateBarrier {
   std::optional<double> elongation_mel, elongation_sel;  // declared maximum elongations, m
   std::optional<double> distance_to_object;              // m
   std::optional<double> residual_height;                 // m, for the residual height category
-  // Of mel, sel and height, those the reader noted as likely typed in the smaller unit (J for
-  // kJ, mm for m): a check that passes on one of them is a WARN, not a PASS.
-  std::vector<std::string> unit_doubts;
 };
 
 // Everything a scenario says about one barrier (io parses it from [[barriers]]).

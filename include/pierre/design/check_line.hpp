@@ -40,6 +40,18 @@ inline bool at_most(double value, double limit) { return at_least(limit, value);
 // True when any line FAILs: the exit code of `pierre check`.
 bool any_failure(const std::vector<CheckLine>& lines);
 
+// An input the reader noted as a likely slip (a density in t/m³, a work area in cm), and the
+// check lines it bears on.
+struct DoubtedInput {
+  std::string field;    // as the note names it: "blocks.density"
+  std::string subject;  // the lines' subject (a barrier, a quarry section); empty: every subject
+  std::vector<std::string> ids;  // check ids, a prefix where one ends in '.'; empty: every line
+};
+// Each PASS among the lines a doubted input bears on is a WARN, its reason saying which input
+// to confirm: `pierre check` is the gate a pipeline relies on, and a result the program itself
+// doubts must not come out as a plain PASS. FAIL, WARN and N/A stay as they are.
+void doubt_passes(std::vector<CheckLine>& lines, const std::vector<DoubtedInput>& doubts);
+
 // sample.size, barriers' and quarries' alike (design-checks.md §1 step 8, docs/quarry.md): a
 // bootstrap interval's half-width falls as 1/√n, so a relative half-width `relative` above
 // `tolerance` asks for n · (relative / tolerance)² trajectories instead of the n = `trajectories`

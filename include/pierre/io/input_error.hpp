@@ -3,8 +3,11 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "pierre/design/check_line.hpp"
 
 namespace pierre::io {
 
@@ -32,7 +35,14 @@ struct InputNote {
   long line = 0;  // 1-based; 0 when about the whole file
   std::string field;
   std::string text;
+  // A likely slip (a unit, a height a.s.l.): the check lines it puts in doubt, whose PASS is
+  // then a WARN (design::doubt_passes). None for a note on something that may well be meant.
+  std::optional<design::DoubtedInput> doubt;
   std::string message() const;
 };
+
+// The doubt of a slip that bears on the whole simulation (the blocks, a material, gravity, a
+// source's height): every check line.
+inline design::DoubtedInput doubts_every_line(std::string field) { return {std::move(field), "", {}}; }
 
 }  // namespace pierre::io

@@ -111,6 +111,45 @@ TEST_F(Check, PassingCandidateExitsZero) {
   }
 }
 
+// A density typed in t/m³ (2.65 for 2650 kg/m³) makes every block 1000 times too light; the
+// reader notes it, and no line of the run may then PASS: a pipeline gating on `check` would take
+// a barrier checked against blocks of a few kilograms for a sized one. Each PASS of the same
+// file with the density right is a WARN naming the input, and FAIL-free, the exit stays 0.
+TEST_F(Check, NoPlainPassOnBlocksTheReaderDoubts) {
+  std::string text = slurp(kData + "pass.toml");
+  const std::string right = "[blocks]\ndensity = 2650.0";
+  ASSERT_NE(text.find(right), std::string::npos);
+  text.replace(text.find(right), right.size(), "[blocks]\ndensity = 2.65");
+  const std::string profile = "\"../small/profile.csv\"";
+  ASSERT_NE(text.find(profile), std::string::npos);
+  text.replace(text.find(profile), profile.size(), "\"" + kData + "../small/profile.csv\"");
+  std::ofstream(dir_ / "slip.toml") << text;
+  const Result good = pierre("check " + kData + "pass.toml --out '" + (dir_ / "good").string() + "' -q");
+  ASSERT_EQ(good.code, 0) << good.err;
+  const Result slip = pierre("check '" + (dir_ / "slip.toml").string() + "' --out '" +
+                             (dir_ / "slip").string() + "' -q");
+  EXPECT_EQ(slip.code, 0) << slip.err;
+  EXPECT_NE(slip.err.find("slip.toml:24: blocks.density: the block density 2.65 kg/m³"),
+            std::string::npos)
+      << slip.err;
+  const auto g = summary(dir_ / "good"), b = summary(dir_ / "slip");
+  const std::string doubt = ", but it rests on blocks.density, noted as a likely slip (see the input notes)";
+  for (const auto& c : b["checks"]) {
+    SCOPED_TRACE(c.dump());
+    EXPECT_NE(c["status"], "PASS");
+    if (c["reason"].get<std::string>().find(doubt) != std::string::npos) {
+      EXPECT_EQ(c["status"], "WARN");
+    }
+  }
+  // The candidate's lines pass with the density right, and are WARNs on the doubted one.
+  for (const char* id : {"energy.mel", "energy.sel", "height.interception"}) {
+    SCOPED_TRACE(id);
+    EXPECT_EQ(check(g, id)["status"], "PASS");
+    EXPECT_EQ(check(b, id)["status"], "WARN");
+    EXPECT_NE(check(b, id)["reason"].get<std::string>().find(doubt), std::string::npos);
+  }
+}
+
 // A name longer than its column widens the column: the barrier table's and the check table's
 // later columns stay under their headings (a 25-character name pushed them out of line).
 TEST_F(Check, ALongNameWidensItsColumn) {

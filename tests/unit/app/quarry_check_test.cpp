@@ -394,6 +394,40 @@ TEST_F(QuarryCli, ThrowsOptionIsHeldToTheMemoryOfAllSectionsTogether) {
                       3.0 * throws));
 }
 
+// A work area typed in cm (6500 for 65 m) lies far past the section's floor: the reader notes
+// it, and its zone line, which passes on it, is a WARN naming the input; the other section's
+// lines are untouched.
+TEST_F(QuarryCli, AWorkAreaTheReaderDoubtsDoesNotPass) {
+  std::string text = slurp(kData + "pass.toml");
+  const std::string right = "distance = 65.0";
+  ASSERT_NE(text.find(right), std::string::npos);
+  text.replace(text.find(right), right.size(), "distance = 6500.0");
+  std::ofstream(dir_ / "cm.toml") << text;
+  const fs::path good = dir_ / "good", slip = dir_ / "slip";
+  ASSERT_EQ(pierre("check " + kData + "pass.toml --out '" + good.string() + "' -q").code, 0);
+  const Result r = pierre("check '" + (dir_ / "cm.toml").string() + "' --out '" + slip.string() + "' -q");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto g = summary(good), b = summary(slip);
+  ASSERT_EQ(g["checks"].size(), b["checks"].size());
+  std::size_t doubted = 0;
+  for (std::size_t i = 0; i < b["checks"].size(); ++i) {
+    const auto& c = b["checks"][i];
+    SCOPED_TRACE(c.dump());
+    const bool area = c["subject"] == "North" && c["id"].get<std::string>().starts_with("zone.");
+    if (!area) {
+      EXPECT_EQ(c["status"], g["checks"][i]["status"]);
+      continue;
+    }
+    ++doubted;
+    EXPECT_EQ(g["checks"][i]["status"], "PASS");
+    EXPECT_EQ(c["status"], "WARN");
+    EXPECT_NE(c["reason"].get<std::string>().find(", but it rests on quarries[0].work_areas[0].distance, "
+                                                  "noted as a likely slip"),
+              std::string::npos);
+  }
+  EXPECT_EQ(doubted, 1u);
+}
+
 TEST_F(QuarryCli, ValidateListsTheSections) {
   const Result r = pierre("validate " + kData + "pass.toml");
   ASSERT_EQ(r.code, 0) << r.err;

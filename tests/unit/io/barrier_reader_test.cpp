@@ -1,6 +1,7 @@
 // [[barriers]] in a scenario (docs/scenario-format.md): every field read, defaults, and every
 // input error naming the file, the line, the field and the value found.
 #include <gtest/gtest.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <string>
@@ -179,14 +180,23 @@ TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
   EXPECT_NE(sel[0].text.find("(the largest class of etag027-classes: SEL > 1500 kJ)"), std::string::npos)
       << sel[0].text;
   EXPECT_EQ(notes("[barriers.candidate]\nmel = 45000.0\nsel = 35000.0").size(), 2u);
-  // The capacities so noted are named on the candidate, for its check lines; the elongations
-  // (a larger one only makes the check stricter) are not.
+  // The capacities so noted doubt the lines that pass on them (design::doubt_passes); the
+  // elongations (a larger one only makes the check stricter) doubt none.
   const auto l = io::load_scenario(
       dir.write("s.toml", with_barrier("[[barriers]]\nname = \"B\"\nline = \"L\"\nrules = "
                                        "\"thesis-2015\"\n[barriers.candidate]\nmel = 3.2e6\n"
                                        "sel = 900.0\nheight = 5000.0\nelongation_mel = 6000.0\n")),
       kRules);
-  EXPECT_EQ(l.barriers.at(0).candidate->unit_doubts, (std::vector<std::string>{"mel", "height"}));
+  std::vector<std::string> doubted;
+  for (const auto& n : l.notes) {
+    if (!n.doubt) continue;
+    EXPECT_EQ(n.doubt->field, n.field);
+    EXPECT_EQ(n.doubt->subject, "B");
+    doubted.push_back(n.doubt->field + ":" + fmt::format("{}", fmt::join(n.doubt->ids, ",")));
+  }
+  EXPECT_EQ(doubted, (std::vector<std::string>{
+                         "barriers[0].candidate.mel:energy.mel,exceedance.energy",
+                         "barriers[0].candidate.height:height.interception,exceedance.height"}));
 }
 
 TEST(BarrierReader, ObservedColumnsInTheSmallerUnitAreNoted) {
