@@ -384,6 +384,16 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
                    "; the zone is the group's, pooled)";
           l.reason += ", but " + why + std::string(in_interval ? kWithinUncertainty : "");
         }
+        // A zone from a handful of blocks on the floor (most stopped above the toe, or behind
+        // the crest) is no zone to pass an area on: as sample.size says, too few reached it.
+        if (work_area && l.status == CheckStatus::pass && row.reached_floor < rules.min_reached) {
+          l.status = CheckStatus::warn;
+          l.reason += ", but only " + std::to_string(row.reached_floor) + " of " +
+                      std::to_string(row.thrown) + " blocks reached the floor (< " +
+                      std::to_string(rules.min_reached) +
+                      ", the rule set's min_reached): too few to say where the zone ends; "
+                      "check that the source lies over the face";
+        }
         if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.
         if (value > sr.geometry.floor_length)
@@ -536,14 +546,22 @@ void row_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rule
                         std::pair<std::string, const DistanceStatistics*>{"fit.RD", &row.rd}}) {
     CheckLine l = line(row.name, id, rules);
     l.what = "KS p-value of the log-normal fit of " + id.substr(4) +
-             "/H (zeros as a point mass, censored runouts as censored)";
+             "/H, over the values above zero (the zeros are the fit's point mass; censored "
+             "runouts as censored)";
     l.limit = rules.fit_p_value;
     if (st->fit && st->ks) {
       l.value = st->ks->p_value;
-      l.status = l.value < l.limit ? CheckStatus::warn : CheckStatus::pass;
+      const bool rejected = l.value < l.limit;
+      // As a barrier's fit lines: a KS test on a handful of values rejects almost no fit.
+      const bool few = st->ks->n < static_cast<double>(rules.min_reached);
+      l.status = rejected || few ? CheckStatus::warn : CheckStatus::pass;
       l.reason = "D = " + num(st->ks->statistic, 3) + ", n = " + num(st->ks->n, 6) +
-                 ", p = " + num(l.value, 3) + (l.value < l.limit ? " < " : " >= ") + num(l.limit) +
-                 " (parameters fitted to the same sample: p is optimistic)";
+                 " values above zero, p = " + num(l.value, 3) + (rejected ? " < " : " >= ") +
+                 num(l.limit) +
+                 (few && !rejected ? ", but from fewer than the " + std::to_string(rules.min_reached) +
+                                         " values the rule set asks (min_reached): a test on so "
+                                         "few values rejects almost no fit"
+                                   : " (parameters fitted to the same sample: p is optimistic)");
     } else {
       l.status = CheckStatus::warn;
       l.reason = "no fit: " + (st->fit_error.empty() ? std::string("no KS statistic") : st->fit_error);

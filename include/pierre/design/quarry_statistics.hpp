@@ -42,14 +42,15 @@ struct DistanceSample {
   std::size_t size() const { return metres.size(); }
 };
 
-// KS statistic of the mixture fit against the sample, taken below the smallest censoring
-// threshold (above it the sample's CDF is not known), with the ties at zero stepped together
-// (the point mass); p-value with Stephens' correction, n = every value (censored included).
+// KS test of the fit's log-normal against the positive values (the zeros are the fit's own
+// point mass p0, their sample share: nothing to test), taken below the smallest censoring
+// threshold (above it the sample's CDF is not known; a censored value counts among the n as one
+// beyond it); p-value with Stephens' correction, n = the positive values, censored included.
 // The fit's parameters come from the same sample: the p-value is too large (Lilliefors).
-struct MixtureKs {
+struct PositivePartKs {
   double statistic = 0;
   double p_value = 1;
-  double n = 0;
+  double n = 0;      // the positive values
   double below = 0;  // the supremum is taken for d < below (+infinity: uncensored)
 };
 
@@ -58,14 +59,15 @@ struct DistanceStatistics {
   double p50 = 0, p95 = 0, p99 = 0, max = 0;          // m
   double p50_h = 0, p95_h = 0, p99_h = 0, max_h = 0;  // / H
   std::optional<stats::CensoredLognormalFit> fit;  // of the /H values
-  std::optional<MixtureKs> ks;
+  std::optional<PositivePartKs> ks;
   std::string fit_error;  // why there is no fit
 };
 
 DistanceStatistics distance_statistics(const DistanceSample& sample);
 
-stats::Outcome<MixtureKs> mixture_ks(std::span<const double> sample,
-                                     const stats::CensoredLognormalFit& fit, double below);
+stats::Outcome<PositivePartKs> positive_part_ks(std::span<const double> sample,
+                                                const stats::CensoredLognormalFit& fit,
+                                                double below);
 
 // The type-7 percentile p (0 to 100) of `values`, whose +infinity are right-censored:
 // +infinity, beyond the profile, when more than (1 − p/100) of the values are censored; else the

@@ -520,6 +520,57 @@ TEST(QuarryZones, FitChecks) {
   EXPECT_FALSE(any_failure(good.design->checks));
 }
 
+// A fit the KS test cannot reject because it has only a handful of values above zero (most
+// blocks stopped above the toe) is a WARN, as a barrier's fit on too few crossings: p near 1
+// from 20 values says nothing. With 40 the same kind of sample passes.
+TEST(QuarryZones, AFitOnFewerValuesThanMinReachedWarns) {
+  auto runouts = [](int positive) {
+    std::vector<double> v(700, 0.0);  // at the toe or above it
+    const auto far = lognormal_runouts(static_cast<std::size_t>(positive), 20, 3);
+    v.insert(v.end(), far.begin(), far.end());
+    return v;
+  };
+  const auto few = design_quarry({section("Few", runouts(20))}, 1);
+  const auto enough = design_quarry({section("Enough", runouts(40))}, 1);
+  ASSERT_TRUE(few.design && enough.design);
+  const CheckLine* l = find(*few.design, "Few", "fit.RD");
+  ASSERT_TRUE(l);
+  EXPECT_GE(l->value, 0.05) << l->reason;  // not rejected ...
+  EXPECT_EQ(l->status, CheckStatus::warn) << l->reason;  // ... but on 20 values
+  EXPECT_NE(l->reason.find("n = 20 values above zero"), std::string::npos) << l->reason;
+  EXPECT_NE(l->reason.find("from fewer than the 30 values the rule set asks (min_reached)"),
+            std::string::npos)
+      << l->reason;
+  EXPECT_EQ(find(*enough.design, "Enough", "fit.RD")->status, CheckStatus::pass)
+      << find(*enough.design, "Enough", "fit.RD")->reason;
+}
+
+// A work area outside a zone drawn from fewer blocks on the floor than min_reached (a source
+// behind the crest: 3 of 700 went over, user review) is a WARN, not a PASS; with enough blocks
+// on the floor the same area passes.
+TEST(QuarryZones, AnAreaOutsideAZoneFromTooFewBlocksWarns) {
+  auto with_area = [](const std::string& name, int positive) {
+    std::vector<double> v(700, 0.0);
+    const auto far = lognormal_runouts(static_cast<std::size_t>(positive), 20, 3);
+    v.insert(v.end(), far.begin(), far.end());
+    auto s = section(name, v);
+    s.spec.work_areas = {{"road", 60}};
+    return s;
+  };
+  const auto out = design_quarry({with_area("Few", 3), with_area("Enough", 300)}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const CheckLine* few = find(*out.design, "Few", "zone.road");
+  ASSERT_TRUE(few);
+  EXPECT_EQ(few->status, CheckStatus::warn) << few->reason;
+  EXPECT_NE(few->reason.find("is outside the danger zone"), std::string::npos) << few->reason;
+  EXPECT_NE(few->reason.find(", but only 3 of 703 blocks reached the floor (< 30, the rule set's "
+                             "min_reached)"),
+            std::string::npos)
+      << few->reason;
+  EXPECT_EQ(find(*out.design, "Enough", "zone.road")->status, CheckStatus::pass)
+      << find(*out.design, "Enough", "zone.road")->reason;
+}
+
 // The field's P95 against the governing distance: a zone drawn shorter than what was seen
 // warns; one that covers it passes; a summary without a P95 has nothing to judge.
 TEST(QuarryZones, ObservedValuesAgainstTheGoverningDistances) {
