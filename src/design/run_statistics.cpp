@@ -38,7 +38,11 @@ void RunSamples::add(const sim::TrajectorySummary& t) {
     ++steep_energy_stops_;
     steepest_tan_ = std::max(steepest_tan_, double{t.steep_stop_tan});
   }
-  if (t.stop_reason == sim::StopReason::energy && t.impacts == 1) ++first_impact_stops_;
+  if (t.stop_reason == sim::StopReason::energy && t.impacts == 1) {
+    ++first_impact_stops_;
+    first_stop_speed_min_ = std::min(first_stop_speed_min_, t.max_speed);
+    first_stop_speed_max_ = std::max(first_stop_speed_max_, t.max_speed);
+  }
 }
 
 void RunSamples::add(const sim::Crossing& c) {
@@ -109,6 +113,8 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();
   s.steepest_energy_stop_deg = geometry::degrees(std::atan(samples.steepest_energy_stop_tan()));
   s.energy_stops_at_first_impact = samples.first_impact_stops();
+  s.first_impact_stop_speed_min = samples.first_impact_stop_speed_min();
+  s.first_impact_stop_speed_max = samples.first_impact_stop_speed_max();
   return s;
 }
 
@@ -161,17 +167,29 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
   }
   if (const std::uint64_t k = s.energy_stops_at_first_impact;
       k > 0 && static_cast<double>(k) >= kFirstImpactStopShare * static_cast<double>(s.trajectories)) {
-    // A block dropped from a few decimetres onto steep ground strikes it too slowly for the
-    // rebound to keep it going: the energy criterion stops it where it landed, and a line
-    // downslope counts it as not reached. Often a source placed a little above the ground.
+    // A block dropped from a few decimetres strikes the ground too slowly for the rebound to
+    // keep it going; one that falls far strikes so hard that the impact takes nearly all its
+    // energy (the restitution factors fall as the impact energy rises). Either way the energy
+    // criterion stops it where it landed, and a line downslope counts it as not reached. The
+    // speeds they struck at tell which.
     const std::string share =
         fixed_text(100.0 * static_cast<double>(k) / static_cast<double>(s.trajectories), 1);
-    notes.push_back(std::to_string(k) + " of " + std::to_string(s.trajectories) +
-                    " blocks (" + share + " %) came to rest at their first impact, stopped by the "
-                    "energy criterion (Eq 3.13): they struck the ground too slowly to go on. A "
-                    "source a little above steep ground drops its blocks so; if they should start "
-                    "by sliding or rolling, put the source on the ground (z at or below it) or "
-                    "give it a starting velocity (vx, vz).");
+    const double lo = s.first_impact_stop_speed_min, hi = s.first_impact_stop_speed_max;
+    const std::string speeds = lo == hi ? "at " + fixed_text(hi, 1) + " m/s"
+                                        : "at " + fixed_text(lo, 1) + " to " + fixed_text(hi, 1) + " m/s";
+    std::string why;
+    if (lo < kHardFirstImpactSpeed)
+      why += " A source a little above the ground drops its blocks so; if they should start by "
+             "sliding or rolling, put the source on the ground (z at or below it) or give it a "
+             "starting velocity (vx, vz).";
+    if (hi >= kHardFirstImpactSpeed)
+      why += std::string(" A hard impact does it too: the restitution factors fall as the "
+                         "impact's energy rises (Eq 6.4), so a block that falls far onto the ground "
+                         "keeps almost nothing") +
+             (lo < kHardFirstImpactSpeed ? "." : "; check the source's height (z) against the profile's.");
+    notes.push_back(std::to_string(k) + " of " + std::to_string(s.trajectories) + " blocks (" +
+                    share + " %) came to rest at their first impact, struck " + speeds +
+                    ": the energy criterion (Eq 3.13) stopped them there." + why);
   }
   return notes;
 }

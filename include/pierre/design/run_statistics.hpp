@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -51,8 +52,11 @@ class RunSamples {
   // steepest such ground's tan β.
   std::uint64_t steep_energy_stops() const { return steep_energy_stops_; }
   double steepest_energy_stop_tan() const { return steepest_tan_; }
-  // Energy stops at the trajectory's first impact.
+  // Energy stops at the trajectory's first impact, and the range of their largest speeds (m/s;
+  // 0 and 0 when there are none).
   std::uint64_t first_impact_stops() const { return first_impact_stops_; }
+  double first_impact_stop_speed_min() const { return first_impact_stops_ ? first_stop_speed_min_ : 0.0; }
+  double first_impact_stop_speed_max() const { return first_stop_speed_max_; }
   std::uint64_t trajectories() const { return runout_.size(); }
 
  private:
@@ -66,6 +70,7 @@ class RunSamples {
   std::uint64_t steep_energy_stops_ = 0;
   double steepest_tan_ = 0;
   std::uint64_t first_impact_stops_ = 0;
+  double first_stop_speed_min_ = std::numeric_limits<double>::infinity(), first_stop_speed_max_ = 0;
 };
 
 // count, mean, P50, P95 and max of one quantity; NaN statistics when count is 0.
@@ -105,9 +110,12 @@ struct RunStatistics {
   // stops a block whatever the slope).
   std::uint64_t energy_stops_on_steep_ground = 0;
   double steepest_energy_stop_deg = 0;  // the steepest ground of those (°)
-  // Energy stops at the first impact: blocks that never got going (a source a little above
-  // steep ground drops them with too little energy to go on).
+  // Energy stops at the first impact: blocks that never got going, dropped gently (a source a
+  // little above the ground) or hard (a fall so long that the impact takes nearly everything:
+  // the restitution factors fall as its energy rises, Eq 6.4). Their largest speed, which is
+  // the speed they struck at (a flight only gains speed), from the slowest to the fastest, m/s.
   std::uint64_t energy_stops_at_first_impact = 0;
+  double first_impact_stop_speed_min = 0, first_impact_stop_speed_max = 0;
 };
 
 RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
@@ -125,5 +133,7 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s);
 // From this share of the trajectories on, stops at the first impact are noted: a few are a
 // block that struck flat ground gently; a twentieth is a source that drops its blocks dead.
 inline constexpr double kFirstImpactStopShare = 0.05;
+// A first impact at this speed or more (a free fall of some 5 m) is a hard one, not a drop.
+inline constexpr double kHardFirstImpactSpeed = 10.0;  // m/s
 
 }  // namespace pierre::design

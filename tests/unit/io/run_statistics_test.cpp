@@ -174,28 +174,50 @@ TEST(RunStatistics, EnergyStopsOnSteepGroundAreCountedAndNoted) {
 // Energy stops at the first impact (one impact, stopped by energy) are counted, and noted from
 // a twentieth of the trajectories on: 2 of 40 is, 1 of 40 is not. A stop after two impacts, or
 // a friction stop after one, is not one.
+// The note says the speeds they struck at, and why such a stop comes about: a gentle drop
+// (a source a little above the ground), or a hard fall whose impact takes nearly all the
+// energy (user review: the note blamed a slow drop on blocks that struck at 115 m/s).
 TEST(RunStatistics, StopsAtTheFirstImpactAreCountedAndNoted) {
-  auto run = [](int dead) {
+  auto run = [](int dead, double speed) {
     design::RunSamples s(0, 1);
     for (int i = 0; i < 40; ++i) {
       sim::TrajectorySummary t;
       t.stop_reason = i == 30 ? sim::StopReason::friction : sim::StopReason::energy;
       t.impacts = i < dead || i == 30 ? 1 : 2;
+      t.max_speed = i < dead ? speed + i : 50.0;  // the others' speeds count for nothing
       s.add(t);
     }
     return design::run_statistics({}, s);
   };
-  const auto two = run(2);
+  const auto two = run(2, 2.5);
   EXPECT_EQ(two.energy_stops_at_first_impact, 2u);
+  EXPECT_EQ(two.first_impact_stop_speed_min, 2.5);
+  EXPECT_EQ(two.first_impact_stop_speed_max, 3.5);
   const auto notes = design::stop_reason_notes(two);
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_EQ(notes[0].rfind("2 of 40 blocks (5.0 %) came to rest at their first impact, stopped "
-                           "by the energy criterion (Eq 3.13)",
+  EXPECT_EQ(notes[0].rfind("2 of 40 blocks (5.0 %) came to rest at their first impact, struck at "
+                           "2.5 to 3.5 m/s: the energy criterion (Eq 3.13) stopped them there. A "
+                           "source a little above the ground drops its blocks so;",
                            0),
             0u)
       << notes[0];
   EXPECT_NE(notes[0].find("put the source on the ground"), std::string::npos);
-  const auto one = run(1);
+  EXPECT_EQ(notes[0].find("A hard impact"), std::string::npos);
+  const auto hard = design::stop_reason_notes(run(3, 115.0));
+  ASSERT_EQ(hard.size(), 1u);
+  EXPECT_NE(hard[0].find("struck at 115.0 to 117.0 m/s: the energy criterion"), std::string::npos)
+      << hard[0];
+  EXPECT_NE(hard[0].find("A hard impact does it too: the restitution factors fall as the impact's "
+                         "energy rises (Eq 6.4), so a block that falls far onto the ground keeps "
+                         "almost nothing; check the source's height (z) against the profile's."),
+            std::string::npos)
+      << hard[0];
+  EXPECT_EQ(hard[0].find("a little above"), std::string::npos) << hard[0];
+  const auto both = design::stop_reason_notes(run(2, 9.5));  // 9.5 and 10.5 m/s: either cause
+  ASSERT_EQ(both.size(), 1u);
+  EXPECT_NE(both[0].find("a little above the ground"), std::string::npos) << both[0];
+  EXPECT_NE(both[0].find("A hard impact does it too"), std::string::npos) << both[0];
+  const auto one = run(1, 2.5);
   EXPECT_EQ(one.energy_stops_at_first_impact, 1u);
   EXPECT_TRUE(design::stop_reason_notes(one).empty());
 }
