@@ -127,7 +127,7 @@ class RunCommand final : public Command {
     // Likely mistakes that do not stop the run (an x out of order read as an overhang, a source
     // far above the ground or falling against the vertex order, a material no segment uses):
     // said even when quiet, on stderr, where a pipeline's log keeps them.
-    print_input_notes(quiet_ ? stderr : stdout, loaded.notes);
+    print_input_notes(stderr, loaded.notes);
     // Memory grows with the trajectories (the statistics keep each one's runout and crossings):
     // running out of it, here or in a quarry's sections, is a count to lower, said as such.
     try {

@@ -311,7 +311,8 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   EXPECT_NE(v.out.find(note), std::string::npos) << v.out;
   const Result r = pierre("run " + q(dir_ / "s.toml") + " --out " + q(dir_ / "o"));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find(note), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find(note), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find(note), std::string::npos) << r.out;
   const Result quiet = pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o"));
   EXPECT_TRUE(quiet.out.empty()) << quiet.out;
   EXPECT_NE(quiet.err.find(note), std::string::npos) << quiet.err;
@@ -322,8 +323,10 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
 }
 
 // The reader's notes (a profile x out of order read as an overhang, a source far above the
-// ground): validate and run print them with file, line and field and still exit 0; under
-// --quiet run says them on stderr, where a pipeline's log keeps them. A quarry scenario too.
+// ground): validate and run print them with file, line and field and still exit 0; validate
+// with its verdict on stdout, run on stderr, quiet or not, where a pipeline's log keeps them
+// (they went to stdout unless --quiet: a wrapper watching stderr missed them). A quarry
+// scenario too.
 TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
   std::ofstream(dir_ / "p.csv") << "x,z,material\n0,130,t\n30,122,t\n20,106,t\n150,40,t\n200,38,\n";
   std::ofstream(dir_ / "s.toml") << one_block_scenario(
@@ -341,8 +344,9 @@ TEST_F(Cli, TheReadersNotesAreSaidByValidateAndRun) {
   EXPECT_NE(v.out.find(high), std::string::npos) << v.out;
   const Result r = pierre("run " + q(dir_ / "s.toml") + " --out " + q(dir_ / "o"));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find(overhang), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find(high), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find(overhang), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(high), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("Note: " + (dir_ / "p.csv").string()), std::string::npos) << r.out;
   const Result quiet = pierre("run " + q(dir_ / "s.toml") + " -q --out " + q(dir_ / "o"));
   EXPECT_EQ(quiet.code, 0) << quiet.err;
   EXPECT_TRUE(quiet.out.empty()) << quiet.out;
