@@ -37,4 +37,15 @@ AxisBounds equal_scale_bounds(double xmin, double xmax, double zmin, double zmax
   return b;
 }
 
+AxisRange round_axis(double lo, double hi, int intervals) {
+  if (!(std::isfinite(lo) && std::isfinite(hi) && hi > lo && intervals > 0)) return {lo, hi, 0};
+  const double decade = std::pow(10.0, std::floor(std::log10((hi - lo) / intervals)));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0, 20.0}) {
+    const double step = m * decade;
+    const double a = std::floor(lo / step) * step, b = std::ceil(hi / step) * step;
+    if ((b - a) / step <= intervals + 1e-9) return {a, b, step};
+  }
+  return {lo, hi, 0};  // only for intervals < 4: 20 × decade spans any range in intervals / 2 + 2
+}
+
 }  // namespace pierre::io

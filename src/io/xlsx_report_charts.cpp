@@ -171,8 +171,11 @@ Bounds bounds(const std::vector<geometry::Vec2>& points) {
 }
 
 void Report::curve_axes(lxw_chart* c, double lo, double hi) {
-  chart_axis_set_min(c->x_axis, lo);
-  chart_axis_set_max(c->x_axis, hi);
+  // On round numbers, so that the tick labels are (the data's own ends are not).
+  const AxisRange x = round_axis(lo, hi);
+  chart_axis_set_min(c->x_axis, x.lo);
+  chart_axis_set_max(c->x_axis, x.hi);
+  if (x.step > 0) chart_axis_set_major_unit(c->x_axis, x.step);
   chart_axis_set_min(c->y_axis, 0);
   chart_axis_set_num_format(c->x_axis, keep(t_.get("formats", "general")));
 }

@@ -18,4 +18,14 @@ AxisBounds equal_scale_bounds(double xmin, double xmax, double zmin, double zmax
                               double height);
 bool valid_extent(double xmin, double xmax, double zmin, double zmax);
 
+// One axis of values from lo to hi on round numbers: a step of 1, 2, 2.5 or 5 × 10^k that
+// cuts the range into at most `intervals`, and lo and hi moved out to multiples of it. Excel
+// labels the ticks from the minimum on: from a data minimum of 7.962 m/s they read
+// 7.96209041749611, 12.9620904174961, … (user review). An empty or invalid range (hi ≤ lo, not
+// finite) is returned as it is, with a step of 0 (the caller keeps Excel's own).
+struct AxisRange {
+  double lo = 0, hi = 1, step = 0;
+};
+AxisRange round_axis(double lo, double hi, int intervals = 8);
+
 }  // namespace pierre::io

@@ -77,4 +77,43 @@ TEST(ChartScale, NothingToGoByLeavesTheDefaults) {
   }
 }
 
+// A curve's axis from its data's ends: the user review's speeds, 7.962… to 32.1 m/s, labelled
+// 7.96209041749611, 12.9620904174961, … on an axis set to the data minimum; rounded they read
+// 5, 10, …, 35.
+TEST(ChartScale, AnAxisFromTheDataIsOnRoundNumbers) {
+  const pierre::io::AxisRange r = pierre::io::round_axis(7.962090417496109, 32.1);
+  EXPECT_EQ(r.lo, 5);
+  EXPECT_EQ(r.hi, 35);
+  EXPECT_EQ(r.step, 5);
+}
+
+// Whatever the range: it is held, in at most the intervals asked, the ends are multiples of the
+// step, and the step is 1, 2, 2.5 or 5 times a power of ten.
+TEST(ChartScale, EveryRangeIsHeldOnRoundTicks) {
+  for (double lo : {-37.5, -0.004, 0.0, 0.0123, 7.962090417496109, 96.86, 1234.0})
+    for (double span : {1e-3, 0.05, 0.7, 3.0, 24.14, 99.0, 1000.0, 31e3})
+      for (int intervals : {4, 6, 8, 10}) {
+        const double hi = lo + span;
+        const pierre::io::AxisRange r = pierre::io::round_axis(lo, hi, intervals);
+        SCOPED_TRACE(testing::Message() << lo << " " << hi << " " << intervals);
+        ASSERT_GT(r.step, 0);
+        EXPECT_LE(r.lo, lo);
+        EXPECT_GE(r.hi, hi);
+        const double n = (r.hi - r.lo) / r.step;
+        EXPECT_LE(n, intervals + 1e-9);
+        EXPECT_NEAR(r.lo / r.step, std::round(r.lo / r.step), 1e-9);
+        EXPECT_NEAR(r.hi / r.step, std::round(r.hi / r.step), 1e-9);
+        const double mantissa = r.step / std::pow(10.0, std::floor(std::log10(r.step) + 1e-12));
+        EXPECT_TRUE(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 ||
+                    std::abs(mantissa - 2.5) < 1e-9 || std::abs(mantissa - 5) < 1e-9)
+            << r.step;
+        // Not coarser than needed: a step one notch finer would take more than `intervals`
+        // (or the range is within the first notch of its decade).
+        EXPECT_GT(n, intervals / 5.0) << r.step;
+      }
+  for (const auto& bad : {pierre::io::round_axis(5, 5), pierre::io::round_axis(2, 1),
+                          pierre::io::round_axis(0, NAN)})
+    EXPECT_EQ(bad.step, 0);
+}
+
 }  // namespace
