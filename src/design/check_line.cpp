@@ -31,13 +31,15 @@ void doubt_passes(std::vector<CheckLine>& lines, const std::vector<DoubtedInput>
   };
   for (CheckLine& l : lines) {
     if (l.status != CheckStatus::pass) continue;
-    std::string fields;
+    std::vector<std::string> fields;  // each once, in the notes' order
     for (const DoubtedInput& d : doubts)
-      if (bears_on(d, l) && fields.find(d.field) == std::string::npos)
-        fields += (fields.empty() ? "" : ", ") + d.field;
+      if (bears_on(d, l) && std::find(fields.begin(), fields.end(), d.field) == fields.end())
+        fields.push_back(d.field);
     if (fields.empty()) continue;
+    std::string said;
+    for (const std::string& f : fields) said += (said.empty() ? "" : ", ") + f;
     l.status = CheckStatus::warn;
-    l.reason += ", but it rests on " + fields +
+    l.reason += ", but it rests on " + said +
                 ", noted as a likely slip (see the input notes): confirm it before relying on "
                 "this line";
   }

@@ -36,7 +36,7 @@ void note_density(const TomlTable& d, double density, const std::string& barrier
   notes.push_back({d.file(), line_of(*d.find("density")), d.field("density"),
                    fmt::format("the design block's density {:g} kg/m³ is {}", density,
                                detail::density_slip(density, "an energy 1000 times too small")),
-      doubt});
+                   doubt});
 }
 
 design::DesignBlock read_design_block(const TomlTable& t, const std::string& barrier,
@@ -114,7 +114,7 @@ void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view w
                                "meant in {}, it is {} {}",
                                what, typed(v), u.unit, typed(u.limit), u.unit, u.beyond, u.unit,
                                u.small_unit, typed(v / 1000), u.unit),
-      doubt});
+                   doubt});
 }
 
 // Rockfall barriers are some metres high and stretch some metres; their energies are up to
@@ -259,7 +259,7 @@ design::ObservedSample read_observed(const fs::path& file, std::vector<InputNote
                        beyond > 1 ? fmt::format(" (and {} more rows like it)", beyond - 1) : "",
                        typed(c.limit), c.unit, c.beyond, c.unit, c.slip, typed(first),
                        first * c.slip_factor, c.unit),
-      {}});
+           {}});
   }
   if (!any)
     throw InputError(file, t.header_line, "header", "none of the columns",

@@ -163,7 +163,7 @@ void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
                        f ? fmt::format("the toe found from the section is at x = {:.2f} m",
                                        f->toe.x)
                          : "check the toe's x"),
-      {}});
+           {}});
     }
   }
   if (in.height && g.height_derived > 0 &&
@@ -174,7 +174,7 @@ void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
                      "{:.0f} %: every distance divided by H uses the given one",
                      *in.height, g.height_derived,
                      100 * std::abs(*in.height - g.height_derived) / g.height_derived),
-      {}});
+         {}});
 }
 
 // A catch bench or a work area past the end of the section's floor: a length typed in cm (300
@@ -192,7 +192,7 @@ void note_beyond_floor(const TomlTable& q, const design::QuarrySpec& spec,
     notes.push_back({q.file(), line_of(*q.find("bench_width")), q.field("bench_width"),
                      fmt::format("bench width {:g} m: {}", *spec.bench_width,
                                  text(*spec.bench_width)),
-      design::DoubtedInput{q.field("bench_width"), spec.name, {"bench."}}});
+                     design::DoubtedInput{q.field("bench_width"), spec.name, {"bench."}}});
   const toml::array* a = q.array_of_tables("work_areas");
   for (std::size_t i = 0; a && i < spec.work_areas.size(); ++i) {
     const design::WorkArea& w = spec.work_areas[i];
@@ -201,7 +201,7 @@ void note_beyond_floor(const TomlTable& q, const design::QuarrySpec& spec,
     notes.push_back({q.file(), line_of(*t.find("distance")), t.field("distance"),
                      fmt::format("work area \"{}\" at {:g} m from the toe: {}", w.name, w.distance,
                                  text(w.distance)),
-      design::DoubtedInput{t.field("distance"), spec.name, {"zone." + w.name}}});
+                     design::DoubtedInput{t.field("distance"), spec.name, {"zone." + w.name}}});
   }
 }
 

@@ -143,7 +143,7 @@ void note_roughness(const TomlTable& t, double scale, std::vector<InputNote>& no
                                "roughness angle is {:.0f}° (the calibrated sets use 0.3 to 0.72, "
                                "typically 0.3 to 1.5)",
                                scale, typical_deg),
-      doubts_every_line(t.field("roughness"))});
+                   doubts_every_line(t.field("roughness"))});
 }
 
 // A friction angle is in degrees; one at most π/2 (0.52) reads like radians and leaves a block
@@ -155,7 +155,7 @@ void note_friction_angle(const TomlTable& t, double deg, std::vector<InputNote>&
                                "if it is in radians, it is {:.1f}°; as typed, blocks slide almost "
                                "without friction",
                                deg, geometry::degrees(deg)),
-      doubts_every_line(t.field("friction_angle"))});
+                   doubts_every_line(t.field("friction_angle"))});
 }
 
 std::vector<model::Material> read_materials(const TomlTable& top, Presets& presets,
@@ -232,7 +232,7 @@ void note_unused_materials(const TomlTable& top, const std::vector<model::Materi
                      fmt::format("material \"{}\" is defined but no segment of {} uses it",
                                  materials[m].name,
                                  profiles.size() > 1 ? "any section's profile" : "the profile"),
-      {}});
+                     {}});
   }
 }
 
@@ -312,7 +312,7 @@ void note_gravity(const TomlTable& top, double g, std::vector<InputNote>& notes)
                                "speed and energy depends on it; check the value if the slope is "
                                "on Earth",
                                g),
-      doubts_every_line("simulation.gravity")});
+                   doubts_every_line("simulation.gravity")});
 }
 
 // Lines count first crossings in the main direction (the profile's vertex order): one behind
@@ -335,7 +335,7 @@ void note_line_behind_sources(const TomlTable& t, const sim::Scenario& sc,
                    "profile's vertex order, away from the sources, so none reaches this one unless "
                    "it bounces back past it. Check x, or the order of the profile's vertices",
                    l.name, l.x, nearest->name, nearest->position.x),
-      {}});
+       {}});
 }
 
 void read_lines(const TomlTable& top, sim::Scenario& sc, std::vector<InputNote>& notes) {
