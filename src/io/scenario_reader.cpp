@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "barrier_reader.hpp"
+#include "nearest_name.hpp"
 #include "pierre/io/quarry_reader.hpp"
 #include "section_readers.hpp"
 #include "text_check.hpp"
@@ -92,6 +93,13 @@ class Presets {
     std::string s;
     for (const auto& [k, v] : presets_) s += (s.empty() ? "" : ", ") + k;
     return s;
+  }
+  // "; the nearest is talus" for a name typed wrong ("tallus"), else "".
+  std::string nearest(const std::string& name) {
+    load();
+    std::vector<std::string> all;
+    for (const auto& [k, v] : presets_) all.push_back(k);
+    return detail::nearest_name_hint(name, all);
   }
 
  private:
@@ -183,7 +191,8 @@ std::vector<model::Material> read_materials(const TomlTable& top, Presets& prese
     if (auto p = t.string("preset")) {
       const model::Material* pre = presets.find(*p);
       if (!pre)
-        t.fail("preset", fmt::format("a preset of {} ({})", presets.file().string(), presets.names()));
+        t.fail("preset", fmt::format("a preset of {} ({}){}", presets.file().string(),
+                                     presets.names(), presets.nearest(*p)));
       m = *pre;
       from_preset = true;
     }

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "csv_table.hpp"
+#include "nearest_name.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/model/model_defaults.hpp"
 #include "pierre/sim/trajectory.hpp"
@@ -159,7 +160,11 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
   std::vector<geometry::Vec2> pts;
   std::vector<int> mat_index;
   std::string names;
-  for (const auto& m : mats) names += (names.empty() ? "" : ", ") + m.name;
+  std::vector<std::string> material_names;
+  for (const auto& m : mats) {
+    names += (names.empty() ? "" : ", ") + m.name;
+    material_names.push_back(m.name);
+  }
   for (std::size_t i = 0; i < vs.size(); ++i) {
     const Vertex& v = vs[i];
     pts.push_back(v.p);
@@ -177,7 +182,7 @@ geometry::Profile read_profile(const TomlTable& top, const std::vector<model::Ma
                                          has_file && detail::whole_number_text(v.material)
                                              ? "; a decimal comma in z? numbers take a point "
                                                "(-0.5, not -0,5)"
-                                             : ""));
+                                             : nearest_name_hint(v.material, material_names)));
     if (!last) mat_index.push_back(static_cast<int>(it - mats.begin()));
   }
   std::vector<geometry::ProfileIssue> issues;

@@ -1,5 +1,7 @@
 #include "toml_fields.hpp"
 
+#include "nearest_name.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -72,7 +74,8 @@ TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::stri
     for (std::string_view a : allowed) names += (names.empty() ? "" : ", ") + std::string(a);
     throw InputError(file_, static_cast<long>(worst->source().begin.line),
                      field(written_key(worst->str())), "an unknown key",
-                     fmt::format("one of {}", names));
+                     fmt::format("one of {}{}", names,
+                                 nearest_name_hint(worst->str(), {allowed.begin(), allowed.end()})));
   }
 }
 
