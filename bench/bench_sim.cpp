@@ -50,7 +50,8 @@ Rate simulate(const sim::Scenario& s, unsigned threads) {
   const double dt = now() - t0;
   double sum = 0;
   for (const auto& t : sink.trajectories) sum += t.stop.x;
-  return {rep.trajectories / dt, rep.impacts / dt, dt, sum / sink.trajectories.size()};
+  const double n = static_cast<double>(sink.trajectories.size());
+  return {rep.trajectories / dt, rep.impacts / dt, dt, n > 0 ? sum / n : 0.0};
 }
 
 // Three runs, sorted by rate: the median stands for the code and the range is printed, so that
@@ -159,7 +160,12 @@ double peak_rss_mb() {
 int main(int argc, char** argv) {
   const bool quick = argc == 2 && std::string(argv[1]) == "--quick";
   if (argc > 2 || (argc == 2 && !quick)) {
-    fmt::print(stderr, "usage: bench_sim [--quick]   (found: {})\n", argv[1]);
+    std::string found;
+    for (int i = 1; i < argc; ++i) {
+      if (i > 1) found += ' ';
+      found += argv[i];
+    }
+    fmt::print(stderr, "usage: bench_sim [--quick]   (found: {})\n", found);
     return 2;
   }
   const fs::path root = PIERRE_SOURCE_DIR;

@@ -44,7 +44,9 @@ class PlainSimulator {
     }
     const auto& r = s.settings.roughness;
     truncated_normal_ = r.distribution == model::RoughnessDistribution::truncated_normal;
-    normal_ = std::normal_distribution<double>(r.mean, r.sd);
+    // (σ = 0 is a valid scenario, but not a valid std::normal_distribution: X is then μ.)
+    if (r.sd > 0) normal_ = std::normal_distribution<double>(r.mean, r.sd);
+    fixed_x_ = r.sd > 0 ? 0.0 : r.mean;
   }
 
   PlainRunResult run() {
@@ -75,7 +77,9 @@ class PlainSimulator {
 
   model::ImpactSample draw(const model::BlockConstants& blk) {
     model::ImpactSample smp;
-    if (truncated_normal_) {
+    if (truncated_normal_ && fixed_x_ > 0) {
+      smp.x = fixed_x_;
+    } else if (truncated_normal_) {
       do smp.x = normal_(gen_);
       while (smp.x <= 0.0);
     } else {
@@ -216,6 +220,7 @@ class PlainSimulator {
   std::normal_distribution<double> normal_;
   std::uniform_real_distribution<double> unit_{0.0, 1.0};
   bool truncated_normal_ = true;
+  double fixed_x_ = 0;  // X when σ = 0
   double g_;
   std::vector<double> line_ground_;
   std::vector<Stop> stops_;

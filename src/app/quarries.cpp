@@ -226,34 +226,40 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   std::vector<sim::Crossing> first_crossings;
   std::vector<std::uint32_t> trajectory_sections, crossing_sections;
   std::uint64_t total_trajectories = 0, total_crossings = 0;
-  for (io::QuarrySection& s : loaded.quarries) {
-    files.begin_section(s.scenario, s.spec.name);
-    QuarrySink sink(files, s.geometry, all);
-    FirstRows first(sink, layout.trajectory_rows - first_trajectories.size(),
-                    layout.crossing_rows - first_crossings.size());
-    const sim::RunReport rep = sim::run_simulation(
-        s.scenario, opt, first,
-        [&](std::uint64_t done, std::uint64_t) { bar.update(before + done, total); });
-    if (rep.out_of_memory)
-      throw RunOutOfMemory(out_of_memory_message(loaded, total, before + rep.delivered, o.out));
-    if (rep.error)
-      throw std::runtime_error(fmt::format("writing the results of section \"{}\" failed: {}",
-                                           s.spec.name, *rep.error));
-    if (rep.interrupted || interrupt.interrupted()) {
-      bar.finish();
-      return report_interrupted(o.out.c_str());
+  // Out of memory between the sections' runs (their bookkeeping, the next section's set-up):
+  // said with the trajectories the finished sections ran.
+  try {
+    for (io::QuarrySection& s : loaded.quarries) {
+      files.begin_section(s.scenario, s.spec.name);
+      QuarrySink sink(files, s.geometry, all);
+      FirstRows first(sink, layout.trajectory_rows - first_trajectories.size(),
+                      layout.crossing_rows - first_crossings.size());
+      const sim::RunReport rep = sim::run_simulation(
+          s.scenario, opt, first,
+          [&](std::uint64_t done, std::uint64_t) { bar.update(before + done, total); });
+      if (rep.out_of_memory)
+        throw RunOutOfMemory(out_of_memory_message(loaded, total, before + rep.delivered, o.out));
+      if (rep.error)
+        throw std::runtime_error(fmt::format("writing the results of section \"{}\" failed: {}",
+                                             s.spec.name, *rep.error));
+      if (rep.interrupted || interrupt.interrupted()) {
+        bar.finish();
+        return report_interrupted(o.out.c_str());
+      }
+      before += s.scenario.trajectory_count();
+      const auto section = static_cast<std::uint32_t>(&s - loaded.quarries.data());
+      trajectory_sections.insert(trajectory_sections.end(), first.trajectories.size(), section);
+      crossing_sections.insert(crossing_sections.end(), first.crossings.size(), section);
+      first_trajectories.insert(first_trajectories.end(), first.trajectories.begin(), first.trajectories.end());
+      first_crossings.insert(first_crossings.end(), first.crossings.begin(), first.crossings.end());
+      total_trajectories += first.total_trajectories;
+      total_crossings += first.total_crossings;
+      inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed,
+                        s.scenario.settings.throws});
+      seeds.push_back(s.scenario.settings.seed);
     }
-    before += s.scenario.trajectory_count();
-    const auto section = static_cast<std::uint32_t>(&s - loaded.quarries.data());
-    trajectory_sections.insert(trajectory_sections.end(), first.trajectories.size(), section);
-    crossing_sections.insert(crossing_sections.end(), first.crossings.size(), section);
-    first_trajectories.insert(first_trajectories.end(), first.trajectories.begin(), first.trajectories.end());
-    first_crossings.insert(first_crossings.end(), first.crossings.begin(), first.crossings.end());
-    total_trajectories += first.total_trajectories;
-    total_crossings += first.total_crossings;
-    inputs.push_back({s.spec, s.rules, s.geometry, std::move(sink.distances), s.observed,
-                      s.scenario.settings.throws});
-    seeds.push_back(s.scenario.settings.seed);
+  } catch (const std::bad_alloc&) {
+    throw RunOutOfMemory(out_of_memory_message(loaded, total, before, o.out));
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -293,6 +299,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   bar.finish();
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
   const auto written = folder->commit({io::kImpactsCsv});
+  if (o.committed) *o.committed = true;
   if (o.quiet) print_run_notes(stderr, stats);
   print_to_stdout([&] {
     if (!o.quiet) print_results(stdout, stats, seconds, written, loaded.quarries.size());

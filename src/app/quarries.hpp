@@ -24,6 +24,7 @@ struct QuarryRunOptions {
   unsigned threads = 0;
   bool impacts = false, all_crossings = false, quiet = false, check = false;
   double log_seconds = 60;  // progress lines when stderr is not a terminal (progress_log_seconds)
+  bool* committed = nullptr;  // set once the results are in place (a failure after it wrote them)
 };
 
 // Runs a quarry scenario (loaded.quarries not empty); returns the exit code: 0, or 1 when

@@ -124,29 +124,25 @@ class RunCommand final : public Command {
         throws_opt_->count() ? std::optional<std::uint32_t>(throws_) : std::nullopt;
     loaded.overrides = command_line_overrides(loaded, seed, throws);
     apply_command_line_overrides(loaded, seed, throws);
+    const auto memory_note = check_run_memory(loaded, throws);
     // Likely mistakes that do not stop the run (an x out of order read as an overhang, a source
     // far above the ground or falling against the vertex order, a material no segment uses):
     // said even when quiet, on stderr, where a pipeline's log keeps them.
     print_input_notes(stderr, loaded.notes);
+    if (memory_note) fmt::print(stderr, "Note: {}\n", *memory_note);
     // Memory grows with the trajectories (the statistics keep each one's runout and crossings):
     // running out of it, here or in a quarry's sections, is a count to lower, said as such.
+    // (Once the results are in place, a failure is no longer "nothing written": it stays an
+    // internal error, and a FAIL already decided is not hidden behind exit 2.)
     try {
       return simulate_and_report(loaded, layout, log_seconds);
     } catch (const std::bad_alloc&) {
+      if (committed_) throw;
       throw RunOutOfMemory(out_of_memory_message(loaded, total_trajectories(loaded), std::nullopt, out_));
     }
   }
 
  private:
-  static std::uint64_t total_trajectories(const io::LoadedScenario& loaded) {
-    std::uint64_t n = loaded.scenario.trajectory_count();
-    if (!loaded.quarries.empty()) {
-      n = 0;
-      for (const io::QuarrySection& s : loaded.quarries) n += s.scenario.trajectory_count();
-    }
-    return n;
-  }
-
   // The run after its input was read and checked: simulate, compute, write, print.
   int simulate_and_report(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
                           double log_seconds) {
@@ -159,6 +155,7 @@ class RunCommand final : public Command {
       q.quiet = quiet_;
       q.log_seconds = log_seconds;
       q.check = check_;
+      q.committed = &committed_;
       return run_quarries(loaded, layout, q);
     }
     sim::Scenario& sc = loaded.scenario;
@@ -209,6 +206,7 @@ class RunCommand final : public Command {
     bar.finish();
     if (interrupt.interrupted()) return report_interrupted(out_.c_str());
     const auto written = folder->commit({io::kImpactsCsv});
+    committed_ = true;
     if (quiet_) print_run_notes(stderr, stats);
     print_to_stdout([&] {
       if (!quiet_) print_results(stdout, stats, seconds, written);
@@ -229,6 +227,7 @@ class RunCommand final : public Command {
   unsigned threads_ = 0;
   bool check_ = false;
   bool quiet_ = false, impacts_ = false, all_crossings_ = false;
+  bool committed_ = false;  // the results are in place in DIR
   CLI::Option* seed_opt_ = nullptr;
   CLI::Option* throws_opt_ = nullptr;
 };

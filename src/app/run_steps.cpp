@@ -98,12 +98,8 @@ void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std:
   if (throws) top.throws = *throws;
   if (loaded.quarries.empty()) {
     // The reader's limit, for the count the run will make (it wrapped, exit 3; or ran on).
-    if (throws) {
+    if (throws)
       io::check_trajectory_count(loaded.scenario, loaded.file, 0, "--throws", std::to_string(*throws));
-      io::check_memory_holds(static_cast<double>(loaded.scenario.trajectory_count()), loaded.file,
-                             0, "--throws", std::to_string(*throws),
-                             io::trajectory_count_text(loaded.scenario));
-    }
     return;
   }
   for (std::size_t i = 0; i < loaded.quarries.size(); ++i) {
@@ -116,8 +112,38 @@ void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std:
                                  io::section_label(i, loaded.quarries[i].spec.name));
     }
   }
-  if (throws)
-    io::check_sections_memory(loaded.quarries, loaded.file, 0, "--throws", std::to_string(*throws));
+}
+
+std::uint64_t total_trajectories(const io::LoadedScenario& loaded) {
+  if (loaded.quarries.empty()) return loaded.scenario.trajectory_count();
+  std::uint64_t n = 0;
+  for (const io::QuarrySection& s : loaded.quarries) n += s.scenario.trajectory_count();
+  return n;
+}
+
+std::optional<std::string> check_run_memory(const io::LoadedScenario& loaded,
+                                            std::optional<std::uint32_t> throws) {
+  const double n = static_cast<double>(total_trajectories(loaded));
+  const std::string found = std::to_string(loaded.scenario.settings.throws);
+  io::check_memory_holds(n, loaded.file, throws ? 0 : loaded.throws_line,
+                         throws ? "--throws" : "simulation.throws", found,
+                         loaded.quarries.empty() ? io::trajectory_count_text(loaded.scenario)
+                                                 : io::sections_count_text(loaded.quarries));
+  // What a run likely keeps: the runout (8 bytes) and each line's first crossing (4 doubles) of
+  // every trajectory, a quarry's distances (4 doubles) instead of lines; up to twice that while a
+  // vector grows. An estimate (blocks that miss a line keep less), said, not enforced.
+  const auto memory = io::physical_memory_bytes();
+  const double per = 8.0 + 32.0 * (loaded.quarries.empty()
+                                       ? static_cast<double>(loaded.scenario.lines.size())
+                                       : 1.0);
+  const double likely = 2 * per * n;
+  if (!memory || likely <= *memory) return std::nullopt;
+  return fmt::format(
+      "{} trajectories may need about {:.1f} GB of memory (the statistics keep each one's runout "
+      "and first crossings, up to twice that while their vectors grow), more than this machine's "
+      "{:.1f} GB: if the run runs out of memory, lower {}",
+      static_cast<std::uint64_t>(n), likely / 1e9, *memory / 1e9,
+      throws ? "--throws" : "simulation.throws");
 }
 
 std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote>& notes) {
@@ -139,11 +165,14 @@ std::string out_of_memory_message(const io::LoadedScenario& loaded, std::uint64_
       done ? fmt::format("after about {} of {} trajectories", *done, total)
            : fmt::format("after the {} trajectories were simulated, in their statistics or the report",
                          total);
-  return fmt::format(
-      "out of memory {}; nothing was written to {}. A run keeps every trajectory's runout and "
-      "every first crossing of an observation line in memory for the statistics (all crossings "
-      "with --all-crossings): run fewer trajectories, lowering {}",
-      when, out, where);
+  const char* kept = loaded.quarries.empty()
+                         ? "every trajectory's runout and every first crossing of an observation "
+                           "line in memory for the statistics (all crossings with --all-crossings)"
+                         : "every trajectory's runout and distances from the toe in memory for "
+                           "the statistics";
+  return fmt::format("out of memory {}; nothing was written to {}. A run keeps {}: run fewer "
+                     "trajectories, lowering {}",
+                     when, out, kept, where);
 }
 
 }  // namespace pierre::app

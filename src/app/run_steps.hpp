@@ -41,6 +41,16 @@ std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded
 void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
                                   std::optional<std::uint32_t> throws);
 
+// Every trajectory the run makes: the scenario's, or all its quarry sections'.
+std::uint64_t total_trajectories(const io::LoadedScenario& loaded);
+
+// The run's count against this machine's memory, once --throws (`throws`, when given) is
+// applied: throws io::InputError (at --throws, or at simulation.throws) when even the least a
+// trajectory keeps cannot be held (io::check_memory_holds); returns a note when the likely need
+// is more than the machine has.
+std::optional<std::string> check_run_memory(const io::LoadedScenario& loaded,
+                                            std::optional<std::uint32_t> throws);
+
 // What the input notes doubt (likely slips), for design::doubt_passes.
 std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote>& notes);
 

@@ -7,6 +7,7 @@
 #include "console.hpp"
 #include "data_folders.hpp"
 #include "report.hpp"
+#include "run_steps.hpp"
 #include "pierre/design/design_block.hpp"
 #include "pierre/design/number_text.hpp"
 #include "pierre/io/scenario_reader.hpp"
@@ -56,6 +57,7 @@ class ValidateCommand final : public Command {
     if (!l.quarries.empty()) {
       const int code = print_quarries(l);
       print_input_notes(stdout, l.notes);
+      print_memory_note(l);
       return code;
     }
     const sim::Scenario& s = l.scenario;
@@ -101,10 +103,23 @@ class ValidateCommand final : public Command {
                  b.candidate ? "checks a candidate" : "a design (no candidate)", block_text);
     }
     print_input_notes(stdout, l.notes);
+    print_memory_note(l);
     return kExitOk;
   }
 
  private:
+  // A count this machine cannot run is no fault of the file (another machine may run it): said
+  // as a note, where `run` refuses it.
+  static void print_memory_note(const io::LoadedScenario& l) {
+    std::string note;
+    try {
+      if (const auto n = check_run_memory(l, std::nullopt)) note = *n;
+    } catch (const io::InputError& e) {
+      note = std::string(e.what()) + " (pierre run refuses it on this machine)";
+    }
+    if (!note.empty()) fmt::print("Note: {}\n", note);
+  }
+
   // A quarry scenario: one paragraph per section (docs/quarry.md).
   static int print_quarries(const io::LoadedScenario& l) {
     const sim::Scenario& s = l.scenario;

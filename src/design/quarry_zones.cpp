@@ -388,8 +388,9 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
         // the crest) is no zone to pass an area on: as sample.size says, too few reached it.
         if (work_area && l.status == CheckStatus::pass && row.reached_floor < rules.min_reached) {
           l.status = CheckStatus::warn;
-          l.reason += ", but only " + std::to_string(row.reached_floor) + " of " +
-                      std::to_string(row.thrown) + " blocks reached the floor (< " +
+          l.reason += ", but only " + std::to_string(row.reached_floor) + " of the " +
+                      (row.pooled ? "group's " : "") + std::to_string(row.thrown) +
+                      " blocks reached the floor (< " +
                       std::to_string(rules.min_reached) +
                       ", the rule set's min_reached): too few to say where the zone ends; "
                       "check that the source lies over the face";
@@ -553,10 +554,15 @@ void row_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rule
       l.value = st->ks->p_value;
       const bool rejected = l.value < l.limit;
       // As a barrier's fit lines: a KS test on a handful of values rejects almost no fit.
-      const bool few = st->ks->n < static_cast<double>(rules.min_reached);
+      const bool few = st->ks->observed < static_cast<double>(rules.min_reached);
       l.status = rejected || few ? CheckStatus::warn : CheckStatus::pass;
+      const std::string censored =
+          st->ks->observed < st->ks->n
+              ? " (" + num(st->ks->observed, 6) + " below the censoring point)"
+              : std::string();
       l.reason = "D = " + num(st->ks->statistic, 3) + ", n = " + num(st->ks->n, 6) +
-                 " values above zero, p = " + num(l.value, 3) + (rejected ? " < " : " >= ") +
+                 " values above zero" + censored + ", p = " + num(l.value, 3) +
+                 (rejected ? " < " : " >= ") +
                  num(l.limit) +
                  (few && !rejected ? ", but from fewer than the " + std::to_string(rules.min_reached) +
                                          " values the rule set asks (min_reached): a test on so "

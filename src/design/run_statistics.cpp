@@ -170,26 +170,27 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
     // A block dropped from a few decimetres strikes the ground too slowly for the rebound to
     // keep it going; one that falls far strikes so hard that the impact takes nearly all its
     // energy (the restitution factors fall as the impact energy rises). Either way the energy
-    // criterion stops it where it landed, and a line downslope counts it as not reached. The
-    // speeds they struck at tell which.
+    // criterion stops it where it landed, and a line downslope counts it as not reached. Their
+    // largest speeds (at the impact, unless thrown faster) tell which.
     const std::string share =
         fixed_text(100.0 * static_cast<double>(k) / static_cast<double>(s.trajectories), 1);
     const double lo = s.first_impact_stop_speed_min, hi = s.first_impact_stop_speed_max;
-    const std::string speeds = lo == hi ? "at " + fixed_text(hi, 1) + " m/s"
-                                        : "at " + fixed_text(lo, 1) + " to " + fixed_text(hi, 1) + " m/s";
+    const std::string speeds = lo == hi ? fixed_text(hi, 1) + " m/s"
+                                        : fixed_text(lo, 1) + " to " + fixed_text(hi, 1) + " m/s";
     std::string why;
     if (lo < kHardFirstImpactSpeed)
-      why += " A source a little above the ground drops its blocks so; if they should start by "
-             "sliding or rolling, put the source on the ground (z at or below it) or give it a "
-             "starting velocity (vx, vz).";
+      why += " A source a little above the ground drops its blocks so: if they should start by "
+             "sliding or rolling, put it on the ground (z at or below it) or give it a starting "
+             "velocity (vx, vz).";
     if (hi >= kHardFirstImpactSpeed)
       why += std::string(" A hard impact does it too: the restitution factors fall as the "
                          "impact's energy rises (Eq 6.4), so a block that falls far onto the ground "
                          "keeps almost nothing") +
              (lo < kHardFirstImpactSpeed ? "." : "; check the source's height (z) against the profile's.");
     notes.push_back(std::to_string(k) + " of " + std::to_string(s.trajectories) + " blocks (" +
-                    share + " %) came to rest at their first impact, struck " + speeds +
-                    ": the energy criterion (Eq 3.13) stopped them there." + why);
+                    share + " %) came to rest at their first impact (their largest speed, that "
+                    "of the impact unless thrown faster: " + speeds +
+                    "): the energy criterion (Eq 3.13) stopped them there." + why);
   }
   return notes;
 }

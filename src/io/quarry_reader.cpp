@@ -452,9 +452,7 @@ void check_groups(const std::vector<QuarrySection>& out, const TomlTable& top, c
 
 }  // namespace
 
-void check_sections_memory(const std::vector<QuarrySection>& sections,
-                           const std::filesystem::path& file, long line, const std::string& field,
-                           const std::string& found) {
+std::string sections_count_text(const std::vector<QuarrySection>& sections) {
   double total = 0;
   std::string counted;
   for (const QuarrySection& s : sections) {
@@ -463,7 +461,7 @@ void check_sections_memory(const std::vector<QuarrySection>& sections,
                ": " + trajectory_count_text(s.scenario);
   }
   if (sections.size() > 1) counted += fmt::format("; {:.3g} in all", total);
-  check_memory_holds(total, file, line, field, found, counted);
+  return counted;
 }
 
 std::vector<QuarrySection> read_quarries(const toml::table& root, const std::filesystem::path& file,
@@ -526,9 +524,6 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     out.push_back(std::move(s));
   }
   check_groups(out, top, *a);
-  const toml::node* throws = root.at_path("simulation.throws").node();
-  check_sections_memory(out, file, throws ? line_of(*throws) : 0, "simulation.throws",
-                        std::to_string(settings.throws));
   return out;
 }
 

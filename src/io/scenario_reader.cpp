@@ -397,6 +397,8 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
     out.materials_file = rules_dir / "materials.toml";
 
   out.scenario.settings = read_simulation(top);
+  if (const auto s = top.subtable("simulation", {}))
+    if (const toml::node* n = s->find("throws")) out.throws_line = line_of(*n);
   note_gravity(top, out.scenario.settings.gravity, out.notes);
   Presets presets(out.materials_file,
                   head->has("materials_file")
@@ -443,9 +445,6 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
     const toml::node& throws = *s->find("throws");
     check_trajectory_count(out.scenario, scenario_file, line_of(throws), s->field("throws"),
                            describe(throws));
-    check_memory_holds(static_cast<double>(out.scenario.trajectory_count()), scenario_file,
-                       line_of(throws), s->field("throws"), describe(throws),
-                       trajectory_count_text(out.scenario));
   }
   read_lines(top, out.scenario, out.notes);
   detail::read_barriers(top, rules, out);
@@ -469,6 +468,14 @@ std::optional<double> physical_memory_bytes() {
   return static_cast<double>(pages) * static_cast<double>(page);
 }
 
+namespace {
+// "1 sources × 25 blocks × 10 throws are 250", for a count `n` worked out without wrapping.
+std::string trajectory_count_text(const sim::Scenario& sc, long double n) {
+  return fmt::format("{} sources × {} blocks × {} throws are {:.3g}", sc.sources.size(),
+                     sc.blocks.size(), sc.settings.throws, static_cast<double>(n));
+}
+}  // namespace
+
 void check_trajectory_count(const sim::Scenario& sc, const std::filesystem::path& file, long line,
                             const std::string& field, const std::string& found,
                             const std::string& what) {
@@ -477,17 +484,14 @@ void check_trajectory_count(const sim::Scenario& sc, const std::filesystem::path
                         sc.settings.throws;
   if (n > 9007199254740992.0L)
     throw InputError(file, line, field, found,
-                     fmt::format("at most 2^53 trajectories {} ({}{}{} sources × {} blocks × {} "
-                                 "throws are {:.3g})",
+                     fmt::format("at most 2^53 trajectories {} ({}{}{})",
                                  what.empty() ? "in all" : "a section", what,
-                                 what.empty() ? "" : ": ", sc.sources.size(), sc.blocks.size(),
-                                 sc.settings.throws, static_cast<double>(n)));
+                                 what.empty() ? "" : ": ", trajectory_count_text(sc, n)));
 }
 
 std::string trajectory_count_text(const sim::Scenario& sc) {
-  return fmt::format("{} sources × {} blocks × {} throws are {:.3g}", sc.sources.size(),
-                     sc.blocks.size(), sc.settings.throws,
-                     static_cast<double>(sc.trajectory_count()));
+  return trajectory_count_text(sc, static_cast<long double>(sc.sources.size()) * sc.blocks.size() *
+                                       sc.settings.throws);
 }
 
 void check_memory_holds(double trajectories, const std::filesystem::path& file, long line,
@@ -498,11 +502,11 @@ void check_memory_holds(double trajectories, const std::filesystem::path& file, 
   const auto memory = physical_memory_bytes();
   if (memory && trajectories * kLeastBytesPerTrajectory > *memory)
     throw InputError(file, line, field, found,
-                     fmt::format("at most {:.3g} trajectories on this machine: the statistics keep "
-                                 "at least {} bytes of each in memory (its runout), and it has "
-                                 "{:.1f} GB ({})",
-                                 *memory / kLeastBytesPerTrajectory, kLeastBytesPerTrajectory,
-                                 *memory / 1e9, counted));
+                     fmt::format("fewer than {:.3g} trajectories, the most this machine's {:.1f} GB "
+                                 "of memory could hold even at the {} bytes the statistics keep of "
+                                 "each at the least (its runout; a run keeps more) ({})",
+                                 *memory / kLeastBytesPerTrajectory, *memory / 1e9,
+                                 kLeastBytesPerTrajectory, counted));
 }
 
 }  // namespace pierre::io

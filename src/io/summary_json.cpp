@@ -174,7 +174,8 @@ ojson distance_statistics_json(const design::DistanceStatistics& d) {
     j["lognormal_h"] = nullptr;
   if (d.ks)
     j["lognormal_ks"] = {{"D", d.ks->statistic}, {"p_value_stephens", d.ks->p_value},
-                         {"n", d.ks->n}, {"below_h", distance(d.ks->below)}};
+                         {"n", d.ks->n}, {"observed", d.ks->observed},
+                         {"below_h", distance(d.ks->below)}};
   else
     j["lognormal_ks"] = nullptr;
   if (!d.fit_error.empty()) j["fit_error"] = d.fit_error;

@@ -47,7 +47,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   std::mutex mu;
   std::condition_variable cv;
   std::map<std::uint64_t, ChunkResult> pending;
-  std::uint64_t next_claim = 0, next_deliver = 0, impacts = 0;
+  std::uint64_t next_claim = 0, next_deliver = 0, impacts = 0, delivered = 0;
   bool failed = false, delivering = false, out_of_memory = false;
   std::optional<std::string> error;
 
@@ -94,6 +94,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
         delivering = true;
         while (!failed && !pending.empty() && pending.begin()->first == next_deliver) {
           ChunkResult ready = std::move(pending.begin()->second);
+          const std::uint64_t ready_size = ready.trajectories.size();
           pending.erase(pending.begin());
           lock.unlock();
           std::optional<std::string> failure;
@@ -107,11 +108,14 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
             failure = e.what();
           }
           lock.lock();
-          if (failure) {
-            failed = true;
+          if (failure && !failed) {  // the first failure is the cause (as guarded() keeps it)
             error = failure;
             out_of_memory = no_memory;
           }
+          if (failure)
+            failed = true;
+          else
+            delivered += ready_size;
           ++next_deliver;
           if (progress && !failed) progress(std::min(total, next_deliver * chunk), total);
           cv.notify_all();  // the window moved on
@@ -164,7 +168,7 @@ RunReport run_simulation(const Scenario& scenario, const RunOptions& options, Re
   rep.impacts = impacts;
   rep.error = error;
   rep.out_of_memory = out_of_memory;
-  rep.delivered = std::min(total, next_deliver * chunk);
+  rep.delivered = delivered;
   rep.interrupted = next_deliver < n_chunks && !failed;
   return rep;
 }

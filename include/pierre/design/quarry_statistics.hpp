@@ -50,8 +50,9 @@ struct DistanceSample {
 struct PositivePartKs {
   double statistic = 0;
   double p_value = 1;
-  double n = 0;      // the positive values
-  double below = 0;  // the supremum is taken for d < below (+infinity: uncensored)
+  double n = 0;         // the positive values, censored ones included
+  double observed = 0;  // of those, the values below `below`: the ones the test sees
+  double below = 0;     // the supremum is taken for d < below (+infinity: uncensored)
 };
 
 struct DistanceStatistics {

@@ -112,8 +112,8 @@ struct RunStatistics {
   double steepest_energy_stop_deg = 0;  // the steepest ground of those (°)
   // Energy stops at the first impact: blocks that never got going, dropped gently (a source a
   // little above the ground) or hard (a fall so long that the impact takes nearly everything:
-  // the restitution factors fall as its energy rises, Eq 6.4). Their largest speed, which is
-  // the speed they struck at (a flight only gains speed), from the slowest to the fastest, m/s.
+  // the restitution factors fall as its energy rises, Eq 6.4). Their largest speed, from the
+  // slowest to the fastest, m/s: the speed they struck at, unless thrown faster than that.
   std::uint64_t energy_stops_at_first_impact = 0;
   double first_impact_stop_speed_min = 0, first_impact_stop_speed_max = 0;
 };

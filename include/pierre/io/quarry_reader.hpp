@@ -47,11 +47,10 @@ inline std::uint64_t section_seed(std::uint64_t run_seed, std::size_t index) {
 // How a message names section `index`: quarries[1] "North".
 std::string section_label(std::size_t index, const std::string& name);
 
-// The sections run one after the other but their statistics are kept together: the memory must
-// hold all their trajectories (check_memory_holds; line 0 for --throws).
-void check_sections_memory(const std::vector<QuarrySection>& sections,
-                           const std::filesystem::path& file, long line, const std::string& field,
-                           const std::string& found);
+// How the sections' trajectories are counted, for check_memory_holds: each section's
+// trajectory_count_text, and the sum. (The sections run one after the other, but their
+// statistics are kept together: the memory must hold all their trajectories.)
+std::string sections_count_text(const std::vector<QuarrySection>& sections);
 
 // A rule set by name ("quarry-thesis-2015" → rules_dir/quarry-thesis-2015.toml) or by path (a
 // value ending in ".toml" or holding a '/'; used as given).

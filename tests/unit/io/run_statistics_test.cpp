@@ -195,17 +195,18 @@ TEST(RunStatistics, StopsAtTheFirstImpactAreCountedAndNoted) {
   EXPECT_EQ(two.first_impact_stop_speed_max, 3.5);
   const auto notes = design::stop_reason_notes(two);
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_EQ(notes[0].rfind("2 of 40 blocks (5.0 %) came to rest at their first impact, struck at "
-                           "2.5 to 3.5 m/s: the energy criterion (Eq 3.13) stopped them there. A "
-                           "source a little above the ground drops its blocks so;",
+  EXPECT_EQ(notes[0].rfind("2 of 40 blocks (5.0 %) came to rest at their first impact (their largest "
+                           "speed, that of the impact unless thrown faster: 2.5 to 3.5 m/s): the "
+                           "energy criterion (Eq 3.13) stopped them there. A source a little above "
+                           "the ground drops its blocks so:",
                            0),
             0u)
       << notes[0];
-  EXPECT_NE(notes[0].find("put the source on the ground"), std::string::npos);
+  EXPECT_NE(notes[0].find("put it on the ground (z at or below it)"), std::string::npos);
   EXPECT_EQ(notes[0].find("A hard impact"), std::string::npos);
   const auto hard = design::stop_reason_notes(run(3, 115.0));
   ASSERT_EQ(hard.size(), 1u);
-  EXPECT_NE(hard[0].find("struck at 115.0 to 117.0 m/s: the energy criterion"), std::string::npos)
+  EXPECT_NE(hard[0].find("thrown faster: 115.0 to 117.0 m/s): the energy criterion"), std::string::npos)
       << hard[0];
   EXPECT_NE(hard[0].find("A hard impact does it too: the restitution factors fall as the impact's "
                          "energy rises (Eq 6.4), so a block that falls far onto the ground keeps "
