@@ -37,6 +37,14 @@ int lost_stdout() {
   return pierre::app::kExitInternal;
 }
 
+// A failure the user can mend (where the results go, how many to run): "error: ..." on stderr,
+// after what stdout holds, and exit 2 as for bad input.
+int said_as_input(const char* what, const std::exception& e) {
+  std::fflush(stdout);
+  std::fputs(("error: " + std::string(what) + e.what() + "\n").c_str(), stderr);
+  return pierre::app::kExitInput;
+}
+
 // The first argument that is a long option of some command written with a single dash
 // ("-out", "-seed=3"), or "" when there is none.
 std::string single_dash_long_option(int argc, char** argv, const std::vector<CLI::App*>& apps) {
@@ -146,18 +154,11 @@ int main(int argc, char** argv) {
     std::fputs((std::string(e.what()) + "\n").c_str(), stderr);  // fputs never throws
     return kExitInput;
   } catch (const pierre::io::CommitError& e) {  // a result file held open, or not a file
-    std::fflush(stdout);
-    std::fputs(("error: cannot put the results in place: " + std::string(e.what()) + "\n").c_str(),
-               stderr);
-    return kExitInput;
+    return said_as_input("cannot put the results in place: ", e);
   } catch (const pierre::app::RunOutOfMemory& e) {  // a run too large for the memory it has
-    std::fflush(stdout);
-    std::fputs(("error: " + std::string(e.what()) + "\n").c_str(), stderr);
-    return kExitInput;
+    return said_as_input("", e);
   } catch (const pierre::io::OutputWriteError& e) {  // a full disk, a file size limit
-    std::fflush(stdout);
-    std::fputs(("error: " + std::string(e.what()) + "\n").c_str(), stderr);
-    return kExitInput;
+    return said_as_input("", e);
   } catch (const std::exception& e) {
     // fmt throws when a print to stdout fails: that is the output's fault, said as such.
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) return lost_stdout();

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 namespace pierre::app {
 
@@ -121,23 +122,38 @@ std::uint64_t total_trajectories(const io::LoadedScenario& loaded) {
   return n;
 }
 
+std::optional<double> physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return std::nullopt;
+  return static_cast<double>(pages) * static_cast<double>(page);
+}
+
 std::optional<std::string> check_run_memory(const io::LoadedScenario& loaded,
                                             std::optional<std::uint32_t> throws) {
   const double n = static_cast<double>(total_trajectories(loaded));
-  const std::string found = std::to_string(loaded.scenario.settings.throws);
-  io::check_memory_holds(n, loaded.file, throws ? 0 : loaded.throws_line,
-                         throws ? "--throws" : "simulation.throws", found,
-                         loaded.quarries.empty() ? io::trajectory_count_text(loaded.scenario)
-                                                 : io::sections_count_text(loaded.quarries));
+  const auto memory = physical_memory_bytes();
+  if (!memory) return std::nullopt;
+  // A count no machine of this size can hold (a throws with zeros too many): said now, not after
+  // hours of running. The least a trajectory keeps is its runout (a double), for the percentiles.
+  constexpr double kLeast = 8;
+  if (n * kLeast > *memory)
+    throw io::InputError(
+        loaded.file, throws ? 0 : loaded.throws_line, throws ? "--throws" : "simulation.throws",
+        std::to_string(loaded.scenario.settings.throws),
+        fmt::format("fewer than {:.3g} trajectories, the most this machine's {:.1f} GB of memory "
+                    "could hold even at the {} bytes the statistics keep of each at the least "
+                    "(its runout; a run keeps more) ({})",
+                    *memory / kLeast, *memory / 1e9, kLeast,
+                    loaded.quarries.empty() ? io::trajectory_count_text(loaded.scenario)
+                                            : io::sections_count_text(loaded.quarries)));
   // What a run likely keeps: the runout (8 bytes) and each line's first crossing (4 doubles) of
   // every trajectory, a quarry's distances (4 doubles) instead of lines; up to twice that while a
   // vector grows. An estimate (blocks that miss a line keep less), said, not enforced.
-  const auto memory = io::physical_memory_bytes();
   const double per = 8.0 + 32.0 * (loaded.quarries.empty()
                                        ? static_cast<double>(loaded.scenario.lines.size())
                                        : 1.0);
   const double likely = 2 * per * n;
-  if (!memory || likely <= *memory) return std::nullopt;
+  if (likely <= *memory) return std::nullopt;
   return fmt::format(
       "{} trajectories may need about {:.1f} GB of memory (the statistics keep each one's runout "
       "and first crossings, up to twice that while their vectors grow), more than this machine's "

@@ -44,10 +44,15 @@ void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std:
 // Every trajectory the run makes: the scenario's, or all its quarry sections'.
 std::uint64_t total_trajectories(const io::LoadedScenario& loaded);
 
+// The memory of this machine (RAM, not swap), bytes; none when the system does not say.
+std::optional<double> physical_memory_bytes();
+
 // The run's count against this machine's memory, once --throws (`throws`, when given) is
-// applied: throws io::InputError (at --throws, or at simulation.throws) when even the least a
-// trajectory keeps cannot be held (io::check_memory_holds); returns a note when the likely need
-// is more than the machine has.
+// applied; all of a quarry's sections together, whose statistics are kept together. Not part of
+// loading (a file is valid whatever machine reads it): `validate` says it as a note. Throws
+// io::InputError (at --throws, or at simulation.throws) when even the 8 bytes every trajectory
+// keeps (its runout) cannot be held; returns a note when the likely need is more than the
+// machine has.
 std::optional<std::string> check_run_memory(const io::LoadedScenario& loaded,
                                             std::optional<std::uint32_t> throws);
 

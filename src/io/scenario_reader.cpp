@@ -14,7 +14,6 @@
 #include <utility>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "barrier_reader.hpp"
 #include "nearest_name.hpp"
@@ -462,11 +461,6 @@ LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const R
   return out;
 }
 
-std::optional<double> physical_memory_bytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return std::nullopt;
-  return static_cast<double>(pages) * static_cast<double>(page);
-}
 
 namespace {
 // "1 sources × 25 blocks × 10 throws are 250", for a count `n` worked out without wrapping.
@@ -494,19 +488,5 @@ std::string trajectory_count_text(const sim::Scenario& sc) {
                                        sc.settings.throws);
 }
 
-void check_memory_holds(double trajectories, const std::filesystem::path& file, long line,
-                        const std::string& field, const std::string& found,
-                        const std::string& counted) {
-  // A count no machine of this size can hold (a throws with zeros too many): said now, not
-  // after hours of running. The least a trajectory keeps is its runout, for the percentiles.
-  const auto memory = physical_memory_bytes();
-  if (memory && trajectories * kLeastBytesPerTrajectory > *memory)
-    throw InputError(file, line, field, found,
-                     fmt::format("fewer than {:.3g} trajectories, the most this machine's {:.1f} GB "
-                                 "of memory could hold even at the {} bytes the statistics keep of "
-                                 "each at the least (its runout; a run keeps more) ({})",
-                                 *memory / kLeastBytesPerTrajectory, *memory / 1e9,
-                                 kLeastBytesPerTrajectory, counted));
-}
 
 }  // namespace pierre::io

@@ -47,7 +47,7 @@ inline std::uint64_t section_seed(std::uint64_t run_seed, std::size_t index) {
 // How a message names section `index`: quarries[1] "North".
 std::string section_label(std::size_t index, const std::string& name);
 
-// How the sections' trajectories are counted, for check_memory_holds: each section's
+// How the sections' trajectories are counted, for a message about their sum: each section's
 // trajectory_count_text, and the sum. (The sections run one after the other, but their
 // statistics are kept together: the memory must hold all their trajectories.)
 std::string sections_count_text(const std::vector<QuarrySection>& sections);

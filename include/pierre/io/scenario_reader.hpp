@@ -65,12 +65,6 @@ struct LoadedScenario {
 // converts (`throws = "5"` or `throws = 5.0` is an error). NaN and infinities are errors.
 LoadedScenario load_scenario(const std::filesystem::path& scenario_file, const RulesFolder& rules);
 
-// The memory of this machine (RAM, not swap), bytes; none when the system does not say.
-std::optional<double> physical_memory_bytes();
-// What every trajectory of a run keeps in memory at the least: its runout (a double), for the
-// percentiles. (A run keeps more: each first crossing's values, the sections of a quarry.)
-inline constexpr int kLeastBytesPerTrajectory = 8;
-
 // A scenario runs at most 2^53 trajectories, sources × blocks × throws (a count a double holds
 // exactly; the 64-bit count wrapped past 2^64). Throws InputError at `field` of `file` (line 0:
 // about the whole file, e.g. `--throws`, found `found`) when `s` asks for more; `what` names the
@@ -82,14 +76,5 @@ void check_trajectory_count(const sim::Scenario& s, const std::filesystem::path&
 
 // "1 sources × 25 blocks × 10 throws are 250": how a scenario's count is made, for messages.
 std::string trajectory_count_text(const sim::Scenario& s);
-
-// A run keeps at least kLeastBytesPerTrajectory of every trajectory in memory, those of all a
-// quarry's sections together: throws InputError as check_trajectory_count does when this
-// machine's memory cannot hold `trajectories` (`counted` says how they were counted). Not part
-// of loading (a file is valid whatever machine reads it): `run` and `check` call it once
-// --throws is applied, `validate` says it as a note.
-void check_memory_holds(double trajectories, const std::filesystem::path& file, long line,
-                        const std::string& field, const std::string& found,
-                        const std::string& counted);
 
 }  // namespace pierre::io

@@ -17,6 +17,7 @@
 #include <sstream>
 #include <map>
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -24,7 +25,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "pierre/io/scenario_reader.hpp"
 #include "support/cli_fixture.hpp"
 #include "support/tools.hpp"
 #include "support/workbook_reader.hpp"
@@ -218,8 +218,10 @@ TEST_F(Cli, ThrowsOptionIsHeldToTheTrajectoryLimitBeforeAnythingIsWritten) {
 // many, in the file or on the command line. The file itself is valid (another machine may run
 // it): validate notes it, and --throws brings the run within reach.
 TEST_F(Cli, AThrowsThisMachineCannotHoldIsRefusedBeforeTheRun) {
-  const auto memory = pierre::io::physical_memory_bytes();
-  ASSERT_TRUE(memory);
+  // This machine's RAM, as the program reads it (sysconf).
+  const std::optional<double> memory =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  ASSERT_GT(*memory, 0);
   // 1000 blocks from one source: the throws that ask for just more than memory / 8 trajectories.
   const auto throws = static_cast<std::uint64_t>(std::ceil(*memory / 8 / 1000)) + 1;
   if (throws > 4294967295u) GTEST_SKIP() << "a machine of more than 34 TB";
