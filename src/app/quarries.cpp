@@ -275,7 +275,8 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   }
   bar.stage("writing summary.json and report.xlsx");
   if (!outcome.design) throw std::runtime_error("quarry danger zones: " + outcome.error);
-  design::doubt_passes(outcome.design->checks, doubted_inputs(loaded.notes));
+  design::doubt_passes(outcome.design->checks,
+                       design::pooled_doubts(*outcome.design, doubted_inputs(loaded.notes)));
   io::DesignResults results;
   results.checks = outcome.design->checks;
   results.quarry_seeds = seeds;

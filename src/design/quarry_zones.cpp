@@ -632,4 +632,25 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
   return result;
 }
 
+std::vector<DoubtedInput> pooled_doubts(const QuarryDesign& design, std::vector<DoubtedInput> doubts) {
+  const std::size_t given = doubts.size();
+  for (std::size_t k = 0; k < given; ++k)
+    for (const QuarryRow& row : design.rows) {
+      if (!row.pooled) continue;
+      const bool in_row = std::any_of(row.sections.begin(), row.sections.end(), [&](std::size_t i) {
+        return design.sections[i].spec.name == doubts[k].subject;
+      });
+      if (!in_row) continue;
+      DoubtedInput d = doubts[k];  // a copy: push_back may move doubts[k]
+      d.subject = row.name;
+      doubts.push_back(d);
+      for (std::size_t i : row.sections)
+        if (design.sections[i].spec.name != doubts[k].subject) {
+          d.subject = design.sections[i].spec.name;
+          doubts.push_back(d);
+        }
+    }
+  return doubts;
+}
+
 }  // namespace pierre::design

@@ -31,7 +31,8 @@ using model::InputLimits;
 // `barrier`: whose design block it is; its energies and their exceedance rest on it.
 void note_density(const TomlTable& d, double density, const std::string& barrier,
                   std::vector<InputNote>& notes) {
-  const design::DoubtedInput doubt{d.field("density"), barrier, {"energy.", "exceedance.energy"}};
+  const design::DoubtedInput doubt{d.field("density"), barrier, {"energy.", "exceedance.energy"},
+                                   density};
   if (density >= detail::kRockDensityMin && density <= detail::kRockDensityMax) return;
   notes.push_back({d.file(), line_of(*d.find("density")), d.field("density"),
                    fmt::format("the design block's density {:g} kg/m³ is {}", density,
@@ -107,7 +108,7 @@ void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view w
                     const UnitSlip& u, std::vector<InputNote>& notes, const std::string& barrier = "",
                     std::vector<std::string> lines = {}) {
   std::optional<design::DoubtedInput> doubt;
-  if (!lines.empty()) doubt = design::DoubtedInput{t.field(key), barrier, std::move(lines)};
+  if (!lines.empty()) doubt = design::DoubtedInput{t.field(key), barrier, std::move(lines), v};
   if (!(v > u.limit)) return;
   notes.push_back({t.file(), line_of(*t.find(key)), t.field(key),
                    fmt::format("{} {} {} is more than {} {}{}: it is read in {}; if it was "

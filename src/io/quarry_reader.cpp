@@ -192,7 +192,8 @@ void note_beyond_floor(const TomlTable& q, const design::QuarrySpec& spec,
     notes.push_back({q.file(), line_of(*q.find("bench_width")), q.field("bench_width"),
                      fmt::format("bench width {:g} m: {}", *spec.bench_width,
                                  text(*spec.bench_width)),
-                     design::DoubtedInput{q.field("bench_width"), spec.name, {"bench."}}});
+                     design::DoubtedInput{q.field("bench_width"), spec.name, {"bench."},
+                                          *spec.bench_width}});
   const toml::array* a = q.array_of_tables("work_areas");
   for (std::size_t i = 0; a && i < spec.work_areas.size(); ++i) {
     const design::WorkArea& w = spec.work_areas[i];
@@ -201,7 +202,8 @@ void note_beyond_floor(const TomlTable& q, const design::QuarrySpec& spec,
     notes.push_back({q.file(), line_of(*t.find("distance")), t.field("distance"),
                      fmt::format("work area \"{}\" at {:g} m from the toe: {}", w.name, w.distance,
                                  text(w.distance)),
-                     design::DoubtedInput{t.field("distance"), spec.name, {"zone." + w.name}}});
+                     design::DoubtedInput{t.field("distance"), spec.name, {"zone." + w.name},
+                                          w.distance}});
   }
 }
 
@@ -506,9 +508,14 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
     } else {
       sc.settings.seed = section_seed(settings.seed, i);  // independent streams, pooled sections
     }
+    const std::size_t notes_before = s.notes.size();
     sc.profile = detail::read_profile(q, materials, "quarries", s.notes);
     detail::read_blocks(q, s.block_groups, sc.blocks, "quarries", s.notes);
     detail::read_sources(q, sc, "quarries", s.notes);
+    // A slip in this section's blocks or sources bears on this section's lines (and on those of
+    // a group it is pooled in, app/quarries.cpp), not on the other sections'.
+    for (std::size_t k = notes_before; k < s.notes.size(); ++k)
+      if (s.notes[k].doubt && s.notes[k].doubt->subject.empty()) s.notes[k].doubt->subject = spec.name;
     {
       // Each section is a run of its own: its count, not the sum, is what must stay countable.
       // (`settings` may come from elsewhere than `root`: then the message names no line.)

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -16,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "barrier_reader.hpp"
+#include "confirmed_inputs.hpp"
 #include "nearest_name.hpp"
 #include "pierre/io/quarry_reader.hpp"
 #include "section_readers.hpp"
@@ -26,6 +28,7 @@ namespace pierre::io {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::apply_confirmations;
 using detail::describe;
 using detail::line_of;
 using detail::extent;
@@ -150,7 +153,7 @@ void note_roughness(const TomlTable& t, double scale, std::vector<InputNote>& no
                                "roughness angle is {:.0f}° (the calibrated sets use 0.3 to 0.72, "
                                "typically 0.3 to 1.5)",
                                scale, typical_deg),
-                   doubts_every_line(t.field("roughness"))});
+                   doubts_every_line(t.field("roughness"), scale)});
 }
 
 // A friction angle is in degrees; one at most π/2 (0.52) reads like radians and leaves a block
@@ -162,7 +165,7 @@ void note_friction_angle(const TomlTable& t, double deg, std::vector<InputNote>&
                                "if it is in radians, it is {:.1f}°; as typed, blocks slide almost "
                                "without friction",
                                deg, geometry::degrees(deg)),
-                   doubts_every_line(t.field("friction_angle"))});
+                   doubts_every_line(t.field("friction_angle"), deg)});
 }
 
 std::vector<model::Material> read_materials(const TomlTable& top, Presets& presets,
@@ -320,7 +323,7 @@ void note_gravity(const TomlTable& top, double g, std::vector<InputNote>& notes)
                                "speed and energy depends on it; check the value if the slope is "
                                "on Earth",
                                g),
-                   doubts_every_line("simulation.gravity")});
+                   doubts_every_line("simulation.gravity", g)});
 }
 
 // Lines count first crossings in the main direction (the profile's vertex order): one behind
@@ -377,7 +380,7 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
   const toml::table root = parse_toml(scenario_file, out.text);
   const TomlTable top(scenario_file, root, "", 0,
                       {"scenario", "simulation", "profile", "materials", "blocks", "sources",
-                       "observation_lines", "barriers", "quarries"});
+                       "observation_lines", "barriers", "quarries", "confirmed"});
 
   const auto head = top.subtable("scenario", {"name", "description", "materials_file", "reference",
                                               "revision", "prepared_by", "checked_by"});
@@ -428,11 +431,15 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
       throw InputError(scenario_file, line_of(*top.find("quarries")), "quarries", "no section",
                        "at least one [[quarries]] section");
     std::vector<const geometry::Profile*> profiles;
-    for (const auto& q : out.quarries) {
-      out.notes.insert(out.notes.end(), q.notes.begin(), q.notes.end());
+    for (auto& q : out.quarries) {
+      // Moved, not copied: [confirmed] applies to the scenario's one list.
+      out.notes.insert(out.notes.end(), std::make_move_iterator(q.notes.begin()),
+                       std::make_move_iterator(q.notes.end()));
+      q.notes.clear();
       profiles.push_back(&q.scenario.profile);
     }
     note_unused_materials(top, out.scenario.materials, profiles, out.notes);
+    apply_confirmations(top, out.notes);
     return out;
   }
   out.scenario.profile = detail::read_profile(top, out.scenario.materials, "", out.notes);
@@ -447,6 +454,7 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
   }
   read_lines(top, out.scenario, out.notes);
   detail::read_barriers(top, rules, out);
+  apply_confirmations(top, out.notes);
   return out;
 }
 

@@ -380,11 +380,15 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
   auto rock = [](double d) { return d >= kRockDensityMin && d <= kRockDensityMax; };
   constexpr std::string_view effect = "blocks 1000 times too light, and every energy 1000 times too small";
   const std::size_t before = notes.size();
+  // The mass or volume as typed in row i: what a note on it names and [confirmed] restates.
+  auto typed_size = [&](std::size_t i) {
+    return where[i].size_field.ends_with("mass") ? groups[i].mass : groups[i].volume;
+  };
   if (b.has("density") && !rock(shared))
     notes.push_back({b.file(), line_of(*b.find("density")), b.field("density"),
                      fmt::format("the block density {:g} kg/m³ is {}", shared,
                                  density_slip(shared, effect)),
-                     doubts_every_line(b.field("density"))});
+                     doubts_every_line(b.field("density"), shared)});
   std::size_t odd = 0, first = 0;
   for (std::size_t i = 0; i < groups.size(); ++i)
     if (groups[i].density != shared && !rock(groups[i].density) && odd++ == 0) first = i;
@@ -394,7 +398,7 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
                                  groups[first].id, groups[first].density,
                                  odd > 1 ? fmt::format(" (and {} more rows like it)", odd - 1) : "",
                                  density_slip(groups[first].density, effect)),
-                     doubts_every_line(where[first].density_field)});
+                     doubts_every_line(where[first].density_field, groups[first].density)});
   if (notes.size() > before) return;  // light blocks of a light density: said already
   std::size_t heaviest = 0;
   for (std::size_t i = 1; i < groups.size(); ++i)
@@ -406,7 +410,7 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
                      "volume in m³; a mass in tonnes or a volume in litres gives blocks 1000 "
                      "times too light, and every energy 1000 times too small",
                      groups[heaviest].id, groups[heaviest].mass),
-         doubts_every_line(where[heaviest].size_field)});
+         doubts_every_line(where[heaviest].size_field, typed_size(heaviest))});
   // One row given by its mass in tonnes among rows given by volume: the heaviest is a real
   // block, so the test above is silent, but this row weighs a thousandth of what was meant.
   auto by_mass = [&](std::size_t i) { return where[i].size_field.ends_with("mass"); };
@@ -426,7 +430,7 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
          fmt::format("block \"{}\" is given by its mass, {:g} kg, among rows given by volume that "
                      "weigh {:.0f} to {:.0f} kg: a mass is in kg; if it is in tonnes, it is {:.0f} kg",
                      groups[i].id, m, lightest_by_volume, heaviest_by_volume, m * 1000),
-         doubts_every_line(where[i].size_field)});
+         doubts_every_line(where[i].size_field, groups[i].mass)});
     break;  // the first such row: the others are likely the same slip
   }
   if (!groups.empty() && groups[heaviest].mass > kHeaviestPlausibleBlock)
@@ -436,7 +440,7 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
                      "rockfall blocks weigh (up to some hundreds of tonnes): a volume is in m³ "
                      "and a mass in kg; a volume in litres gives blocks 1000 times too heavy",
                      groups[heaviest].id, groups[heaviest].mass / 1000, groups[heaviest].volume),
-         doubts_every_line(where[heaviest].size_field)});
+         doubts_every_line(where[heaviest].size_field, typed_size(heaviest))});
 }
 
 }  // namespace
@@ -635,7 +639,7 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
                               : "its blocks fall freely that far before their first impact, "
                                 "which then governs the results",
                        inside ? "" : "; a source on or below the ground starts on it"),
-           doubts_every_line(t.field("z"))});
+           doubts_every_line(t.field("z"), p.z)});
     sc.sources.push_back(std::move(s));
     source_at.push_back({t.line(), t.path()});
   }

@@ -46,6 +46,7 @@ struct DoubtedInput {
   std::string field;    // as the note names it: "blocks.density"
   std::string subject;  // the lines' subject (a barrier, a quarry section); empty: every subject
   std::vector<std::string> ids;  // check ids, a prefix where one ends in '.'; empty: every line
+  double value = std::numeric_limits<double>::quiet_NaN();  // as noted: what [confirmed] restates
 };
 // Each PASS among the lines a doubted input bears on is a WARN, its reason saying which input
 // to confirm: `pierre check` is the gate a pipeline relies on, and a result the program itself

@@ -145,6 +145,10 @@ struct QuarryOutcome {
 // a section without H).
 QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& sections, std::uint64_t seed);
 
+// The doubts (check_line.hpp) with those on a pooled section's inputs widened to its group: the
+// group's row and every section of it take their zones from the pooled blocks.
+std::vector<DoubtedInput> pooled_doubts(const QuarryDesign& design, std::vector<DoubtedInput> doubts);
+
 // The governing distance (/H) of a sample under a rule set.
 GoverningDistance governing_distance(const DistanceSample& sample, const DistanceStatistics& stats,
                                      const QuarryRuleSet& rules);

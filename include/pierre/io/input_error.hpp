@@ -43,6 +43,8 @@ struct InputNote {
 
 // The doubt of a slip that bears on the whole simulation (the blocks, a material, gravity, a
 // source's height): every check line.
-inline design::DoubtedInput doubts_every_line(std::string field) { return {std::move(field), "", {}}; }
+inline design::DoubtedInput doubts_every_line(std::string field, double value) {
+  return {std::move(field), "", {}, value};
+}
 
 }  // namespace pierre::io

@@ -35,7 +35,8 @@ struct QuarrySection {
   std::vector<BlockGroup> block_groups;  // the block rows as written
   std::filesystem::path rules_file;
   bool seed_given = false;  // `seed` was written (else [simulation].seed + the section's index)
-  std::vector<InputNote> notes;  // on its profile and sources (LoadedScenario::notes holds them too)
+  std::vector<InputNote> notes;  // on its profile and sources while read; load_scenario moves
+                                 // them into LoadedScenario::notes
 };
 
 // The seed of section `index` that gives none: the run's seed + index, wrapped into 0 to 2^63 − 1

@@ -147,6 +147,71 @@ TEST_F(Check, NoPlainPassOnBlocksTheReaderDoubts) {
   }
 }
 
+// A value the reader doubts but the engineer means is restated under [confirmed]: the lines
+// then pass again, as they would have without the note. A confirmation at another value, or
+// under a misspelt name, lifts nothing and is said.
+TEST_F(Check, AConfirmedValueLetsItsLinesPassAgain) {
+  std::string text = slurp(kData + "pass.toml");
+  const std::string right = "[blocks]\ndensity = 2650.0";
+  ASSERT_NE(text.find(right), std::string::npos);
+  text.replace(text.find(right), right.size(), "[blocks]\ndensity = 2.65");
+  const std::string profile = "\"../small/profile.csv\"";
+  ASSERT_NE(text.find(profile), std::string::npos);
+  text.replace(text.find(profile), profile.size(), "\"" + kData + "../small/profile.csv\"");
+  struct Case {
+    std::string name, confirmed;
+  };
+  for (const Case& c : {Case{"slip", ""}, Case{"meant", "\"blocks.density\" = 2.65"},
+                        Case{"nested", "blocks.density = 2.65"},
+                        Case{"other", "\"blocks.density\" = 2.7\nsimulation.gravty = 9.81"}}) {
+    std::ofstream(dir_ / (c.name + ".toml"))
+        << text << (c.confirmed.empty() ? "" : "\n[confirmed]\n" + c.confirmed + "\n");
+    const Result r = pierre("check '" + (dir_ / (c.name + ".toml")).string() + "' --out '" +
+                            (dir_ / c.name).string() + "' -q");
+    ASSERT_EQ(r.code, 0) << c.name << r.err;
+    if (c.name == "slip") {
+      EXPECT_NE(r.err.find("If it is meant, confirm it in the scenario: [confirmed] "
+                           "\"blocks.density\" = 2.65"),
+                std::string::npos)
+          << r.err;
+    }
+    if (c.name == "meant" || c.name == "nested") {
+      EXPECT_NE(r.err.find("Confirmed as meant ([confirmed] \"blocks.density\" = 2.65, line "),
+                std::string::npos)
+          << r.err;
+    }
+    if (c.name == "other") {
+      EXPECT_NE(r.err.find("[confirmed] gives 2.7 for it"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("confirmed.simulation.gravty: \"simulation.gravty\" confirms nothing"),
+                std::string::npos)
+          << r.err;
+    }
+  }
+  const std::string doubt = ", but it rests on blocks.density, noted as a likely slip";
+  const auto slip = summary(dir_ / "slip");
+  std::size_t lifted = 0;
+  for (const char* name : {"meant", "nested", "other"}) {
+    const auto j = summary(dir_ / name);
+    ASSERT_EQ(j["checks"].size(), slip["checks"].size());
+    for (std::size_t i = 0; i < j["checks"].size(); ++i) {
+      const auto &c = j["checks"][i], &s = slip["checks"][i];
+      SCOPED_TRACE(std::string(name) + " " + c.dump());
+      const std::string reason = s["reason"].get<std::string>();
+      const auto k = reason.find(doubt);
+      if (std::string(name) == "other" || k == std::string::npos) {
+        EXPECT_EQ(c["status"], s["status"]);
+        EXPECT_EQ(c["reason"], s["reason"]);
+      } else {
+        ++lifted;
+        EXPECT_EQ(s["status"], "WARN");
+        EXPECT_EQ(c["status"], "PASS");
+        EXPECT_EQ(c["reason"], reason.substr(0, k));
+      }
+    }
+  }
+  EXPECT_GE(lifted, 6u);  // energy.mel, energy.sel, height.interception, twice
+}
+
 // A name longer than its column widens the column: the barrier table's and the check table's
 // later columns stay under their headings (a 25-character name pushed them out of line).
 TEST_F(Check, ALongNameWidensItsColumn) {

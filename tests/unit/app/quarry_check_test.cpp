@@ -431,6 +431,75 @@ TEST_F(QuarryCli, AWorkAreaTheReaderDoubtsDoesNotPass) {
   EXPECT_EQ(doubted, 1u);
 }
 
+// A mass in tonnes in one section's blocks bears on that section's lines only: the other
+// section is simulated from its own blocks. Pooled in one group, the slip reaches every line,
+// since the group's row and each of its sections take their zones from the pooled blocks.
+TEST_F(QuarryCli, ASectionsSlipDoubtsItsOwnLinesAndItsGroupsOnly) {
+  const std::string text = slurp(kData + "pass.toml");
+  const std::string right = "id = \"C\", mass = 1000.0";  // the second section's one block
+  ASSERT_NE(text.find(right), std::string::npos);
+  std::string slipped = text;
+  slipped.replace(slipped.find(right), right.size(), "id = \"C\", mass = 1.0");  // in tonnes
+  auto pooled = [](std::string t) {
+    for (const char* name : {"name = \"North\"", "name = \"South\""}) {
+      const auto k = t.find(name);
+      if (k == std::string::npos) throw std::runtime_error(name);
+      t.insert(k + std::string(name).size(), "\ngroup = \"Both\"");
+    }
+    return t;
+  };
+  struct Case {
+    std::string name, text;
+  };
+  for (const Case& c : {Case{"lone", text}, Case{"lone-slip", slipped}, Case{"pooled", pooled(text)},
+                        Case{"pooled-slip", pooled(slipped)}}) {
+    std::ofstream(dir_ / (c.name + ".toml")) << c.text;
+    const Result r = pierre("check '" + (dir_ / (c.name + ".toml")).string() + "' --out '" +
+                            (dir_ / c.name).string() + "' -q");
+    ASSERT_EQ(r.code, 0) << c.name << r.err;
+    if (c.name.ends_with("slip")) {
+      EXPECT_NE(r.err.find("quarries[1].blocks.table[0].mass: the heaviest block, \"C\", weighs 1 kg"),
+                std::string::npos)
+          << r.err;
+    }
+  }
+  const std::string doubt =
+      ", but it rests on quarries[1].blocks.table[0].mass, noted as a likely slip";
+  auto doubted = [&](const nlohmann::json& c) {
+    return c["reason"].get<std::string>().find(doubt) != std::string::npos;
+  };
+  // Apart: North's lines are those of the run without the slip; South's cannot pass.
+  const auto g = summary(dir_ / "lone"), b = summary(dir_ / "lone-slip");
+  ASSERT_EQ(g["checks"].size(), b["checks"].size());
+  std::size_t north = 0, south_doubted = 0;
+  for (std::size_t i = 0; i < b["checks"].size(); ++i) {
+    const auto& c = b["checks"][i];
+    SCOPED_TRACE(c.dump());
+    if (c["subject"] == "North") {
+      ++north;
+      EXPECT_EQ(c["status"], g["checks"][i]["status"]);
+      EXPECT_EQ(c["reason"], g["checks"][i]["reason"]);
+    } else {
+      EXPECT_NE(c["status"], "PASS");
+      south_doubted += doubted(c);
+    }
+  }
+  EXPECT_GT(north, 0u);
+  EXPECT_GT(south_doubted, 0u);
+  // Pooled: North's lines passed without the slip and rest on it now.
+  const auto gp = summary(dir_ / "pooled"), bp = summary(dir_ / "pooled-slip");
+  std::size_t north_passed = 0;
+  for (const auto& c : gp["checks"]) north_passed += c["subject"] == "North" && c["status"] == "PASS";
+  EXPECT_GT(north_passed, 0u);
+  std::size_t north_doubted = 0;
+  for (const auto& c : bp["checks"]) {
+    SCOPED_TRACE(c.dump());
+    EXPECT_NE(c["status"], "PASS");
+    north_doubted += c["subject"] == "North" && doubted(c);
+  }
+  EXPECT_GT(north_doubted, 0u);
+}
+
 TEST_F(QuarryCli, ValidateListsTheSections) {
   const Result r = pierre("validate " + kData + "pass.toml");
   ASSERT_EQ(r.code, 0) << r.err;

@@ -164,7 +164,9 @@ TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
   EXPECT_EQ(slips[1].line, 34);
   EXPECT_EQ(slips[1].text,
             "the candidate's MEL 3200000 kJ is more than 30000 kJ (the largest class of "
-            "etag027-classes: MEL > 4500 kJ): it is read in kJ; if it was meant in J, it is 3200 kJ");
+            "etag027-classes: MEL > 4500 kJ): it is read in kJ; if it was meant in J, it is 3200 kJ. "
+            "If it is meant, confirm it in the scenario: [confirmed] \"barriers[0].candidate.mel\" = "
+            "3200000");
   EXPECT_EQ(slips[2].field, "barriers[0].candidate.height");
   EXPECT_NE(slips[2].text.find("if it was meant in mm, it is 5 m"), std::string::npos) << slips[2].text;
   EXPECT_EQ(slips[3].field, "barriers[0].candidate.elongation_mel");

@@ -50,7 +50,7 @@ TEST(NearestName, SaidAfterTheValidNames) {
     return std::string("no error");
   };
   std::string key = expected_of(pierre::test::base_with(24, "[[observation_line]]"));
-  EXPECT_TRUE(key.ends_with("quarries; the nearest is observation_lines")) << key;
+  EXPECT_TRUE(key.ends_with("quarries, confirmed; the nearest is observation_lines")) << key;
   EXPECT_EQ(key.rfind("one of scenario, simulation, ", 0), 0u) << key;
   const std::string material = expected_of(pierre::test::base_with(
       9, "points = [[0.0, 10.0, \"rok\"], [10.0, 0.0, \"rock\"], [20.0, 0.0, \"\"]]"));

@@ -1,0 +1,84 @@
+#include "confirmed_inputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "nearest_name.hpp"
+
+namespace pierre::io::detail {
+namespace {
+
+struct Confirmation {
+  std::string key;  // flattened: "simulation.gravity" whether quoted or nested
+  double value = 0;
+  long line = 0;
+  bool used = false;
+};
+
+void read(const TomlTable& t, const std::string& prefix, std::vector<Confirmation>& out) {
+  for (auto&& [k, node] : t.table()) {
+    const std::string key(k.str());
+    const std::string full = prefix.empty() ? key : prefix + "." + key;
+    if (node.is_table()) {
+      read(*t.subtable(key, {}), full, out);
+      continue;
+    }
+    if (!node.is_number())
+      t.fail(key, "the number the input note names, under the field it names, as the note "
+                  "says: \"blocks.density\" = 2.65");
+    out.push_back({full, *t.number(key), line_of(node)});  // NaN, infinity: an error there
+  }
+}
+
+// The value as the note and the confirmation print it: the shortest text that reads back the
+// same double, so a value copied from the note matches exactly.
+std::string shown(double v) { return fmt::format("{}", v); }
+
+}  // namespace
+
+std::string confirmation_key(const InputNote& note, const std::filesystem::path& scenario_file) {
+  const std::string& field = note.doubt ? note.doubt->field : note.field;
+  if (note.file == scenario_file) return field;
+  return note.file.filename().string() + ":" + field;
+}
+
+void apply_confirmations(const TomlTable& top, std::vector<InputNote>& notes) {
+  std::vector<Confirmation> given;
+  if (const auto c = top.subtable("confirmed", {})) read(*c, "", given);
+  std::vector<std::string> keys;  // of the doubting notes, for a misspelt confirmation
+  for (InputNote& n : notes) {
+    if (!n.doubt) continue;
+    const std::string key = confirmation_key(n, top.file());
+    keys.push_back(key);
+    const std::string entry = fmt::format("\"{}\" = {}", key, shown(n.doubt->value));
+    const auto c = std::find_if(given.begin(), given.end(),
+                                [&](const Confirmation& g) { return g.key == key; });
+    if (c == given.end()) {
+      n.text += fmt::format(". If it is meant, confirm it in the scenario: [confirmed] {}", entry);
+      continue;
+    }
+    c->used = true;
+    if (c->value == n.doubt->value) {
+      n.text += fmt::format(". Confirmed as meant ([confirmed] {}, line {})", entry, c->line);
+      n.doubt.reset();
+    } else {
+      n.text += fmt::format(". [confirmed] gives {} for it (line {}), not the value noted: it "
+                            "stays in doubt until the confirmation restates it ({})",
+                            shown(c->value), c->line, entry);
+    }
+  }
+  for (const Confirmation& g : given) {
+    if (g.used) continue;
+    notes.push_back({top.file(), g.line, "confirmed." + g.key,
+                     fmt::format("\"{}\" confirms nothing, as no input is noted as a likely "
+                                 "slip under that name{}: remove it, or correct the name",
+                                 g.key,
+                                 keys.empty() ? std::string(" (none is)")
+                                              : nearest_name_hint(g.key, keys)),
+                     {}});
+  }
+}
+
+}  // namespace pierre::io::detail
