@@ -86,6 +86,10 @@ class RunCommand final : public Command {
     c->add_option("--rules", rules_,
                   "Rules folder holding materials.toml and the barrier and quarry rule sets")
         ->type_name("DIR");
+    c->add_flag("--strict", strict_,
+                "Refuse (exit 2, nothing run or written) an input noted as a likely slip that "
+                "[confirmed] does not confirm; without it, such an input only keeps the lines "
+                "resting on it from a PASS");
     if (check_)
       c->footer(
           "Example:\n"
@@ -129,6 +133,7 @@ class RunCommand final : public Command {
     // far above the ground or falling against the vertex order, a material no segment uses):
     // said even when quiet, on stderr, where a pipeline's log keeps them.
     print_input_notes(stderr, loaded.notes);
+    if (strict_) refuse_doubted_inputs(loaded);
     if (memory_note) fmt::print(stderr, "Note: {}\n", *memory_note);
     // Memory grows with the trajectories (the statistics keep each one's runout and crossings):
     // running out of it, here or in a quarry's sections, is a count to lower, said as such.
@@ -226,7 +231,7 @@ class RunCommand final : public Command {
   std::uint32_t throws_ = 1;
   unsigned threads_ = 0;
   bool check_ = false;
-  bool quiet_ = false, impacts_ = false, all_crossings_ = false;
+  bool quiet_ = false, impacts_ = false, all_crossings_ = false, strict_ = false;
   bool committed_ = false;  // the results are in place in DIR
   CLI::Option* seed_opt_ = nullptr;
   CLI::Option* throws_opt_ = nullptr;

@@ -169,6 +169,19 @@ std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote
   return out;
 }
 
+void refuse_doubted_inputs(const io::LoadedScenario& loaded) {
+  const auto doubting = [](const io::InputNote& n) { return n.doubt.has_value(); };
+  const auto first = std::find_if(loaded.notes.begin(), loaded.notes.end(), doubting);
+  if (first == loaded.notes.end()) return;
+  const auto n = std::count_if(loaded.notes.begin(), loaded.notes.end(), doubting);
+  throw io::InputError(
+      first->file, first->line, first->field, fmt::format("{}", first->doubt->value),
+      fmt::format("a value not in doubt (--strict refuses an input noted as a likely slip): {}{}",
+                  first->text,
+                  n > 1 ? fmt::format(" ({} more input{} in doubt, noted above)", n - 1, n > 2 ? "s" : "")
+                        : std::string()));
+}
+
 std::string out_of_memory_message(const io::LoadedScenario& loaded, std::uint64_t total,
                                   std::optional<std::uint64_t> done, const std::string& out) {
   const bool by_option = std::any_of(loaded.overrides.begin(), loaded.overrides.end(),

@@ -59,6 +59,11 @@ std::optional<std::string> check_run_memory(const io::LoadedScenario& loaded,
 // What the input notes doubt (likely slips), for design::doubt_passes.
 std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote>& notes);
 
+// --strict: an input noted as a likely slip that [confirmed] does not confirm is an input error
+// (io::InputError at the first such note, saying how many there are), so that a pipeline never
+// runs, nor passes a check, on a value the program itself doubts.
+void refuse_doubted_inputs(const io::LoadedScenario& loaded);
+
 // A run that ran out of memory: the statistics keep every trajectory's runout and every first
 // crossing's values, so memory grows with the trajectories, and a count too large for what this
 // process may use is a count to lower (exit 2, nothing written, as for other input).

@@ -42,6 +42,9 @@ class ValidateCommand final : public Command {
         ->type_name("FILE");
     c->add_option("--rules", rules_, "Rules folder holding materials.toml and the barrier and quarry rule sets")
         ->type_name("DIR");
+    c->add_flag("--strict", strict_,
+                "An input noted as a likely slip that [confirmed] does not confirm is an error "
+                "(exit 2), as `run --strict` and `check --strict` make it");
     c->footer(
         "Example:\n"
         "  pierre validate examples/vaujany-2d/scenario.toml\n"
@@ -52,6 +55,10 @@ class ValidateCommand final : public Command {
 
   int run() override {
     const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
+    if (strict_) {
+      print_input_notes(stderr, l.notes);  // each said, then the refusal
+      refuse_doubted_inputs(l);
+    }
     load_report_layout(stdout);  // `run` needs it too: a missing or broken one is said now
     (void)report_date();   // and the date SOURCE_DATE_EPOCH gives it
     if (!l.quarries.empty()) {
@@ -161,6 +168,7 @@ class ValidateCommand final : public Command {
   }
 
   std::string scenario_, rules_;
+  bool strict_ = false;
 };
 
 }  // namespace

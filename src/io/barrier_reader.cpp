@@ -118,6 +118,22 @@ void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view w
                    doubt});
 }
 
+// An acceptable probability of exceedance is a fraction, while every output shows it in %: 0.5
+// copied from a report's "0.5 %" is read as 50 %, and the exceedance line passes on it. Design
+// practice accepts some tenths of a percent to a few percent; above kLargestAcceptableExceedance
+// it is noted, at its value, and the line resting on it (`line`) cannot PASS.
+constexpr double kLargestAcceptableExceedance = 0.1;
+void note_percent_as_fraction(const TomlTable& t, std::string_view key, double p,
+                              const std::string& barrier, const std::string& line,
+                              std::vector<InputNote>& notes) {
+  if (!(p > kLargestAcceptableExceedance)) return;
+  notes.push_back({t.file(), line_of(*t.find(key)), t.field(key),
+                   fmt::format("an acceptable probability of {} is {} %: it is a fraction (0.01 "
+                               "is 1 %); if it was meant in %, it is {}",
+                               typed(p), typed(100 * p), typed(p / 100)),
+                   design::DoubtedInput{t.field(key), barrier, {line}, p}});
+}
+
 // Rockfall barriers are some metres high and stretch some metres; their energies are up to
 // some thousands of kJ (ETAG 027's last class: MEL > 4 500 kJ). The limits are far beyond
 // those, to catch only a value in mm or J.
@@ -419,8 +435,10 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
       if (!b.candidate)
         t.fail(key, "no acceptable probability without a [barriers.candidate] (without one the "
                     "barrier is a design and reports only the advisory lines)");
-      (std::string_view(key) == "acceptable_energy_exceedance" ? b.acceptable_energy_exceedance
-                                                              : b.acceptable_height_exceedance) = p;
+      const bool energy = std::string_view(key) == "acceptable_energy_exceedance";
+      (energy ? b.acceptable_energy_exceedance : b.acceptable_height_exceedance) = p;
+      note_percent_as_fraction(t, key, *p, b.name, energy ? "exceedance.energy" : "exceedance.height",
+                               out.notes);
     }
     std::optional<design::ObservedSample> observed;
     if (const auto f = t.string("observed")) {

@@ -1,4 +1,5 @@
 // summary.json (result_writer.hpp): the run, its statistics and the design results.
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -342,7 +343,10 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
     j["input_notes"].push_back({{"file", n.file.string()},
                                 {"line", n.line},
                                 {"field", n.field},
-                                {"note", n.text}});
+                                {"note", n.text},
+                                // a likely slip [confirmed] does not confirm: the check lines
+                                // resting on it cannot PASS (`check --strict` refuses it)
+                                {"in_doubt", n.doubt.has_value()}});
   j["blocks"] = info.blocks;
   j["sources"] = info.sources;
   j["trajectories"] = info.trajectories;
@@ -412,6 +416,14 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                         {"reason", c.reason}});
     j["checks"] = checks;
     j["checks_failed"] = design::any_failure(results.checks);
+    // How many lines of each status: a gate on "no WARN" or "some PASS" without a loop.
+    json counts = json::object();
+    for (design::CheckStatus st : {design::CheckStatus::pass, design::CheckStatus::warn,
+                                   design::CheckStatus::fail, design::CheckStatus::not_applicable})
+      counts[std::string(design::to_string(st))] =
+          std::count_if(results.checks.begin(), results.checks.end(),
+                        [&](const design::CheckLine& c) { return c.status == st; });
+    j["check_counts"] = counts;
   }
   return j.dump(2) + "\n";
 }

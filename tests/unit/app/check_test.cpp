@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -210,6 +211,37 @@ TEST_F(Check, AConfirmedValueLetsItsLinesPassAgain) {
     }
   }
   EXPECT_GE(lifted, 6u);  // energy.mel, energy.sel, height.interception, twice
+  // summary.json says which notes doubt their input, and counts the lines of each status.
+  for (const char* name : {"slip", "meant"}) {
+    const auto j = summary(dir_ / name);
+    ASSERT_EQ(j["input_notes"].size(), 1u);
+    EXPECT_EQ(j["input_notes"][0]["in_doubt"], std::string(name) == "slip");
+    std::map<std::string, std::size_t> counted;
+    for (const auto& c : j["checks"]) ++counted[c["status"].get<std::string>()];
+    for (const char* st : {"PASS", "WARN", "FAIL", "N/A"}) {
+      SCOPED_TRACE(st);
+      EXPECT_EQ(j["check_counts"][st].get<std::size_t>(), counted[st]);
+    }
+  }
+  // --strict refuses the doubted input before anything runs, and takes the confirmed one.
+  for (const char* command : {"check", "run", "validate"}) {
+    SCOPED_TRACE(command);
+    const fs::path strict = dir_ / ("strict-" + std::string(command));
+    const bool validate = std::string(command) == "validate";
+    const std::string out = validate ? std::string() : " --out '" + strict.string() + "' -q";
+    const Result r = pierre(std::string(command) + " '" + (dir_ / "slip.toml").string() + "'" +
+                            out + " --strict");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("slip.toml:24: blocks.density: found 2.65, expected a value not in doubt "
+                         "(--strict refuses an input noted as a likely slip): the block density "
+                         "2.65 kg/m³ is outside"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(strict));
+    const Result ok = pierre(std::string(command) + " '" + (dir_ / "meant.toml").string() + "'" +
+                             out + " --strict");
+    EXPECT_EQ(ok.code, 0) << ok.err;
+  }
 }
 
 // A name longer than its column widens the column: the barrier table's and the check table's

@@ -201,6 +201,32 @@ TEST(BarrierReader, ValuesInTheSmallerUnitAreNoted) {
                          "barriers[0].candidate.height:height.interception,exceedance.height"}));
 }
 
+// An acceptable probability is a fraction, and every output shows it in %: 0.5 copied from a
+// report's "0.5 %" is 50 %, under which the exceedance line passes. Above 10 % it is noted, and
+// its own exceedance line cannot PASS; 10 % itself, and the usual 0.1 % to 5 %, are taken.
+TEST(BarrierReader, AnAcceptableProbabilityInPercentIsNoted) {
+  TempDir dir;
+  auto notes = [&](const std::string& fields) {
+    const std::string barrier = "[[barriers]]\nname = \"B\"\nline = \"L\"\nrules = \"thesis-2015\"\n" +
+                                fields + "\n[barriers.candidate]\nmel = 3200.0\nheight = 5.0\n";
+    return io::load_scenario(dir.write("s.toml", with_barrier(barrier)), kRules).notes;
+  };
+  EXPECT_TRUE(notes("acceptable_energy_exceedance = 0.001\nacceptable_height_exceedance = 0.1").empty());
+  const auto slips = notes("acceptable_energy_exceedance = 0.5\nacceptable_height_exceedance = 0.25");
+  ASSERT_EQ(slips.size(), 2u);
+  EXPECT_EQ(slips[0].field, "barriers[0].acceptable_energy_exceedance");
+  EXPECT_EQ(slips[0].line, 32);
+  EXPECT_TRUE(slips[0].text.starts_with("an acceptable probability of 0.5 is 50 %: it is a fraction "
+                                        "(0.01 is 1 %); if it was meant in %, it is 0.005"))
+      << slips[0].text;
+  ASSERT_TRUE(slips[0].doubt && slips[1].doubt);
+  EXPECT_EQ(slips[0].doubt->subject, "B");
+  EXPECT_EQ(slips[0].doubt->ids, std::vector<std::string>{"exceedance.energy"});
+  EXPECT_EQ(slips[0].doubt->value, 0.5);
+  EXPECT_EQ(slips[1].field, "barriers[0].acceptable_height_exceedance");
+  EXPECT_EQ(slips[1].doubt->ids, std::vector<std::string>{"exceedance.height"});
+}
+
 TEST(BarrierReader, ObservedColumnsInTheSmallerUnitAreNoted) {
   TempDir dir;
   const auto obs = dir.write("obs.csv",
