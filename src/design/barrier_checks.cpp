@@ -157,6 +157,26 @@ std::string rejected_fit(const Builder& b, const QuantityFit& q, const char* fit
          pct(empirical) + " exceed";
 }
 
+// A characteristic value (v_k, h_k) taken from a Weibull fit that its own fit line rejects and
+// lying below the simulated values' own percentile: a rule set that designs on the fit
+// (thesis-2015) takes it whatever the KS says, and the requirement is then the lower of the two
+// the procedure could give. A capacity line that passes only on that one is a WARN, its reason
+// giving the requirement from the simulated values' own percentile (`alt_required`, in the
+// line's unit). `what`: "v_k", `unit` of the characteristic value.
+void below_own_percentile(const Builder& b, CheckLine& l, const Characteristic& c,
+                          const QuantityFit& q, const char* fit_id, const char* what,
+                          const char* unit, double alt_required) {
+  if (l.status != CheckStatus::pass || c.value != c.weibull || !(c.empirical > c.weibull)) return;
+  if (!q.weibull_ks || !(q.weibull_ks->p_value_stephens < b.r.fit_p_value)) return;
+  if (at_least(l.value, alt_required)) return;
+  l.status = CheckStatus::warn;
+  l.reason += std::string(", but ") + what + " " + quantity_text(c.value, unit) +
+              " comes from a Weibull fit that " + fit_id + " rejects (p = " +
+              num(q.weibull_ks->p_value_stephens, 3) + "), below the simulated values' own P" +
+              num(b.r.percentile) + " " + quantity_text(c.empirical, unit) +
+              ", with which the requirement would be " + quantity_text(alt_required, l.unit);
+}
+
 // The candidate's own capacity (its MEL, its height) where the spec's probability is taken at
 // the required one (MEL_req, h_i): `name` ("MEL"), its value, its unit and its capacity line.
 struct OwnCapacity {
@@ -204,7 +224,10 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, const 
   }
 }
 
-void fit_line(Builder& b, const char* id, const char* quantity, const QuantityFit& q) {
+// `c`, `what`, `unit`: the characteristic value this fit gives (v_k, h_k; none for E), whose
+// fit rejected is said with it when the design takes it below the sample's own percentile.
+void fit_line(Builder& b, const char* id, const char* quantity, const QuantityFit& q,
+              const Characteristic* c = nullptr, const char* what = "", const char* unit = "") {
   const double p = q.weibull_ks ? q.weibull_ks->p_value_stephens : kNaN;
   CheckLine& l = b.add(id,
                        std::string("Kolmogorov–Smirnov p-value (Stephens) of the Weibull fit of ") +
@@ -215,8 +238,13 @@ void fit_line(Builder& b, const char* id, const char* quantity, const QuantityFi
   else if (p < b.r.fit_p_value)
     set(l, CheckStatus::warn,
         "p = " + num(p, 3) + " < " + num(b.r.fit_p_value) +
-            ": the Weibull fit is doubtful (D = " + num(q.weibull_ks->statistic, 3) +
-            "); compare the empirical value");
+            ": the Weibull fit is doubtful (D = " + num(q.weibull_ks->statistic, 3) + "); " +
+            (c && c->value == c->weibull && c->empirical > c->weibull
+                 ? std::string("the design takes ") + what + " from it, " +
+                       quantity_text(c->weibull, unit) + ", below the simulated values' own P" +
+                       num(b.r.percentile) + " " + quantity_text(c->empirical, unit) +
+                       ": its requirements are the lower of the two"
+                 : std::string("compare the empirical value")));
   else if (const std::string few = too_few_values(b, q); !few.empty())
     set(l, CheckStatus::warn, "p = " + num(p, 3) + " >= " + num(b.r.fit_p_value) + ", but " + few +
                                   ": a test on so few values rejects almost no fit");
@@ -301,6 +329,12 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
                   d.MEL_req_kJ, declares_energy, d.gamma_E_MEL * e_upper, e_conf);
     capacity_line(b, "energy.sel", "SEL", needs_sel(rules.design_on), d.candidate_sel_kJ,
                   d.SEL_req_kJ, declares_energy, d.gamma_E_SEL * e_upper, e_conf);
+    // E_d ∝ v_k² (E_d = ½ m_d (γF v_k)²): the requirements from the speeds' own percentile.
+    const double v_ratio = d.v_k.weibull > 0 ? d.v_k.empirical / d.v_k.weibull : kNaN;
+    below_own_percentile(b, b.lines[b.lines.size() - 2], d.v_k, d.speed, "fit.v", "v_k", "m/s",
+                         d.MEL_req_kJ * v_ratio * v_ratio);
+    below_own_percentile(b, b.lines.back(), d.v_k, d.speed, "fit.v", "v_k", "m/s",
+                         d.SEL_req_kJ * v_ratio * v_ratio);
     {
       const double value = c.height.value_or(kNaN);
       CheckLine& l = b.add("height.interception",
@@ -316,6 +350,9 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
         set(l, CheckStatus::fail, "height " + has + " < h_i " + needs);
       if (d.h_i_interval)
         within_interval(l, value, d.h_i_interval->upper, "m", d.h_i_interval->confidence);
+      // h_i = h_k γh + f: the same from the heights' own percentile.
+      below_own_percentile(b, l, d.h_k, d.height, "fit.h", "h_k", "m",
+                           d.h_i + (d.h_k.empirical - d.h_k.weibull) * d.gamma_h.value);
     }
     elongation_line(b, c);
     // Table 4.2's columns: P(E > SEL_req), P(E > MEL_req), P(h > h_i), ...
@@ -329,8 +366,8 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
                     d.spec.acceptable_height_exceedance, d.height, "fit.h",
                     {"height", c.height.value_or(kNaN), "m", "height.interception"});
   }
-  fit_line(b, "fit.v", "the speeds", d.speed);
-  fit_line(b, "fit.h", "the passing heights", d.height);
+  fit_line(b, "fit.v", "the speeds", d.speed, &d.v_k, "v_k", "m/s");
+  fit_line(b, "fit.h", "the passing heights", d.height, &d.h_k, "h_k", "m");
   fit_line(b, "fit.E", "the translational energies", d.energy);
   sample_line(b);
   {

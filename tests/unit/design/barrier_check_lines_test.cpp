@@ -385,6 +385,51 @@ TEST(BarrierCheckLines, AnExceedanceFromARejectedFitWarnsInsteadOfPassing) {
   EXPECT_EQ(status(d, rules(), "exceedance.energy"), CheckStatus::pass);
 }
 
+// A rule set that designs on the Weibull quantile (thesis-2015) takes it even where its fit line
+// rejects the fit; where that quantile lies below the sample's own P95, a capacity that meets
+// only the lower requirement WARNs, naming the one from the sample's P95: E_d ∝ v_k², so with
+// v_k 20 → 21 m/s MEL_req 1500 → 1653.75 kJ and SEL_req 1250 → 1378.125 kJ; h_i = h_k γh + f,
+// so with h_k 3 → 3.3 m (γh = 1) h_i 4 → 4.3 m.
+TEST(BarrierCheckLines, APassOnARejectedFitBelowTheSamplesOwnPercentileWarns) {
+  auto d = base();
+  d.v_k.weibull = d.v_k.value = 20;
+  d.v_k.empirical = 21;
+  d.h_k.weibull = d.h_k.value = 3;
+  d.h_k.empirical = 3.3;
+  d.candidate_mel_kJ = 1600;  // meets 1500, not 1653.75
+  d.candidate_sel_kJ = 1400;  // meets both
+  d.spec.candidate->height = 4.2;
+  const auto r = rules();
+  ASSERT_DOUBLE_EQ(r.percentile, 95);
+  // The fits stand: every line passes.
+  for (const char* id : {"energy.mel", "energy.sel", "height.interception"})
+    EXPECT_EQ(status(d, r, id), CheckStatus::pass) << id;
+  d.speed.weibull_ks = ks(0.01);
+  d.height.weibull_ks = ks(0.01);
+  auto lines = design::barrier_check_lines(d, r);
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::warn);
+  EXPECT_EQ(line(lines, "energy.mel").reason,
+            "candidate MEL 1600.0 kJ >= required 1500.0 kJ, but v_k 20.00 m/s comes from a "
+            "Weibull fit that fit.v rejects (p = 0.01), below the simulated values' own P95 21.00 "
+            "m/s, with which the requirement would be 1653.8 kJ");
+  EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::pass);  // 1400 >= 1378.125
+  EXPECT_EQ(line(lines, "height.interception").status, CheckStatus::warn);
+  EXPECT_NE(line(lines, "height.interception").reason.find("the requirement would be 4.30 m"),
+            std::string::npos)
+      << line(lines, "height.interception").reason;
+  EXPECT_NE(line(lines, "fit.v").reason.find("the design takes v_k from it, 20.00 m/s, below the "
+                                             "simulated values' own P95 21.00 m/s"),
+            std::string::npos)
+      << line(lines, "fit.v").reason;
+  // A quantile above the sample's percentile is the larger requirement: no doubt.
+  d.v_k.empirical = 19;
+  d.h_k.empirical = 2.9;
+  lines = design::barrier_check_lines(d, r);
+  EXPECT_EQ(line(lines, "energy.mel").status, CheckStatus::pass);
+  EXPECT_EQ(line(lines, "height.interception").status, CheckStatus::pass);
+  EXPECT_NE(line(lines, "fit.v").reason.find("compare the empirical value"), std::string::npos);
+}
+
 TEST(BarrierCheckLines, SampleSizeWarnsWithTheThrowsNeeded) {
   auto d = base();
   EXPECT_EQ(status(d, rules(), "sample.size"), CheckStatus::pass);  // worst 2.5 % (E_d 30/1250 = 2.4 %)
