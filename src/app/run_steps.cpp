@@ -169,6 +169,11 @@ std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote
   return out;
 }
 
+bool any_in_doubt(const io::LoadedScenario& loaded) {
+  return std::any_of(loaded.notes.begin(), loaded.notes.end(),
+                     [](const io::InputNote& n) { return n.doubt.has_value(); });
+}
+
 void refuse_doubted_inputs(const io::LoadedScenario& loaded) {
   const auto doubting = [](const io::InputNote& n) { return n.doubt.has_value(); };
   const auto first = std::find_if(loaded.notes.begin(), loaded.notes.end(), doubting);
@@ -176,7 +181,8 @@ void refuse_doubted_inputs(const io::LoadedScenario& loaded) {
   const auto n = std::count_if(loaded.notes.begin(), loaded.notes.end(), doubting);
   throw io::InputError(
       first->file, first->line, first->field, fmt::format("{}", first->doubt->value),
-      fmt::format("a value not in doubt (--strict refuses an input noted as a likely slip): {}{}",
+      fmt::format("the value corrected, or confirmed as meant under [confirmed] (--strict refuses "
+                  "an input noted as a likely slip): {}{}",
                   first->text,
                   n > 1 ? fmt::format(" ({} more input{} in doubt, noted above)", n - 1, n > 2 ? "s" : "")
                         : std::string()));

@@ -63,6 +63,8 @@ std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote
 // (io::InputError at the first such note, saying how many there are), so that a pipeline never
 // runs, nor passes a check, on a value the program itself doubts.
 void refuse_doubted_inputs(const io::LoadedScenario& loaded);
+// Whether a note doubts its input (and [confirmed] does not confirm it).
+bool any_in_doubt(const io::LoadedScenario& loaded);
 
 // A run that ran out of memory: the statistics keep every trajectory's runout and every first
 // crossing's values, so memory grows with the trajectories, and a count too large for what this

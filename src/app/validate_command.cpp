@@ -55,7 +55,7 @@ class ValidateCommand final : public Command {
 
   int run() override {
     const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
-    if (strict_) {
+    if (strict_ && any_in_doubt(l)) {
       print_input_notes(stderr, l.notes);  // each said, then the refusal
       refuse_doubted_inputs(l);
     }

@@ -634,22 +634,29 @@ QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& in, std::uint
 
 std::vector<DoubtedInput> pooled_doubts(const QuarryDesign& design, std::vector<DoubtedInput> doubts) {
   const std::size_t given = doubts.size();
-  for (std::size_t k = 0; k < given; ++k)
+  for (std::size_t k = 0; k < given; ++k) {
+    const DoubtedInput d = doubts[k];  // a copy: push_back may move doubts[k]
     for (const QuarryRow& row : design.rows) {
-      if (!row.pooled) continue;
       const bool in_row = std::any_of(row.sections.begin(), row.sections.end(), [&](std::size_t i) {
-        return design.sections[i].spec.name == doubts[k].subject;
+        return design.sections[i].spec.name == d.subject;
       });
       if (!in_row) continue;
-      DoubtedInput d = doubts[k];  // a copy: push_back may move doubts[k]
-      d.subject = row.name;
-      doubts.push_back(d);
+      // The row's own lines (a group's, even of one section): its distances are this section's.
+      if (row.name != d.subject) {
+        doubts.push_back(d);
+        doubts.back().subject = row.name;
+      }
+      // The other sections' lines, only for an input of the simulation (blocks, sources: every
+      // line, no ids): their zones come from the pooled distances. A bench width or a work area
+      // (ids given) is the section's own.
+      if (!d.ids.empty()) continue;
       for (std::size_t i : row.sections)
-        if (design.sections[i].spec.name != doubts[k].subject) {
-          d.subject = design.sections[i].spec.name;
+        if (design.sections[i].spec.name != d.subject) {
           doubts.push_back(d);
+          doubts.back().subject = design.sections[i].spec.name;
         }
     }
+  }
   return doubts;
 }
 

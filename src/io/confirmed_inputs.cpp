@@ -28,7 +28,12 @@ void read(const TomlTable& t, const std::string& prefix, std::vector<Confirmatio
     if (!node.is_number())
       t.fail(key, "the number the input note names, under the field it names, as the note "
                   "says: \"blocks.density\" = 2.65");
-    out.push_back({full, *t.number(key), line_of(node)});  // NaN, infinity: an error there
+    const double v = *t.number(key);  // NaN, infinity: an error there
+    // "a.b" quoted and a = { b = ... } are two TOML keys but one confirmation.
+    for (const Confirmation& c : out)
+      if (c.key == full)
+        t.fail(key, fmt::format("\"{}\" once (it is confirmed at line {} too)", full, c.line));
+    out.push_back({full, v, line_of(node)});
   }
 }
 
@@ -39,9 +44,16 @@ std::string shown(double v) { return fmt::format("{}", v); }
 }  // namespace
 
 std::string confirmation_key(const InputNote& note, const std::filesystem::path& scenario_file) {
+  namespace fs = std::filesystem;
   const std::string& field = note.doubt ? note.doubt->field : note.field;
   if (note.file == scenario_file) return field;
-  return note.file.filename().string() + ":" + field;
+  // The CSV as seen from the scenario's folder: two sections' a/blocks.csv and b/blocks.csv are
+  // two keys (each note must be confirmable on its own).
+  std::error_code ec;
+  const fs::path file = fs::absolute(note.file, ec).lexically_normal();
+  const fs::path folder = fs::absolute(scenario_file, ec).lexically_normal().parent_path();
+  const fs::path rel = ec ? fs::path() : file.lexically_relative(folder);
+  return (rel.empty() ? note.file.filename() : rel).generic_string() + ":" + field;
 }
 
 void apply_confirmations(const TomlTable& top, std::vector<InputNote>& notes) {
@@ -53,6 +65,8 @@ void apply_confirmations(const TomlTable& top, std::vector<InputNote>& notes) {
     const std::string key = confirmation_key(n, top.file());
     keys.push_back(key);
     const std::string entry = fmt::format("\"{}\" = {}", key, shown(n.doubt->value));
+    // A check line names the input as the key does: "rests on blocks.csv:mass", not on "mass".
+    n.doubt->field = key;
     const auto c = std::find_if(given.begin(), given.end(),
                                 [&](const Confirmation& g) { return g.key == key; });
     if (c == given.end()) {

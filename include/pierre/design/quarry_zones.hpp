@@ -145,8 +145,9 @@ struct QuarryOutcome {
 // a section without H).
 QuarryOutcome design_quarry(const std::vector<QuarrySectionInput>& sections, std::uint64_t seed);
 
-// The doubts (check_line.hpp) with those on a pooled section's inputs widened to its group: the
-// group's row and every section of it take their zones from the pooled blocks.
+// The doubts (check_line.hpp) with those on a section's inputs widened to its row (a group's,
+// even of one section) and, for an input of its simulation (blocks, sources: a doubt of every
+// line), to the group's other sections, whose zones come from the pooled distances.
 std::vector<DoubtedInput> pooled_doubts(const QuarryDesign& design, std::vector<DoubtedInput> doubts);
 
 // The governing distance (/H) of a sample under a rule set.

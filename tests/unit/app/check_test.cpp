@@ -232,15 +232,18 @@ TEST_F(Check, AConfirmedValueLetsItsLinesPassAgain) {
     const Result r = pierre(std::string(command) + " '" + (dir_ / "slip.toml").string() + "'" +
                             out + " --strict");
     EXPECT_EQ(r.code, 2);
-    EXPECT_NE(r.err.find("slip.toml:24: blocks.density: found 2.65, expected a value not in doubt "
-                         "(--strict refuses an input noted as a likely slip): the block density "
-                         "2.65 kg/m³ is outside"),
+    EXPECT_NE(r.err.find("slip.toml:24: blocks.density: found 2.65, expected the value corrected, or "
+                         "confirmed as meant under [confirmed] (--strict refuses an input noted as "
+                         "a likely slip): the block density 2.65 kg/m³ is outside"),
               std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(strict));
     const Result ok = pierre(std::string(command) + " '" + (dir_ / "meant.toml").string() + "'" +
                              out + " --strict");
     EXPECT_EQ(ok.code, 0) << ok.err;
+    if (validate) {  // its notes once, on stdout with its verdict
+      EXPECT_EQ(count_of(ok.out + ok.err, "Confirmed as meant"), 1u) << ok.out << ok.err;
+    }
   }
 }
 

@@ -686,5 +686,41 @@ TEST(QuarryZones, ExceedanceRows) {
   EXPECT_LT(row.exceedance[0].rd_fit_h, row.exceedance[1].rd_fit_h);
 }
 
+// A doubt on a section's inputs reaches its row, even a group of that one section; one on its
+// simulation (blocks, sources: no ids) reaches the other sections of its group too, whose zones
+// come from the pooled distances; one on a bench width or a work area stays the section's.
+TEST(QuarryZones, PooledDoubtsReachTheGroupAndOnlyThePooledInputsReachItsSections) {
+  QuarryDesign d;
+  for (const char* name : {"A", "B", "C", "Solo"}) {
+    QuarrySectionResult s;
+    s.spec.name = name;
+    d.sections.push_back(s);
+  }
+  QuarryRow pool, lone, solo;
+  pool.name = "Pool";
+  pool.sections = {0, 1};
+  pool.pooled = true;
+  lone.name = "C";
+  lone.sections = {2};
+  solo.name = "Group of one";
+  solo.sections = {3};
+  d.rows = {pool, lone, solo};
+  auto subjects = [&](const DoubtedInput& in) {
+    std::vector<std::string> out;
+    for (const DoubtedInput& o : pooled_doubts(d, {in})) {
+      EXPECT_EQ(o.field, in.field);
+      EXPECT_EQ(o.ids, in.ids);
+      out.push_back(o.subject);
+    }
+    return out;
+  };
+  using V = std::vector<std::string>;
+  EXPECT_EQ(subjects({"quarries[0].blocks.density", "A", {}, 2.65}), (V{"A", "Pool", "B"}));
+  EXPECT_EQ(subjects({"quarries[0].bench_width", "A", {"bench."}, 300}), (V{"A", "Pool"}));
+  EXPECT_EQ(subjects({"quarries[2].blocks.density", "C", {}, 2.65}), (V{"C"}));
+  EXPECT_EQ(subjects({"quarries[3].sources[0].z", "Solo", {}, 500}), (V{"Solo", "Group of one"}));
+  EXPECT_EQ(subjects({"simulation.gravity", "", {}, 98.1}), (V{""}));
+}
+
 }  // namespace
 }  // namespace pierre::design
