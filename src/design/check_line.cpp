@@ -40,8 +40,8 @@ void doubt_passes(std::vector<CheckLine>& lines, const std::vector<DoubtedInput>
     for (const std::string& f : fields) said += (said.empty() ? "" : ", ") + f;
     l.status = CheckStatus::warn;
     l.reason += ", but it rests on " + said +
-                ", noted as a likely slip (see the input notes): confirm it before relying on "
-                "this line";
+                ", noted as a likely slip (see the input notes): correct it, or confirm it under "
+                "[confirmed], before relying on this line";
   }
 }
 

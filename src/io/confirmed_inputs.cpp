@@ -70,7 +70,8 @@ void apply_confirmations(const TomlTable& top, std::vector<InputNote>& notes) {
     const auto c = std::find_if(given.begin(), given.end(),
                                 [&](const Confirmation& g) { return g.key == key; });
     if (c == given.end()) {
-      n.text += fmt::format(". If it is meant, confirm it in the scenario: [confirmed] {}", entry);
+      if (std::isfinite(n.doubt->value))  // (a doubt without its value cannot be confirmed)
+        n.text += fmt::format(". If it is meant, confirm it in the scenario: [confirmed] {}", entry);
       continue;
     }
     c->used = true;

@@ -106,14 +106,16 @@ TEST(BarrierCheckLines, APassOnADoubtedUnitIsAWarning) {
   design::doubt_passes(lines, doubts);
   for (const char* id : {"energy.mel", "height.interception"}) {
     EXPECT_EQ(line(lines, id).status, CheckStatus::warn) << id;
-    EXPECT_NE(line(lines, id).reason.find(", noted as a likely slip (see the input notes): confirm "
-                                          "it before relying on this line"),
+    EXPECT_NE(line(lines, id).reason.find(", noted as a likely slip (see the input notes): correct it, "
+                                          "or confirm it under [confirmed], before relying on this "
+                                          "line"),
               std::string::npos)
         << line(lines, id).reason;
   }
   EXPECT_EQ(line(lines, "energy.mel").reason,
             mel_reason + ", but it rests on barriers[0].candidate.mel, noted as a likely slip (see "
-                         "the input notes): confirm it before relying on this line");
+                         "the input notes): correct it, or confirm it under [confirmed], before "
+                         "relying on this line");
   EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::pass);  // another barrier's SEL
   EXPECT_FALSE(design::any_failure(lines));
   d.candidate_mel_kJ = 1499;
@@ -148,9 +150,11 @@ TEST(BarrierCheckLines, DoubtsSelectTheirLinesBySubjectAndId) {
   design::doubt_passes(b, {{"quarries[0].bench_width", "North", {"bench."}},
                            {"blocks.density", "", {}}, {"blocks.density", "", {}}});
   EXPECT_EQ(b[0].reason, "r, but it rests on blocks.density, noted as a likely slip (see the input "
-                         "notes): confirm it before relying on this line");
+                         "notes): correct it, or confirm it under [confirmed], before relying on this "
+                         "line");
   EXPECT_EQ(b[2].reason, "r, but it rests on quarries[0].bench_width, blocks.density, noted as a "
-                         "likely slip (see the input notes): confirm it before relying on this line");
+                         "likely slip (see the input notes): correct it, or confirm it under "
+                         "[confirmed], before relying on this line");
   for (int i : {0, 2, 3}) EXPECT_EQ(b[i].status, CheckStatus::warn) << i;
   EXPECT_EQ(b[1].status, CheckStatus::fail);
 }
