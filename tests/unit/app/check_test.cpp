@@ -112,18 +112,25 @@ TEST_F(Check, PassingCandidateExitsZero) {
   }
 }
 
+// pass.toml with its blocks' density typed in t/m³ (2.65), its profile named from anywhere.
+std::string density_in_tonnes() {
+  std::string text = slurp(kData + "pass.toml");
+  auto swap = [&](const std::string& from, const std::string& to) {
+    const auto k = text.find(from);
+    if (k == std::string::npos) throw std::runtime_error("pass.toml has no " + from);
+    text.replace(k, from.size(), to);
+  };
+  swap("[blocks]\ndensity = 2650.0", "[blocks]\ndensity = 2.65");
+  swap("\"../small/profile.csv\"", "\"" + kData + "../small/profile.csv\"");
+  return text;
+}
+
 // A density typed in t/m³ (2.65 for 2650 kg/m³) makes every block 1000 times too light; the
 // reader notes it, and no line of the run may then PASS: a pipeline gating on `check` would take
 // a barrier checked against blocks of a few kilograms for a sized one. Each PASS of the same
 // file with the density right is a WARN naming the input, and FAIL-free, the exit stays 0.
 TEST_F(Check, NoPlainPassOnBlocksTheReaderDoubts) {
-  std::string text = slurp(kData + "pass.toml");
-  const std::string right = "[blocks]\ndensity = 2650.0";
-  ASSERT_NE(text.find(right), std::string::npos);
-  text.replace(text.find(right), right.size(), "[blocks]\ndensity = 2.65");
-  const std::string profile = "\"../small/profile.csv\"";
-  ASSERT_NE(text.find(profile), std::string::npos);
-  text.replace(text.find(profile), profile.size(), "\"" + kData + "../small/profile.csv\"");
+  const std::string text = density_in_tonnes();
   std::ofstream(dir_ / "slip.toml") << text;
   const Result good = pierre("check " + kData + "pass.toml --out '" + (dir_ / "good").string() + "' -q");
   ASSERT_EQ(good.code, 0) << good.err;
@@ -152,13 +159,7 @@ TEST_F(Check, NoPlainPassOnBlocksTheReaderDoubts) {
 // then pass again, as they would have without the note. A confirmation at another value, or
 // under a misspelt name, lifts nothing and is said.
 TEST_F(Check, AConfirmedValueLetsItsLinesPassAgain) {
-  std::string text = slurp(kData + "pass.toml");
-  const std::string right = "[blocks]\ndensity = 2650.0";
-  ASSERT_NE(text.find(right), std::string::npos);
-  text.replace(text.find(right), right.size(), "[blocks]\ndensity = 2.65");
-  const std::string profile = "\"../small/profile.csv\"";
-  ASSERT_NE(text.find(profile), std::string::npos);
-  text.replace(text.find(profile), profile.size(), "\"" + kData + "../small/profile.csv\"");
+  const std::string text = density_in_tonnes();
   struct Case {
     std::string name, confirmed;
   };

@@ -42,6 +42,14 @@ preset = "quarry-face"
   return s + confirmed;
 }
 
+// The two sections' CSVs: 1.5 and 2.5 kg, masses in tonnes.
+void write_blocks(const TempDir& dir) {
+  fs::create_directories(dir.path() / "a");
+  fs::create_directories(dir.path() / "b");
+  dir.write("a/blocks.csv", "id,mass\nA1,1.5\n");
+  dir.write("b/blocks.csv", "id,mass\nB1,2.5\n");
+}
+
 std::vector<InputNote> doubting(const std::vector<InputNote>& notes) {
   std::vector<InputNote> out;
   for (const auto& n : notes)
@@ -51,10 +59,7 @@ std::vector<InputNote> doubting(const std::vector<InputNote>& notes) {
 
 TEST(ConfirmedInputs, TwoCsvsOfOneNameAreConfirmedEachByItsPath) {
   TempDir dir;
-  fs::create_directories(dir.path() / "a");
-  fs::create_directories(dir.path() / "b");
-  dir.write("a/blocks.csv", "id,mass\nA1,1.5\n");
-  dir.write("b/blocks.csv", "id,mass\nB1,2.5\n");
+  write_blocks(dir);
   const auto open = load_scenario(dir.write("s.toml", two_sections("")), kRules);
   const auto both = doubting(open.notes);
   ASSERT_EQ(both.size(), 2u);
@@ -85,10 +90,7 @@ TEST(ConfirmedInputs, TwoCsvsOfOneNameAreConfirmedEachByItsPath) {
 // given both ways it is an error, not a second confirmation said to confirm nothing.
 TEST(ConfirmedInputs, OneKeyGivenTwiceIsAnError) {
   TempDir dir;
-  fs::create_directories(dir.path() / "a");
-  fs::create_directories(dir.path() / "b");
-  dir.write("a/blocks.csv", "id,mass\nA1,1.5\n");
-  dir.write("b/blocks.csv", "id,mass\nB1,2.5\n");
+  write_blocks(dir);
   const auto file = dir.write(
       "s.toml", two_sections("\n[confirmed]\n\"simulation.gravity\" = 3.7\nsimulation = { gravity = 3.7 }\n"));
   try {
