@@ -53,7 +53,10 @@ std::string confirmation_key(const InputNote& note, const std::filesystem::path&
   const fs::path file = fs::absolute(note.file, ec).lexically_normal();
   const fs::path folder = fs::absolute(scenario_file, ec).lexically_normal().parent_path();
   const fs::path rel = ec ? fs::path() : file.lexically_relative(folder);
-  return (rel.empty() ? note.file.filename() : rel).generic_string() + ":" + field;
+  // Its line too, as the note prints it ("blocks.csv:26: mass"): two notes on one column (the
+  // heaviest block, a row given by mass among rows by volume) are two keys.
+  return (rel.empty() ? note.file.filename() : rel).generic_string() + ":" +
+         std::to_string(note.line) + ":" + field;
 }
 
 void apply_confirmations(const TomlTable& top, std::vector<InputNote>& notes) {
@@ -65,7 +68,7 @@ void apply_confirmations(const TomlTable& top, std::vector<InputNote>& notes) {
     const std::string key = confirmation_key(n, top.file());
     keys.push_back(key);
     const std::string entry = fmt::format("\"{}\" = {}", key, shown(n.doubt->value));
-    // A check line names the input as the key does: "rests on blocks.csv:mass", not on "mass".
+    // A check line names the input as the key does: "rests on blocks.csv:2:mass", not on "mass".
     n.doubt->field = key;
     const auto c = std::find_if(given.begin(), given.end(),
                                 [&](const Confirmation& g) { return g.key == key; });

@@ -14,7 +14,8 @@
 namespace pierre::io::detail {
 
 // The key that confirms a note: the field it names ("blocks.density", "sources[1].z"), after
-// the file's name for a note on a CSV ("blocks.csv:mass"). `scenario_file`: the TOML file.
+// the CSV's path from the scenario's folder and the line for a note on a CSV
+// ("north/blocks.csv:26:mass"). `scenario_file`: the TOML file.
 std::string confirmation_key(const InputNote& note, const std::filesystem::path& scenario_file);
 
 // Reads top.confirmed (keys as confirmation_key gives them, quoted or as nested tables; each

@@ -64,24 +64,24 @@ TEST(ConfirmedInputs, TwoCsvsOfOneNameAreConfirmedEachByItsPath) {
   const auto both = doubting(open.notes);
   ASSERT_EQ(both.size(), 2u);
   // Each note names its own key, and the check lines name the input by it.
-  EXPECT_EQ(both[0].doubt->field, "a/blocks.csv:mass");
-  EXPECT_EQ(both[1].doubt->field, "b/blocks.csv:mass");
+  EXPECT_EQ(both[0].doubt->field, "a/blocks.csv:2:mass");
+  EXPECT_EQ(both[1].doubt->field, "b/blocks.csv:2:mass");
   EXPECT_EQ(both[0].doubt->subject, "a");
-  EXPECT_NE(both[0].text.find("[confirmed] \"a/blocks.csv:mass\" = 1.5"), std::string::npos)
+  EXPECT_NE(both[0].text.find("[confirmed] \"a/blocks.csv:2:mass\" = 1.5"), std::string::npos)
       << both[0].text;
   // One confirmed: the other stays in doubt.
   const auto one = load_scenario(
-      dir.write("s.toml", two_sections("\n[confirmed]\n\"b/blocks.csv:mass\" = 2.5\n")), kRules);
+      dir.write("s.toml", two_sections("\n[confirmed]\n\"b/blocks.csv:2:mass\" = 2.5\n")), kRules);
   const auto left = doubting(one.notes);
   ASSERT_EQ(left.size(), 1u);
-  EXPECT_EQ(left[0].doubt->field, "a/blocks.csv:mass");
+  EXPECT_EQ(left[0].doubt->field, "a/blocks.csv:2:mass");
   // Both, each by its own key: none.
-  const auto all = load_scenario(dir.write("s.toml", two_sections("\n[confirmed]\n\"a/blocks.csv:mass\" = 1.5\n"
-                                                                  "\"b/blocks.csv:mass\" = 2.5\n")),
+  const auto all = load_scenario(dir.write("s.toml", two_sections("\n[confirmed]\n\"a/blocks.csv:2:mass\" = 1.5\n"
+                                                                  "\"b/blocks.csv:2:mass\" = 2.5\n")),
                                  kRules);
   EXPECT_TRUE(doubting(all.notes).empty());
   ASSERT_EQ(all.notes.size(), 2u);
-  EXPECT_NE(all.notes[1].text.find("Confirmed as meant ([confirmed] \"b/blocks.csv:mass\" = 2.5, line "),
+  EXPECT_NE(all.notes[1].text.find("Confirmed as meant ([confirmed] \"b/blocks.csv:2:mass\" = 2.5, line "),
             std::string::npos)
       << all.notes[1].text;
 }
