@@ -162,6 +162,10 @@ std::optional<std::string> check_run_memory(const io::LoadedScenario& loaded,
       throws ? "--throws" : "simulation.throws");
 }
 
+namespace {
+bool in_doubt(const io::InputNote& n) { return n.doubt.has_value(); }
+}  // namespace
+
 std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote>& notes) {
   std::vector<design::DoubtedInput> out;
   for (const io::InputNote& n : notes)
@@ -170,15 +174,13 @@ std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote
 }
 
 bool any_in_doubt(const io::LoadedScenario& loaded) {
-  return std::any_of(loaded.notes.begin(), loaded.notes.end(),
-                     [](const io::InputNote& n) { return n.doubt.has_value(); });
+  return std::any_of(loaded.notes.begin(), loaded.notes.end(), in_doubt);
 }
 
 void refuse_doubted_inputs(const io::LoadedScenario& loaded) {
-  const auto doubting = [](const io::InputNote& n) { return n.doubt.has_value(); };
-  const auto first = std::find_if(loaded.notes.begin(), loaded.notes.end(), doubting);
+  const auto first = std::find_if(loaded.notes.begin(), loaded.notes.end(), in_doubt);
   if (first == loaded.notes.end()) return;
-  const auto n = std::count_if(loaded.notes.begin(), loaded.notes.end(), doubting);
+  const auto n = std::count_if(loaded.notes.begin(), loaded.notes.end(), in_doubt);
   throw io::InputError(
       first->file, first->line, first->field, fmt::format("{}", first->doubt->value),
       fmt::format("the value corrected, or confirmed as meant under [confirmed] (--strict refuses "

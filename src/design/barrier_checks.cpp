@@ -148,10 +148,20 @@ std::string too_few_values(const Builder& b, const QuantityFit& q) {
          ", fewer than the " + num(b.r.min_crossings) + " crossings the rule set asks (reach)";
 }
 
+// Whether the fit line of `q` rejects its Weibull fit (KS p below the rule set's).
+bool fit_rejected(const Builder& b, const QuantityFit& q) {
+  return q.weibull_ks && q.weibull_ks->p_value_stephens < b.r.fit_p_value;
+}
+
+// A characteristic value the design takes from its Weibull fit, below the sample's own percentile.
+bool weibull_below_own(const Characteristic& c) {
+  return c.value == c.weibull && c.empirical > c.weibull;
+}
+
 // A Weibull fit its own fit line rejects (KS p below the rule set's): its tail is no basis to
 // pass either. Empty when the fit stands.
 std::string rejected_fit(const Builder& b, const QuantityFit& q, const char* fit_id, double empirical) {
-  if (!q.weibull_ks || !(q.weibull_ks->p_value_stephens < b.r.fit_p_value)) return {};
+  if (!fit_rejected(b, q)) return {};
   return std::string("a Weibull fit that ") + fit_id + " rejects (p = " +
          num(q.weibull_ks->p_value_stephens, 3) + "); of the simulated values themselves " +
          pct(empirical) + " exceed";
@@ -166,9 +176,9 @@ std::string rejected_fit(const Builder& b, const QuantityFit& q, const char* fit
 void below_own_percentile(const Builder& b, CheckLine& l, const Characteristic& c,
                           const QuantityFit& q, const char* fit_id, const char* what,
                           const char* unit, double alt_required) {
-  if (l.status != CheckStatus::pass || c.value != c.weibull || !(c.empirical > c.weibull)) return;
-  if (!q.weibull_ks || !(q.weibull_ks->p_value_stephens < b.r.fit_p_value)) return;
-  if (at_least(l.value, alt_required)) return;
+  if (l.status != CheckStatus::pass || !weibull_below_own(c) || !fit_rejected(b, q) ||
+      at_least(l.value, alt_required))
+    return;
   l.status = CheckStatus::warn;
   l.reason += std::string(", but ") + what + " " + quantity_text(c.value, unit) +
               " comes from a Weibull fit that " + fit_id + " rejects (p = " +
@@ -239,7 +249,7 @@ void fit_line(Builder& b, const char* id, const char* quantity, const QuantityFi
     set(l, CheckStatus::warn,
         "p = " + num(p, 3) + " < " + num(b.r.fit_p_value) +
             ": the Weibull fit is doubtful (D = " + num(q.weibull_ks->statistic, 3) + "); " +
-            (c && c->value == c->weibull && c->empirical > c->weibull
+            (c && weibull_below_own(*c)
                  ? std::string("the design takes ") + what + " from it, " +
                        quantity_text(c->weibull, unit) + ", below the simulated values' own P" +
                        num(b.r.percentile) + " " + quantity_text(c->empirical, unit) +

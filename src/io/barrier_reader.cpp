@@ -31,13 +31,12 @@ using model::InputLimits;
 // `barrier`: whose design block it is; its energies and their exceedance rest on it.
 void note_density(const TomlTable& d, double density, const std::string& barrier,
                   std::vector<InputNote>& notes) {
-  const design::DoubtedInput doubt{d.field("density"), barrier, {"energy.", "exceedance.energy"},
-                                   density};
   if (density >= detail::kRockDensityMin && density <= detail::kRockDensityMax) return;
   notes.push_back({d.file(), line_of(*d.find("density")), d.field("density"),
                    fmt::format("the design block's density {:g} kg/m³ is {}", density,
                                detail::density_slip(density, "an energy 1000 times too small")),
-                   doubt});
+                   design::DoubtedInput{d.field("density"), barrier,
+                                        {"energy.", "exceedance.energy"}, density}});
 }
 
 design::DesignBlock read_design_block(const TomlTable& t, const std::string& barrier,
@@ -107,9 +106,9 @@ std::string typed(double v) { return design::number_text(v, 15); }
 void note_unit_slip(const TomlTable& t, std::string_view key, std::string_view what, double v,
                     const UnitSlip& u, std::vector<InputNote>& notes, const std::string& barrier = "",
                     std::vector<std::string> lines = {}) {
+  if (!(v > u.limit)) return;
   std::optional<design::DoubtedInput> doubt;
   if (!lines.empty()) doubt = design::DoubtedInput{t.field(key), barrier, std::move(lines), v};
-  if (!(v > u.limit)) return;
   notes.push_back({t.file(), line_of(*t.find(key)), t.field(key),
                    fmt::format("{} {} {} is more than {} {}{}: it is read in {}; if it was "
                                "meant in {}, it is {} {}",

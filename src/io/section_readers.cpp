@@ -122,13 +122,13 @@ void note_runs_back_in_x(const std::vector<Vertex>& vs, bool from_csv, std::vect
     const bool one = last == i;
     notes.push_back(
         {behind.file, behind.line, from_csv ? std::string("x") : behind.field,
-            fmt::format("profile segment{} {} ({} → {}, x {} → {} m) run{} back in x: {} read as an "
+         fmt::format("profile segment{} {} ({} → {}, x {} → {} m) run{} back in x: {} read as an "
                      "overhang (the air below {}); check the x values if the slope has none",
                      one ? "" : "s",
                      one ? std::to_string(i) : fmt::format("{}-{}", i, last), where(from),
                      where(to), from.p.x, to.p.x, one ? "s" : "", one ? "it is" : "they are",
                      one ? "it" : "them"),
-      {}});
+         {}});
     i = last;
   }
 }
