@@ -131,8 +131,10 @@ class Integrator {
     if (s.n.z <= 0.0) {  // vertical or overhanging: no sliding, flight along the face
       v_ = v - dot(v, s.n) * s.n;
       mode_ = Mode::flight;
-      dep_ = Departure{};
-      dep_.segment[0] = j;
+      // At the face's foot the ground beside it is departed from too, as from a rebound there:
+      // a block that comes down the face enters it at once (its line, solved from coordinates,
+      // could hold p_ a rounding below it, with no root, and the block fell through).
+      depart(j, std::clamp(dot(p_ - s.a, s.d), 0.0, s.length));
       dep_.tangent[0] = true;
       return check_flight();
     }
@@ -269,6 +271,16 @@ class Integrator {
     }
     // Rebound: flight departing from the segment, and from its neighbour at a vertex.
     mode_ = Mode::flight;
+    depart(j, along);
+    // The rebound's velocity and spin were checked above; its position is the contact's.
+    if (!all_finite(p_.x, p_.z)) stop(StopReason::numerical);
+  }
+
+  // A flight leaves segment j `along` metres from its start vertex: the segment, and at a vertex
+  // its neighbour, are departed from (model-2d.md §2); entering the neighbour at a concave vertex
+  // is a contact at once (profile_contact.cpp, line_root).
+  void depart(int j, double along) {
+    const Segment& s = profile_.segment(j);
     dep_ = Departure{};
     dep_.segment[0] = j;
     const double slack = kVertexSlack * std::max(1.0, s.length);
@@ -279,8 +291,6 @@ class Integrator {
       dep_.segment[1] = j + 1;
       dep_.concave_vertex = profile_.turn_after(j) == VertexTurn::concave;
     }
-    // The rebound's velocity and spin were checked above; its position is the contact's.
-    if (!all_finite(p_.x, p_.z)) stop(StopReason::numerical);
   }
 
   void slide() {
