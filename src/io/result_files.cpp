@@ -34,6 +34,10 @@ void text_cell(fmt::memory_buffer& b, const std::string& s) {
 }
 
 void num(fmt::memory_buffer& b, double v) { fmt::format_to(fmt::appender(b), FMT_COMPILE("{:.9g}"), v); }
+// A number that may be undefined (NaN): an empty cell then, as a missing first impact is.
+void optional_num(fmt::memory_buffer& b, double v) {
+  if (!std::isnan(v)) num(b, v);
+}
 
 std::string_view to_string(model::ImpactResult r) {
   switch (r) {
@@ -205,9 +209,12 @@ std::unique_ptr<ResultFiles::Text> ResultFiles::format(const sim::ChunkResult& c
       fmt::format_to(out(b), FMT_COMPILE("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"), d.vt_in,
                      d.vn_in, d.vt_out, d.vn_out, d.vt_in_rot, d.vn_in_rot, d.vt_out_rot,
                      d.vn_out_rot);
-      fmt::format_to(out(b), FMT_COMPILE("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g}\n"), d.kn, d.kt,
-                     d.kn_apparent, d.kt_apparent, d.incidence_deg, d.contained ? 1 : 0,
-                     d.energy_in / 1000.0, d.energy_out / 1000.0);
+      fmt::format_to(out(b), FMT_COMPILE("{:.9g},{:.9g},"), d.kn, d.kt);
+      optional_num(b, d.kn_apparent);
+      b.push_back(',');
+      optional_num(b, d.kt_apparent);
+      fmt::format_to(out(b), FMT_COMPILE(",{:.9g},{},{:.9g},{:.9g}\n"), d.incidence_deg,
+                     d.contained ? 1 : 0, d.energy_in / 1000.0, d.energy_out / 1000.0);
     }
   }
   return text;

@@ -1,6 +1,7 @@
 #include "pierre/model/impact_law.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "pierre/model/restitution.hpp"
@@ -11,6 +12,7 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 // v⁺·n at or below this (m/s) after an impact: the block slides (model-2d.md §3 step 7). A
 // numerical tolerance of the law, not a scenario setting.
 constexpr double kReboundSlidingThreshold = 1e-6;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }
 
 ImpactLaw::ImpactLaw(const RoughnessModel& roughness, double stop_head_factor, double gravity)
@@ -128,10 +130,11 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
 
   // 7. Rebound, or sliding when it would not leave the true surface.
   Vec2 v_out = vt_out * t_r + vn_out * n_r;
-  const double vn_true_out = dot(v_out, n);
+  double vn_true_out = dot(v_out, n);
   out.result = ImpactResult::rebound;
   if (vn_true_out <= kReboundSlidingThreshold) {
     v_out = v_out - vn_true_out * n;
+    vn_true_out = 0.0;  // what the block leaves with: along the surface
     out.result = ImpactResult::sliding;
   }
 
@@ -141,11 +144,12 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
       0.5 * blk.mass * dot(v_out, v_out) + 0.5 * blk.inertia * omega_out * omega_out;
   if (energy_out < blk.stop_energy) {
     out.result = ImpactResult::stopped;
-    v_out = {0.0, 0.0};
-    omega_out = 0.0;
+    out.v = {0.0, 0.0};
+    out.omega = 0.0;
+  } else {
+    out.v = v_out;
+    out.omega = omega_out;
   }
-  out.v = v_out;
-  out.omega = omega_out;
 
   // 9. The record (§3.9), only when asked for: it costs more than the impact itself.
   if (!detail) return out;
@@ -157,16 +161,20 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   det.r_eff = r_eff;
   det.vn_in = vn_in_true;
   det.vt_in = vt_in_true;
+  // The rebound in the true frame is the one energy_out is of: after step 7, before a stop.
   det.vn_out = vn_true_out;
-  det.vt_out = dot(vt_out * t_r + vn_out * n_r, t_hat);
+  det.vt_out = dot(v_out, t_hat);
   det.vn_in_rot = vn;
   det.vt_in_rot = vt;
   det.vn_out_rot = vn_out;
   det.vt_out_rot = vt_out;
   det.kn = kn;
   det.kt = kt;
-  det.kn_apparent = vn_in_true != 0 ? -det.vn_out / vn_in_true : 0.0;
-  det.kt_apparent = vt_in_true != 0 ? det.vt_out / vt_in_true : 0.0;
+  // Rebound over incident component (§3.8), where the block comes in along that axis at all: a
+  // launch from sliding meets the ground with v·n a rounding from 0, and a quotient by it is
+  // noise (~10¹⁵). Below the tolerance of step 7 it is undefined: NaN, an empty cell.
+  det.kn_apparent = std::abs(vn_in_true) > kReboundSlidingThreshold ? -det.vn_out / vn_in_true : kNaN;
+  det.kt_apparent = std::abs(vt_in_true) > kReboundSlidingThreshold ? det.vt_out / vt_in_true : kNaN;
   det.incidence_deg = std::atan2(-vn_in_true, std::abs(vt_in_true)) * kDeg;
   det.energy_in = 0.5 * blk.mass * dot(v, v) + 0.5 * blk.inertia * omega * omega;
   det.energy_out = energy_out;

@@ -54,10 +54,15 @@ struct ImpactDetail {
   double slope_deg = 0;      // β: the true surface's descent angle in the travel direction
   double roughness_deg = 0;  // θ
   double r_eff = 0;          // effective radius, m
-  double vt_in = 0, vn_in = 0, vt_out = 0, vn_out = 0;  // true n–t frame (t along travel)
-  double vt_in_rot = 0, vn_in_rot = 0, vt_out_rot = 0, vn_out_rot = 0;  // rotated n'–t'
+  // True n–t frame (t along travel). The rebound is the velocity the block leaves with, after
+  // step 7 (a sliding block's vn_out is 0), the one energy_out is of; for a stopped block, the
+  // one the stopping criterion found too weak.
+  double vt_in = 0, vn_in = 0, vt_out = 0, vn_out = 0;
+  double vt_in_rot = 0, vn_in_rot = 0, vt_out_rot = 0, vn_out_rot = 0;  // rotated n'–t': Goldsmith's own
   double kn = 0, kt = 0;                // true factors (n'–t')
-  double kn_apparent = 0, kt_apparent = 0;  // rebound over incident in n–t (§3.8)
+  // Rebound over incident in n–t (§3.8); NaN where the incident component is within the
+  // rebound-or-slide tolerance of 0 (a launch from sliding: no approach along n).
+  double kn_apparent = 0, kt_apparent = 0;
   double incidence_deg = 0;  // α_in between the incident velocity and the true surface
   bool contained = false;    // contained slip (Eq 3.11) or not (Eq 3.12)
   double energy_in = 0, energy_out = 0;  // kinetic energy (translational + rotational), J
