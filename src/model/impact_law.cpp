@@ -130,13 +130,13 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
 
   // 7. Rebound, or sliding when it would not leave the true surface.
   Vec2 v_out = vt_out * t_r + vn_out * n_r;
-  double vn_true_out = dot(v_out, n);
+  const double vn_true_out = dot(v_out, n);
   out.result = ImpactResult::rebound;
   if (vn_true_out <= kReboundSlidingThreshold) {
     v_out = v_out - vn_true_out * n;
-    vn_true_out = 0.0;  // what the block leaves with: along the surface
     out.result = ImpactResult::sliding;
   }
+  const Vec2 v_left = v_out;  // what the block leaves with, or would have (the record's)
 
   // 8. Stopping criterion (Eq 3.13): energy head E/(m g) after the impact against c_stop R,
   // compared as E against m g c_stop R so that the branch does not wait for a division.
@@ -144,12 +144,11 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
       0.5 * blk.mass * dot(v_out, v_out) + 0.5 * blk.inertia * omega_out * omega_out;
   if (energy_out < blk.stop_energy) {
     out.result = ImpactResult::stopped;
-    out.v = {0.0, 0.0};
-    out.omega = 0.0;
-  } else {
-    out.v = v_out;
-    out.omega = omega_out;
+    v_out = {0.0, 0.0};
+    omega_out = 0.0;
   }
+  out.v = v_out;
+  out.omega = omega_out;
 
   // 9. The record (§3.9), only when asked for: it costs more than the impact itself.
   if (!detail) return out;
@@ -162,8 +161,8 @@ ImpactOutcome ImpactLaw::resolve(Vec2 v, double omega, const geometry::Segment& 
   det.vn_in = vn_in_true;
   det.vt_in = vt_in_true;
   // The rebound in the true frame is the one energy_out is of: after step 7, before a stop.
-  det.vn_out = vn_true_out;
-  det.vt_out = dot(v_out, t_hat);
+  det.vn_out = vn_true_out <= kReboundSlidingThreshold ? 0.0 : vn_true_out;  // sliding: along it
+  det.vt_out = dot(v_left, t_hat);
   det.vn_in_rot = vn;
   det.vt_in_rot = vt;
   det.vn_out_rot = vn_out;
