@@ -212,7 +212,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   // before the folder exists, so that it is always taken away again.
   const InterruptGuard interrupt;
   opt.stop = interrupt.flag();
-  const std::unique_ptr<io::OutputFolder> folder = open_output_folder(o.out);
+  const std::unique_ptr<io::OutputFolder> folder = open_output_folder(o.out, loaded.inputs);
   if (!folder) return kExitInput;
   io::ResultFiles files(folder->staging(), o.impacts);
   design::RunSamples all(0, 1);
@@ -299,7 +299,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   io::write_report(folder->staged(io::kReportXlsx), report, layout);
   bar.finish();
   if (interrupt.interrupted()) return report_interrupted(o.out.c_str());
-  const auto written = folder->commit({io::kImpactsCsv});
+  const auto written = commit_results(*folder);
   if (o.committed) *o.committed = true;
   if (o.quiet) print_run_notes(stderr, stats);
   print_to_stdout([&] {

@@ -175,7 +175,7 @@ class RunCommand final : public Command {
     // before the folder exists, so that it is always taken away again.
     const InterruptGuard interrupt;
     opt.stop = interrupt.flag();
-    const std::unique_ptr<io::OutputFolder> folder = open_output_folder(out_);
+    const std::unique_ptr<io::OutputFolder> folder = open_output_folder(out_, loaded.inputs);
     if (!folder) return kExitInput;
     io::ResultFiles files(folder->staging(), sc, impacts_, all_crossings_);
     // The report's data sheets: as many rows as its layout shows (the CSVs hold every row).
@@ -210,7 +210,7 @@ class RunCommand final : public Command {
                      design_results, std::move(first));
     bar.finish();
     if (interrupt.interrupted()) return report_interrupted(out_.c_str());
-    const auto written = folder->commit({io::kImpactsCsv});
+    const auto written = commit_results(*folder);
     committed_ = true;
     if (quiet_) print_run_notes(stderr, stats);
     print_to_stdout([&] {

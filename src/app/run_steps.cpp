@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "pierre/io/xlsx_report.hpp"
+
 namespace pierre::app {
 
 unsigned threads_used(unsigned requested, std::uint64_t chunks) {
@@ -41,9 +43,44 @@ std::string output_folder_problem(const std::string& out, const std::error_code&
                      code.message(), exists ? "write in" : "create");
 }
 
+// The input of this run that a result in `out` would replace (or, impacts.csv, remove): a
+// blocks CSV named crossings.csv with --out at the scenario's folder would be overwritten by
+// the run that had just read it. Empty when there is none.
+std::string result_over_input(const std::string& out, const std::vector<io::InputFile>& inputs) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(out, ec)) return {};  // a folder made by the run holds no input
+  // A path by its folder's canonical form and its own name: the same entry of a folder however
+  // named (./x.csv, ../d/x.csv), a link included (renaming over it would replace the link).
+  auto entry = [](const fs::path& p) {
+    std::error_code e;
+    const fs::path dir = fs::weakly_canonical(fs::absolute(p, e).parent_path(), e);
+    return dir / p.filename();
+  };
+  for (const char* name : {io::kTrajectoriesCsv, io::kCrossingsCsv, io::kImpactsCsv,
+                           io::kSummaryJson, io::kReportXlsx}) {
+    const fs::path result = fs::path(out) / name;
+    if (!fs::exists(fs::symlink_status(result, ec))) continue;
+    for (const io::InputFile& in : inputs)
+      if (entry(result) == entry(in.file) || fs::equivalent(result, in.file, ec))
+        return fmt::format(
+            "--out: found {}, where the result {} would replace {}, an input of this run; "
+            "expected a folder that holds none of the run's inputs by a result's name "
+            "(trajectories.csv, crossings.csv, impacts.csv, summary.json, report.xlsx): give "
+            "another --out, or rename the input",
+            out, name, in.file.string());
+  }
+  return {};
+}
+
 }  // namespace
 
-std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out) {
+std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out,
+                                                     const std::vector<io::InputFile>& inputs) {
+  if (const std::string clash = result_over_input(out, inputs); !clash.empty()) {
+    fmt::print(stderr, "{}\n", clash);
+    return nullptr;
+  }
   try {
     return std::make_unique<io::OutputFolder>(out);
   } catch (const std::filesystem::filesystem_error& e) {
@@ -51,6 +88,16 @@ std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out) {
     fmt::print(stderr, "{}\n", output_folder_problem(out, e.code()));
     return nullptr;
   }
+}
+
+std::vector<std::filesystem::path> commit_results(io::OutputFolder& folder) {
+  auto written = folder.commit({io::stale_impacts_csv()});
+  for (const auto& f : folder.kept())
+    fmt::print(stderr,
+               "Note: {} is left as it is: pierre did not write it (it is not a file that begins "
+               "with pierre's header), and this run wrote no file of that name.\n",
+               f.string());
+  return written;
 }
 
 io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectories,

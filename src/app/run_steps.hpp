@@ -19,8 +19,14 @@ namespace pierre::app {
 unsigned threads_used(unsigned requested, std::uint64_t chunks);
 
 // The output folder, staged until commit (io::OutputFolder); null, with the reason on stderr,
-// when it cannot be made.
-std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out);
+// when it cannot be made, or when a result would replace one of `inputs` (the files the run
+// read) there.
+std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out,
+                                                     const std::vector<io::InputFile>& inputs);
+
+// Commits the run's files (io::OutputFolder::commit, a stale impacts.csv removed when pierre
+// wrote it) and says on stderr which file by a result's name was left alone, not being pierre's.
+std::vector<std::filesystem::path> commit_results(io::OutputFolder& folder);
 
 // summary.json's account of the run: the scenario as loaded (seed and throws after --seed and
 // --throws), what was run, and the report layout among the inputs.

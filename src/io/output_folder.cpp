@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <climits>
+#include <fstream>
 #include <system_error>
 
 namespace pierre::io {
@@ -121,7 +122,18 @@ OutputFolder::~OutputFolder() {
   if (!done_) discard();
 }
 
-std::vector<fs::path> OutputFolder::commit(const std::vector<std::string>& stale) {
+namespace {
+// Whether the first line of `file` is one of `headers` (a CR before the LF ignored).
+bool starts_with_header(const fs::path& file, const std::vector<std::string>& headers) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line)) return false;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return std::find(headers.begin(), headers.end(), line) != headers.end();
+}
+}  // namespace
+
+std::vector<fs::path> OutputFolder::commit(const std::vector<StaleResult>& stale) {
   std::vector<fs::path> names;
   for (const auto& e : fs::directory_iterator(staging_))
     if (e.is_regular_file()) names.push_back(e.path().filename());
@@ -134,8 +146,19 @@ std::vector<fs::path> OutputFolder::commit(const std::vector<std::string>& stale
   // come back (a report held open by another program must not leave half a run behind).
   std::vector<fs::path> old;
   for (const auto& n : names) old.push_back(n);
-  for (const auto& s : stale)
-    if (std::find(names.begin(), names.end(), fs::path(s)) == names.end()) old.push_back(s);
+  kept_.clear();
+  for (const auto& s : stale) {
+    if (std::find(names.begin(), names.end(), fs::path(s.name)) != names.end()) continue;
+    std::error_code ec;
+    if (!fs::is_regular_file(fs::symlink_status(dir_ / s.name, ec))) {
+      if (fs::exists(fs::symlink_status(dir_ / s.name, ec))) kept_.push_back(dir_ / s.name);
+      continue;
+    }
+    if (starts_with_header(dir_ / s.name, s.headers))
+      old.push_back(s.name);
+    else
+      kept_.push_back(dir_ / s.name);
+  }
   std::vector<fs::path> present;
   for (const auto& n : old) {
     std::error_code ec;

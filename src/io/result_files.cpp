@@ -112,14 +112,19 @@ void ResultFiles::open(const std::filesystem::path& folder, bool impacts) {
       lead +
           "trajectory,line,chainage_m,block_id,mass_kg,time_s,direction,vx_m_s,vz_m_s,speed_m_s,"
           "omega_rad_s,translational_energy_kJ,rotational_energy_kJ,passing_height_m,sliding");
-  if (impacts)
-    impacts_ = std::make_unique<Csv>(
-        folder / kImpactsCsv,
-        lead +
-            "trajectory,impact,time_s,x_m,z_m,segment,material,result,slope_deg,roughness_deg,"
-            "r_eff_m,vt_in_m_s,vn_in_m_s,vt_out_m_s,vn_out_m_s,vt_in_rot_m_s,vn_in_rot_m_s,"
-            "vt_out_rot_m_s,vn_out_rot_m_s,kn,kt,kn_apparent,kt_apparent,incidence_deg,contained,"
-            "energy_in_kJ,energy_out_kJ");
+  if (impacts) impacts_ = std::make_unique<Csv>(folder / kImpactsCsv, impacts_csv_header(sectioned_));
+}
+
+std::string impacts_csv_header(bool sectioned) {
+  return std::string(sectioned ? "section," : "") +
+         "trajectory,impact,time_s,x_m,z_m,segment,material,result,slope_deg,roughness_deg,"
+         "r_eff_m,vt_in_m_s,vn_in_m_s,vt_out_m_s,vn_out_m_s,vt_in_rot_m_s,vn_in_rot_m_s,"
+         "vt_out_rot_m_s,vn_out_rot_m_s,kn,kt,kn_apparent,kt_apparent,incidence_deg,contained,"
+         "energy_in_kJ,energy_out_kJ";
+}
+
+StaleResult stale_impacts_csv() {
+  return {kImpactsCsv, {impacts_csv_header(false), impacts_csv_header(true)}};
 }
 
 void ResultFiles::begin_section(const sim::Scenario& scenario, std::string name) {

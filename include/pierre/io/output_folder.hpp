@@ -35,6 +35,14 @@ class OutputWriteError : public std::runtime_error {
   OutputWriteError(const std::filesystem::path& staged, const std::string& why);
 };
 
+// A result an earlier run may have left in DIR that this run does not write (impacts.csv
+// without --impacts): removed at commit only when its first line is one of `headers`, that is
+// when pierre wrote it; a file of the user's by that name is left alone (OutputFolder::kept).
+struct StaleResult {
+  std::string name;
+  std::vector<std::string> headers;
+};
+
 class OutputFolder {
  public:
   // Creates DIR (and its parents) when missing, then the staging folder. Throws
@@ -50,11 +58,14 @@ class OutputFolder {
   std::filesystem::path staged(std::string_view name) const { return staging_ / name; }
 
   // Moves every staged file into DIR (replacing files of the same name), removes the files of
-  // DIR named in `stale` that this run did not produce (outputs of an earlier run with other
-  // options), removes the staging folder. Returns the final paths, sorted by name. All or
-  // nothing: when a file cannot be replaced (held open, not a file), DIR is put back as it was
-  // and CommitError names the file.
-  std::vector<std::filesystem::path> commit(const std::vector<std::string>& stale = {});
+  // DIR named in `stale` that this run did not produce and an earlier run of pierre did (by
+  // their first line), removes the staging folder. Returns the final paths, sorted by name. All
+  // or nothing: when a file cannot be replaced (held open, not a file), DIR is put back as it
+  // was and CommitError names the file.
+  std::vector<std::filesystem::path> commit(const std::vector<StaleResult>& stale = {});
+  // After commit: the files of DIR by a stale result's name that were left as they are, their
+  // first line not being pierre's.
+  const std::vector<std::filesystem::path>& kept() const { return kept_; }
   // Removes the staging folder (and DIR when created here and empty); never throws.
   void discard() noexcept;
 
@@ -62,6 +73,7 @@ class OutputFolder {
   void release_staging() noexcept;
 
   std::filesystem::path dir_, staging_;
+  std::vector<std::filesystem::path> kept_;
   std::filesystem::path created_top_;  // the topmost folder created for DIR; empty: none
   int staging_lock_ = -1;              // the staging folder, flock'ed while the run lives
   bool done_ = false;

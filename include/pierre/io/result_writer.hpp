@@ -40,6 +40,7 @@
 #include "pierre/io/document_control.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/io/input_files.hpp"
+#include "pierre/io/output_folder.hpp"
 #include "pierre/sim/runner.hpp"
 #include "pierre/sim/scenario.hpp"
 
@@ -49,6 +50,12 @@ inline constexpr const char* kTrajectoriesCsv = "trajectories.csv";
 inline constexpr const char* kCrossingsCsv = "crossings.csv";
 inline constexpr const char* kImpactsCsv = "impacts.csv";
 inline constexpr const char* kSummaryJson = "summary.json";
+
+// The first line of impacts.csv: plain, or led by the quarry section's column.
+std::string impacts_csv_header(bool sectioned);
+// impacts.csv as a result an earlier run may have left (OutputFolder::commit): pierre's when its
+// first line is the header of either form. A field record of the user's by that name stays.
+StaleResult stale_impacts_csv();
 
 class ResultFiles final : public sim::ResultSink {
  public:

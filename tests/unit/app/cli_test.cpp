@@ -194,6 +194,56 @@ TEST_F(Cli, BadInputExitsTwoAndCreatesNothing) {
   EXPECT_NE(v.err.find("simulation.throws"), std::string::npos);
 }
 
+// A run never replaces a file it read (new-user review: a profile CSV named crossings.csv, with
+// --out at the scenario's folder, was overwritten by the run that had just read it, exit 0),
+// and never removes a file by a result's name that pierre did not write (a user's impacts.csv
+// was deleted by a run without --impacts).
+TEST_F(Cli, AResultNeverReplacesAnInputOrRemovesAFileOfTheUsers) {
+  std::string text = slurp(kScenario);
+  text.replace(text.find("\"profile.csv\""), 13, "\"crossings.csv\"");
+  std::ofstream(dir_ / "scenario.toml") << text;
+  fs::copy_file(PIERRE_TEST_DATA "/small/profile.csv", dir_ / "crossings.csv");
+  const std::string profile = slurp(dir_ / "crossings.csv");
+  const Result r = pierre("run " + q(dir_ / "scenario.toml") + " --out " + q(dir_) + " --throws 1");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--out: found " + dir_.string() + ", where the result crossings.csv would "
+                       "replace " + (dir_ / "crossings.csv").string() + ", an input of this run"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(slurp(dir_ / "crossings.csv"), profile);
+  for (const auto& e : fs::directory_iterator(dir_)) {  // nothing written but the test's own
+    const std::string n = e.path().filename().string();
+    EXPECT_TRUE(n == "scenario.toml" || n == "crossings.csv" || n == "stdout.txt" ||
+                n == "stderr.txt")
+        << n;
+  }
+  // The same folder reached by another path, and `check`.
+  const fs::path other = dir_ / "sub" / "..";
+  fs::create_directories(dir_ / "sub");
+  EXPECT_EQ(pierre("check " + q(dir_ / "scenario.toml") + " --out " + q(other) + " --throws 1").code, 2);
+  EXPECT_EQ(slurp(dir_ / "crossings.csv"), profile);
+
+  // The profile by its own name: the run goes ahead; a field record called impacts.csv stays.
+  fs::rename(dir_ / "crossings.csv", dir_ / "profile.csv");
+  std::ofstream(dir_ / "scenario.toml") << slurp(kScenario);
+  const std::string mine = "my field survey of impacts\nx,z\n1,2\n";
+  std::ofstream(dir_ / "impacts.csv") << mine;
+  const Result ok = pierre("run " + q(dir_ / "scenario.toml") + " --out " + q(dir_) + " --throws 1 -q");
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  EXPECT_EQ(slurp(dir_ / "impacts.csv"), mine);
+  EXPECT_NE(ok.err.find("Note: " + (dir_ / "impacts.csv").string() + " is left as it is: pierre did "
+                        "not write it"),
+            std::string::npos)
+      << ok.err;
+  // pierre's own impacts.csv is still taken away by a later run without --impacts.
+  ASSERT_EQ(pierre("run " + q(dir_ / "scenario.toml") + " --out " + q(dir_ / "o") + " --throws 1 -q --impacts").code, 0);
+  ASSERT_TRUE(fs::exists(dir_ / "o" / "impacts.csv"));
+  const Result again = pierre("run " + q(dir_ / "scenario.toml") + " --out " + q(dir_ / "o") + " --throws 1 -q");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_FALSE(fs::exists(dir_ / "o" / "impacts.csv"));
+  EXPECT_EQ(again.err.find("Note:"), std::string::npos) << again.err;
+}
+
 // --throws is held to the reader's limit of 2^53 trajectories (simulation.throws is). It was
 // not: 4400 sources × 1e6 blocks × 4294967295 throws wrapped past 2^64 and the run ended in an
 // "internal error" (exit 3); a count between 2^53 and 2^64 started a run of that many.

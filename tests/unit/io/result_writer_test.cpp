@@ -272,15 +272,43 @@ TEST(OutputFolder, CommitMovesFilesAndRemovesStaging) {
     EXPECT_TRUE(std::filesystem::is_directory(f.staging()));
     EXPECT_EQ(f.staging().parent_path(), out);
     std::ofstream(f.staged("a.csv")) << "a\n";
-    std::ofstream(out / "impacts.csv") << "stale\n";
-    const auto written = f.commit({"impacts.csv"});
+    std::ofstream(out / "impacts.csv") << io::impacts_csv_header(true) << "\r\nsome,rows\n";
+    const auto written = f.commit({io::stale_impacts_csv()});
     ASSERT_EQ(written.size(), 1u);
     EXPECT_EQ(written[0], out / "a.csv");
     EXPECT_FALSE(std::filesystem::exists(f.staging()));
+    EXPECT_TRUE(f.kept().empty());
   }
   EXPECT_EQ(read_file(out / "a.csv"), "a\n");
   EXPECT_FALSE(std::filesystem::exists(out / "impacts.csv"));  // stale output of another run
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), {}), 1);
+}
+
+// Whether a stale result is pierre's goes by its first line, not its name: a field record of
+// the user's called impacts.csv (new-user review: it was deleted by a run without --impacts)
+// stays, and so does a folder by that name; both are reported as kept.
+TEST(OutputFolder, AStaleNameThatIsNotPierresIsLeftAlone) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  std::filesystem::create_directories(out / "sub");
+  const std::string mine = "my field survey of impacts\nx,z\n1,2\n";
+  std::ofstream(out / "impacts.csv") << mine;
+  // pierre's header with a column more: not the header pierre writes.
+  std::ofstream(out / "other.csv") << io::impacts_csv_header(false) << ",note\n";
+  {
+    io::OutputFolder f(out);
+    std::ofstream(f.staged("a.csv")) << "a\n";
+    f.commit({io::stale_impacts_csv(), {"other.csv", {io::impacts_csv_header(false)}},
+              {"sub", {"x"}}, {"absent.csv", {"x"}}});
+    ASSERT_EQ(f.kept().size(), 3u);
+    EXPECT_EQ(f.kept()[0], out / "impacts.csv");
+    EXPECT_EQ(f.kept()[1], out / "other.csv");
+    EXPECT_EQ(f.kept()[2], out / "sub");
+  }
+  EXPECT_EQ(read_file(out / "impacts.csv"), mine);
+  EXPECT_TRUE(std::filesystem::exists(out / "other.csv"));
+  EXPECT_TRUE(std::filesystem::is_directory(out / "sub"));
+  EXPECT_EQ(read_file(out / "a.csv"), "a\n");
 }
 
 TEST(OutputFolder, WithoutCommitNothingIsLeft) {
@@ -311,12 +339,12 @@ TEST(OutputFolder, CommitIsAllOrNothing) {
   std::filesystem::create_directories(out / "b.json");  // in the way of b.json
   std::ofstream(out / "a.csv") << "old a\n";
   std::ofstream(out / "c.csv") << "old c\n";
-  std::ofstream(out / "impacts.csv") << "old impacts\n";
+  std::ofstream(out / "impacts.csv") << io::impacts_csv_header(false) << "\nold impacts\n";
   {
     io::OutputFolder f(out);
     for (const char* n : {"a.csv", "b.json", "c.csv"}) std::ofstream(f.staged(n)) << "new\n";
     try {
-      f.commit({"impacts.csv"});
+      f.commit({io::stale_impacts_csv()});
       FAIL() << "no CommitError";
     } catch (const io::CommitError& e) {
       EXPECT_EQ(e.file(), out / "b.json");
@@ -326,7 +354,8 @@ TEST(OutputFolder, CommitIsAllOrNothing) {
   }
   EXPECT_EQ(read_file(out / "a.csv"), "old a\n");
   EXPECT_EQ(read_file(out / "c.csv"), "old c\n");
-  EXPECT_EQ(read_file(out / "impacts.csv"), "old impacts\n");  // stale, but not removed either
+  // pierre's stale impacts.csv, but not removed either
+  EXPECT_EQ(read_file(out / "impacts.csv"), io::impacts_csv_header(false) + "\nold impacts\n");
   EXPECT_TRUE(std::filesystem::is_directory(out / "b.json"));
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(out), {}), 4);  // no staging left
 }
