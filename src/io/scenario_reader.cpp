@@ -36,6 +36,7 @@ using detail::parse_toml;
 using detail::read_text;
 using detail::TomlTable;
 using model::ModelDefaults;
+using model::InputLimits;
 
 // ---- materials ----
 
@@ -306,7 +307,8 @@ sim::SimulationSettings read_simulation(const TomlTable& top) {
     out.max_impacts = static_cast<long>(*n);
   }
   out.gravity = s->number("gravity", ModelDefaults::gravity);
-  s->check("gravity", out.gravity > 0, "an acceleration > 0 (m/s²)");
+  s->check("gravity", out.gravity > 0 && out.gravity <= InputLimits::max_gravity,
+           fmt::format("an acceleration > 0 and <= {:g} m/s²", InputLimits::max_gravity));
   return out;
 }
 

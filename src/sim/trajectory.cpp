@@ -186,6 +186,10 @@ class Integrator {
       const Segment& s = profile_.segment(contact->segment);
       p_ = s.a + contact->s * s.d;  // snap onto the line the block hit
       impact(contact->segment, contact->s);
+    } else if (!all_finite(p_.x, p_.z, v_.x, v_.z)) {
+      // An arc beyond what a double holds (a gravity of 1e308): the contact search found no
+      // root in its overflowed numbers, and the block did not leave, it was lost.
+      stop(StopReason::numerical);
     } else if (tau == t_leave && t_leave <= t_left) {
       stop(StopReason::boundary);
     } else {

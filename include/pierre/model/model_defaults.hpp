@@ -35,6 +35,9 @@ struct InputLimits {
   static constexpr double max_block_mass = 1e8;    // kg
   static constexpr double max_source_speed = 1e3;  // m/s, each of vx and vz
   static constexpr double max_source_spin = 1e4;   // rad/s
+  // About 1000 g, beyond any geotechnical centrifuge: a gravity of 1e308 overflowed every
+  // flight (no landing found, the blocks lost through the ground).
+  static constexpr double max_gravity = 1e4;  // m/s²
 };
 
 }  // namespace pierre::model

@@ -258,6 +258,18 @@ TEST(ScenarioReader, AGravityOffTheEarthsIsNoted) {
     EXPECT_TRUE(load_scenario(dir.write("t.toml", base_with(6, std::string("throws = 2\ngravity = ") + g)), kRules)
                     .notes.empty())
         << g;
+  // A centrifuge's 1000 g is taken (noted); 1e308 overflowed every flight (no landing found, the
+  // blocks lost through the ground and reported as having left the profile): refused.
+  EXPECT_EQ(load_scenario(dir.write("c.toml", base_with(6, "throws = 2\ngravity = 1e4")), kRules).notes.size(), 1u);
+  try {
+    load_scenario(dir.write("u.toml", base_with(6, "throws = 2\ngravity = 1.7e308")), kRules);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 7);
+    EXPECT_EQ(e.field(), "simulation.gravity");
+    EXPECT_EQ(e.found(), "1.7e+308");
+    EXPECT_EQ(e.expected(), "an acceleration > 0 and <= 10000 m/s²");
+  }
 }
 
 // An endless stream named as an input (found by fuzzing: /dev/zero filled the memory without a

@@ -493,6 +493,26 @@ TEST(Trajectory, APathDrawsALongFlightWithABoundedNumberOfPoints) {
   }
 }
 
+// A flight whose numbers overflow (g = 1.7e308; the reader refuses more than 1e4 m/s², the core
+// takes any Scenario) finds no landing: the block did not leave the profile, it was lost, and
+// is said so (model-2d.md §4's `numerical`). It was `boundary`, with a stop z of -inf.
+TEST(Trajectory, AFlightThatOverflowsEndsNumericalNotAtTheBoundary) {
+  Scenario s = test::make_scenario(test::make_profile({{0, 0}, {100, 0}}),
+                                   test::make_material(5, 50, 0.3), {test::make_block(1000)},
+                                   {50, 5}, 1);
+  s.sources[0].velocity = {1, 0};
+  s.settings.gravity = 1.7e308;
+  std::vector<Vec2> path;
+  const auto t = simulate_with_path(s, path, 0.05);
+  EXPECT_EQ(t.stop_reason, StopReason::numerical);
+  // The same flight at a gravity a double holds lands on the floor below the source.
+  s.settings.gravity = 1e4;
+  const auto ok = simulate_with_path(s, path, 0.05);
+  ASSERT_TRUE(ok.has_first_impact);
+  EXPECT_NEAR(ok.first_impact.x, 50 + std::sqrt(2 * (5 - 0.5) / 1e4), 0.01);
+  EXPECT_NE(ok.stop_reason, StopReason::numerical);
+}
+
 TEST(Trajectory, FloorContactIsTheFirstImpactPastTheToeOrTheToeWhenSlidingOnto) {
   // A 2 m, 20° ramp onto a floor: a block placed on the ramp slides (φ = 10°) onto the floor
   // through the concave toe at x = 2/tan 20°; one dropped from high lands on the floor.
