@@ -351,9 +351,41 @@ void note_line_behind_sources(const TomlTable& t, const sim::Scenario& sc,
        {}});
 }
 
-void read_lines(const TomlTable& top, sim::Scenario& sc, std::vector<InputNote>& notes) {
+// The notes of lines behind every source: which note, on which line.
+struct LineBehindNote {
+  std::size_t note;
+  std::string line;
+  double x;
+};
+
+// A barrier on a line behind every source has nothing to be designed from: the line's note is
+// a likely slip for it (a chainage typed wrong, a profile listed from the toe end), so that
+// `--strict` refuses it and none of its lines passes unconfirmed (new-user review: a design
+// that got no crossing left `check --strict` at exit 0). A line no barrier stands on stays a
+// plain note. A second barrier on the line gets a copy of the note, doubting its own lines.
+void doubt_barriers_behind_sources(const std::vector<LineBehindNote>& behind,
+                                   const std::vector<design::BarrierSpec>& barriers,
+                                   std::vector<InputNote>& notes) {
+  for (const LineBehindNote& b : behind) {
+    bool first = true;
+    for (const design::BarrierSpec& spec : barriers) {
+      if (spec.line != b.line) continue;
+      InputNote n = notes[b.note];
+      n.doubt = design::DoubtedInput{n.field, spec.name, {}, b.x};
+      if (first)
+        notes[b.note] = std::move(n);
+      else
+        notes.push_back(std::move(n));
+      first = false;
+    }
+  }
+}
+
+std::vector<LineBehindNote> read_lines(const TomlTable& top, sim::Scenario& sc,
+                                       std::vector<InputNote>& notes) {
+  std::vector<LineBehindNote> behind;
   const toml::array* a = top.array_of_tables("observation_lines");
-  if (!a) return;
+  if (!a) return behind;
   for (std::size_t i = 0; i < a->size(); ++i) {
     const TomlTable t = top.element("observation_lines", *a, i, {"name", "x"});
     sim::ObservationLine l;
@@ -365,9 +397,12 @@ void read_lines(const TomlTable& top, sim::Scenario& sc, std::vector<InputNote>&
     t.check("x", l.x >= sc.profile.x_min() && l.x <= sc.profile.x_max(),
             "a chainage " + extent(sc.profile) +
                 " (the section's own horizontal x, not the road's or railway's station)");
+    const std::size_t before = notes.size();
     note_line_behind_sources(t, sc, l, notes);
+    if (notes.size() > before) behind.push_back({before, l.name, l.x});
     sc.lines.push_back(std::move(l));
   }
+  return behind;
 }
 
 
@@ -454,8 +489,9 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
     check_trajectory_count(out.scenario, scenario_file, line_of(throws), s->field("throws"),
                            describe(throws));
   }
-  read_lines(top, out.scenario, out.notes);
+  const std::vector<LineBehindNote> behind = read_lines(top, out.scenario, out.notes);
   detail::read_barriers(top, rules, out);
+  doubt_barriers_behind_sources(behind, out.barriers, out.notes);
   apply_confirmations(top, out.notes);
   return out;
 }

@@ -657,7 +657,9 @@ void read_sources(const TomlTable& top, sim::Scenario& sc, std::string_view tabl
                      table_path.empty() ? "observation lines count first crossings"
                                         : "the section's distances from the toe are measured",
                      sc.profile.x_min() + sc.profile.x_max()),
-         {}});
+         // A likely slip, and one that every result rests on (no crossing counted, distances
+         // from the wrong end): `--strict` refuses it, and no line passes unconfirmed.
+         doubts_every_line(source_at[i].second + ".x", s.position.x)});
   }
 }
 

@@ -377,7 +377,7 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
       "profile's first vertex, so its blocks travel against the vertex order, in which "
       "observation lines count first crossings. List the profile's vertices from the source end, "
       "with x mirrored to rise downhill (x' = 200 - x, for the sources and observation lines "
-      "too)\n";
+      "too). If it is meant, confirm it in the scenario: [confirmed] \"sources[0].x\" = 199\n";
   const Result v = pierre("validate " + q(dir_ / "s.toml"));
   EXPECT_EQ(v.code, 0) << v.err;
   EXPECT_NE(v.out.find(note), std::string::npos) << v.out;
@@ -392,6 +392,13 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   ASSERT_EQ(j["input_notes"].size(), 1u) << j["input_notes"].dump();
   EXPECT_EQ(j["input_notes"][0]["field"], "sources[0]");
   EXPECT_EQ(j["input_notes"][0]["line"], 13);
+  // A likely slip that every result rests on (no crossing counted, distances from the wrong
+  // end): --strict refuses it, unless confirmed (new-user review: it doubted nothing, and a
+  // barrier on such a profile got no design while `check --strict` exited 0).
+  EXPECT_EQ(j["input_notes"][0]["in_doubt"], true);
+  EXPECT_EQ(pierre("validate --strict " + q(dir_ / "s.toml")).code, 2);
+  std::ofstream(dir_ / "s.toml", std::ios::app) << "[confirmed]\n\"sources[0].x\" = 199.0\n";
+  EXPECT_EQ(pierre("validate --strict " + q(dir_ / "s.toml")).code, 0);
 }
 
 // The reader's notes (a profile x out of order read as an overhang, a source far above the

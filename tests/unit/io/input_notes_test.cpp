@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "pierre/io/scenario_reader.hpp"
 #include "test_files.hpp"
 
@@ -293,6 +295,36 @@ TEST(InputNotes, ALineBehindEverySourceIsNoted) {
   // Behind one source but ahead of another: that one's blocks reach it.
   EXPECT_TRUE(notes_of(dir, base_with({{23, "[[sources]]\nx = 0.2\nz = 11.0\n"}, {26, "x = 0.5"}}))
                   .empty());
+}
+
+// A barrier on such a line has nothing to be designed from: the note is a likely slip for it,
+// doubting that barrier's lines (each barrier on the line its own), so that --strict refuses it
+// (new-user review: a design that got no crossing passed `check --strict`). Without a barrier
+// on it, the note doubts nothing.
+TEST(InputNotes, ALineBehindEverySourceIsInDoubtForTheBarriersOnIt) {
+  TempDir dir;
+  const std::string behind = pierre::test::base_with(26, "x = 0.5") +
+                             "\n[[observation_lines]]\nname = \"M\"\nx = 15.0\n";
+  auto barrier = [](const char* name, const char* line) {
+    return fmt::format("\n[[barriers]]\nname = \"{}\"\nline = \"{}\"\nrules = \"thesis-2015\"\n",
+                       name, line);
+  };
+  const auto plain = notes_of(dir, behind + barrier("C", "M"));
+  ASSERT_EQ(plain.size(), 1u);
+  EXPECT_FALSE(plain[0].doubt);
+  const auto notes = notes_of(dir, behind + barrier("A", "L") + barrier("C", "M") + barrier("B", "L"));
+  ASSERT_EQ(notes.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(notes[i].message(), notes[0].message());  // the line's note, once per barrier
+    ASSERT_TRUE(notes[i].doubt);
+    EXPECT_EQ(notes[i].doubt->field, "observation_lines[0].x");
+    EXPECT_EQ(notes[i].doubt->subject, i == 0 ? "A" : "B");
+    EXPECT_TRUE(notes[i].doubt->ids.empty());  // every line of the barrier
+    EXPECT_EQ(notes[i].doubt->value, 0.5);
+  }
+  EXPECT_TRUE(notes[0].message().ends_with("If it is meant, confirm it in the scenario: "
+                                           "[confirmed] \"observation_lines[0].x\" = 0.5"))
+      << notes[0].message();
 }
 
 // A quarry section's profile and sources are read by the same readers: its notes are the
