@@ -51,6 +51,15 @@ double positive(const TomlTable& t, std::string_view key, std::string_view expec
   return v;
 }
 
+// A partial factor and each part of one: at least 1. Below 1 it designs for less than the
+// characteristic value (new-user review: γF = 0.5 gave v_d half of v_k without a word); 1 is a
+// factor left out, as a comparison with a plain percentile may want.
+double partial_factor(const TomlTable& t, std::string_view key, std::string_view expected) {
+  const double v = t.required_number(key, expected);
+  t.check(key, v >= 1, expected);
+  return v;
+}
+
 std::string join_names(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
@@ -74,7 +83,7 @@ design::FactorPart read_part(const TomlTable& parts, const std::string& name) {
                      "value = factor");
   if (has_value) {
     if (t.has("options")) t.fail("options", "no options beside value (a fixed part)");
-    p.value = positive(t, "value", "a factor > 0");
+    p.value = partial_factor(t, "value", "a factor >= 1");
     return p;
   }
   p.choice = t.required_string("choice", "the data-quality question, e.g. \"trajectory\"");
@@ -83,7 +92,7 @@ design::FactorPart read_part(const TomlTable& parts, const std::string& name) {
   if (!opts) t.missing("options", "options = { answer = factor, ... }");
   for (auto&& [k, v] : opts->table()) {
     const std::string answer(k.str());
-    const double f = positive(*opts, answer, "a factor > 0");
+    const double f = partial_factor(*opts, answer, "a factor >= 1");
     p.options.emplace(answer, f);
   }
   if (p.options.empty())
@@ -98,7 +107,7 @@ design::FactorDefinition read_factor(const TomlTable& factors, std::string_view 
   design::FactorDefinition f;
   f.symbol = std::move(symbol);
   const std::string expected =
-      "a factor > 0, or an array of part names (tables of [parts]) whose product it is";
+      "a factor >= 1, or an array of part names (tables of [parts]) whose product it is";
   const toml::node* n = factors.find(key);
   if (!n) factors.missing(key, expected);
   if (const auto* a = n->as_array()) {
@@ -116,7 +125,7 @@ design::FactorDefinition read_factor(const TomlTable& factors, std::string_view 
       f.parts.push_back(read_part(*parts, s->get()));
     }
   } else {
-    f.value = positive(factors, key, expected);
+    f.value = partial_factor(factors, key, expected);
   }
   const auto it = sources.find(std::string(key));
   if (it != sources.end()) f.source = it->second;
@@ -198,10 +207,10 @@ design::BarrierRuleSet load_rule_set_file(const fs::path& file) {
   r.gamma_F = read_factor(*f, "gamma_F", "γF", pp, sources);
   r.gamma_M = read_factor(*f, "gamma_M", "γM", pp, sources);
   r.gamma_h = read_factor(*f, "gamma_h", "γh", pp, sources);
-  r.gamma_E_MEL = positive(*f, "gamma_E_MEL", "a factor > 0 (MEL_req = γE,MEL · E_d)");
-  r.gamma_E_SEL = positive(*f, "gamma_E_SEL", "a factor > 0 (SEL_req = γE,SEL · E_d)");
-  if (f->has("gamma_d_MEL")) r.gamma_d_MEL = positive(*f, "gamma_d_MEL", "a factor > 0");
-  if (f->has("gamma_d_SEL")) r.gamma_d_SEL = positive(*f, "gamma_d_SEL", "a factor > 0");
+  r.gamma_E_MEL = partial_factor(*f, "gamma_E_MEL", "a factor >= 1 (MEL_req = γE,MEL · E_d)");
+  r.gamma_E_SEL = partial_factor(*f, "gamma_E_SEL", "a factor >= 1 (SEL_req = γE,SEL · E_d)");
+  if (f->has("gamma_d_MEL")) r.gamma_d_MEL = partial_factor(*f, "gamma_d_MEL", "a factor >= 1");
+  if (f->has("gamma_d_SEL")) r.gamma_d_SEL = partial_factor(*f, "gamma_d_SEL", "a factor >= 1");
   // One set of answers per data-quality question, whichever parts ask it.
   std::map<std::string, std::vector<std::string>> answers;
   for (const design::FactorDefinition* fd : {&r.gamma_F, &r.gamma_M, &r.gamma_h})

@@ -368,6 +368,9 @@ INSTANTIATE_TEST_SUITE_P(
         RuleCase{"unknown_part", "gamma_F = [\"gamma_cc\"]", "gamma_F = [\"gamma_xx\"]", 10, "factors.gamma_F", "\"gamma_xx\""},
         RuleCase{"factor_type", "gamma_h = 1.25", "gamma_h = \"1.25\"", 12, "factors.gamma_h", "\"1.25\""},
         RuleCase{"factor_zero", "gamma_E_SEL = 2.0", "gamma_E_SEL = 0.0", 14, "factors.gamma_E_SEL", "0.0"},
+        // Below 1 a partial factor designs for less than the characteristic value.
+        RuleCase{"factor_below_one", "gamma_h = 1.25", "gamma_h = 0.5", 12, "factors.gamma_h", "0.5"},
+        RuleCase{"part_below_one", "CC2 = 1.1", "CC2 = 0.9", 19, "parts.gamma_cc.options.CC2", "0.9"},
         RuleCase{"part_both", "choice = \"consequence\"", "choice = \"consequence\"\nvalue = 1.0", 16, "parts.gamma_cc.value", "both"},
         RuleCase{"option_value", "CC2 = 1.1", "CC2 = -1.1", 19, "parts.gamma_cc.options.CC2", "-1.1"},
         RuleCase{"no_free_board", "[free_board]\nabsolute = 1.0\nrelative = 0.0\n", "", 0, "free_board", "nothing"},
