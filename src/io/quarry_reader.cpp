@@ -134,9 +134,12 @@ design::QuarryRuleSet read_rules(const fs::path& file, const std::string& stem) 
 // A toe or height given is taken as it is (design-checks.md §2), but one typed onto the face
 // changes every distance and every /H: the floor past a given toe should be what the finder
 // would call floor (flatter than the floor angle), and a given H near crest z − toe z.
-void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
-                         const design::QuarryGeometryInput& in, const design::QuarryGeometry& g,
-                         std::vector<InputNote>& notes) {
+// Both are likely slips that every line of the section rests on (its distances, its /H, the
+// groups it is pooled in): none passes unconfirmed, and --strict refuses them (new-user review:
+// a toe typed onto the face left the zone lines at PASS).
+void note_given_geometry(const TomlTable& q, const std::string& section,
+                         const geometry::Profile& profile, const design::QuarryGeometryInput& in,
+                         const design::QuarryGeometry& g, std::vector<InputNote>& notes) {
   auto at = [&](const char* key) { return line_of(*q.find(key)); };
   if (in.toe_x) {
     std::string steep;
@@ -163,7 +166,7 @@ void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
                        f ? fmt::format("the toe found from the section is at x = {:.2f} m",
                                        f->toe.x)
                          : "check the toe's x"),
-           {}});
+           design::DoubtedInput{q.field("toe"), section, {}, *in.toe_x}});
     }
   }
   if (in.height && g.height_derived > 0 &&
@@ -174,7 +177,7 @@ void note_given_geometry(const TomlTable& q, const geometry::Profile& profile,
                      "{:.0f} %: every distance divided by H uses the given one",
                      *in.height, g.height_derived,
                      100 * std::abs(*in.height - g.height_derived) / g.height_derived),
-         {}});
+         design::DoubtedInput{q.field("height"), section, {}, *in.height}});
 }
 
 // A catch bench or a work area past the end of the section's floor: a length typed in cm (300
@@ -401,7 +404,7 @@ void read_section_geometry(const TomlTable& q, QuarrySection& s, const fs::path&
   }
   s.geometry = *g;
   sc.settings.floor_segment = s.geometry.floor_segment;
-  note_given_geometry(q, sc.profile, spec.geometry, s.geometry, s.notes);
+  note_given_geometry(q, spec.name, sc.profile, spec.geometry, s.geometry, s.notes);
   note_beyond_floor(q, spec, s.geometry, s.notes);
 }
 

@@ -353,7 +353,13 @@ TEST(InputNotes, AToeGivenOnTheFaceAndAFarHeightAreNoted) {
   EXPECT_EQ(on_face.notes[0].text,
             "the floor past the given toe (x = 15 m) has 1 segment steeper than the rule set's "
             "floor angle of 15°: segment 2 (x 15 → 20 m, 63°). Every distance from the toe, and H, "
-            "are measured from it; the toe found from the section is at x = 20.00 m");
+            "are measured from it; the toe found from the section is at x = 20.00 m. If it is "
+            "meant, confirm it in the scenario: [confirmed] \"quarries[0].toe\" = 15");
+  // A likely slip every line of the section rests on (new-user review: the zone lines still
+  // passed, and --strict took it).
+  ASSERT_TRUE(on_face.notes[0].doubt);
+  EXPECT_EQ(on_face.notes[0].doubt->subject, "East");
+  EXPECT_TRUE(on_face.notes[0].doubt->ids.empty());
   EXPECT_TRUE(load_scenario(dir.write("s.toml", pit("toe = 20.0", 20.0)), kRules).notes.empty());
   EXPECT_TRUE(load_scenario(dir.write("s.toml", pit("toe = 40.0\nheight = 21.9", 20.0)), kRules)
                   .notes.empty());  // 9.5 % above the 20 m the section gives
@@ -362,7 +368,10 @@ TEST(InputNotes, AToeGivenOnTheFaceAndAFarHeightAreNoted) {
   EXPECT_EQ(high.notes[0].field, "quarries[0].height");
   EXPECT_EQ(high.notes[0].text,
             "the height given (H = 25 m) differs from crest z − toe z (20.00 m) by 25 %: every "
-            "distance divided by H uses the given one");
+            "distance divided by H uses the given one. If it is meant, confirm it in the "
+            "scenario: [confirmed] \"quarries[0].height\" = 25");
+  ASSERT_TRUE(high.notes[0].doubt);
+  EXPECT_EQ(high.notes[0].doubt->subject, "East");
 }
 
 // A catch bench or a work area past the end of the floor (70 m from the pit's toe): a length in
