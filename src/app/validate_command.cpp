@@ -44,7 +44,8 @@ class ValidateCommand final : public Command {
         ->type_name("DIR");
     c->add_flag("--strict", strict_,
                 "An input noted as a likely slip that [confirmed] does not confirm is an error "
-                "(exit 2), as `run --strict` and `check --strict` make it");
+                "(exit 2), as `run --strict` and `check --strict` make it; so is a run too large "
+                "for this machine's memory, which `run` refuses");
     c->footer(
         "Example:\n"
         "  pierre validate examples/vaujany-2d/scenario.toml\n"
@@ -59,6 +60,9 @@ class ValidateCommand final : public Command {
       print_input_notes(stderr, l.notes);  // each said, then the refusal
       refuse_doubted_inputs(l);
     }
+    // --strict says what `run` would refuse here, this machine's memory included: a pipeline's
+    // pre-check must not pass a scenario the run then refuses (new-user review).
+    if (strict_) (void)check_run_memory(l, std::nullopt);
     load_report_layout(stdout);  // `run` needs it too: a missing or broken one is said now
     (void)report_date();   // and the date SOURCE_DATE_EPOCH gives it
     if (!l.quarries.empty()) {
@@ -116,7 +120,7 @@ class ValidateCommand final : public Command {
 
  private:
   // A count this machine cannot run is no fault of the file (another machine may run it): said
-  // as a note, where `run` refuses it.
+  // as a note, where `run` refuses it (and `validate --strict`, above).
   static void print_memory_note(const io::LoadedScenario& l) {
     std::string note;
     try {

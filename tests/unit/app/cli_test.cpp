@@ -295,6 +295,14 @@ TEST_F(Cli, AThrowsThisMachineCannotHoldIsRefusedBeforeTheRun) {
                        std::to_string(throws) + ", " + expected + " (pierre run refuses it on this machine)\n"),
             std::string::npos)
       << v.out;
+  // validate --strict refuses what run would (new-user review: a CI pre-check passed it).
+  const Result vs = pierre("validate --strict " + q(dir_ / "many.toml"));
+  EXPECT_EQ(vs.code, 2);
+  EXPECT_NE(vs.err.find((dir_ / "many.toml").string() + ":5: simulation.throws: found " +
+                        std::to_string(throws) + ", " + expected),
+            std::string::npos)
+      << vs.err;
+  EXPECT_EQ(pierre("validate --strict " + q(dir_ / "few.toml")).code, 0);
   expect_refused_before_writing(dir_ / "many.toml", "",
                                 (dir_ / "many.toml").string() + ":5: simulation.throws: found " +
                                     std::to_string(throws) + ", " + expected);
