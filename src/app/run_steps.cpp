@@ -139,6 +139,26 @@ std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded
   return out;
 }
 
+void note_shared_section_seeds(io::LoadedScenario& loaded) {
+  const auto& q = loaded.quarries;
+  for (std::size_t j = 1; j < q.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      if (q[i].scenario.settings.seed != q[j].scenario.settings.seed) continue;
+      auto how = [](const io::QuarrySection& s) {
+        return s.seed_given ? "its own" : "[simulation] seed + its index";
+      };
+      loaded.notes.push_back(
+          {loaded.file, 0, fmt::format("quarries[{}].seed", j),
+           fmt::format("sections \"{}\" ({}) and \"{}\" ({}) both run with seed {}: their blocks "
+                       "draw the same random numbers, so the two are not independent samples "
+                       "(pooled, they count twice what one shows). Give one a seed of its own",
+                       q[i].spec.name, how(q[i]), q[j].spec.name, how(q[j]),
+                       q[j].scenario.settings.seed),
+           {}});
+      break;  // one note per section
+    }
+}
+
 void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
                                   std::optional<std::uint32_t> throws) {
   sim::SimulationSettings& top = loaded.scenario.settings;
@@ -160,6 +180,7 @@ void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std:
                                  io::section_label(i, loaded.quarries[i].spec.name));
     }
   }
+  note_shared_section_seeds(loaded);
 }
 
 std::uint64_t total_trajectories(const io::LoadedScenario& loaded) {

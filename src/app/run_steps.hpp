@@ -44,6 +44,12 @@ std::vector<std::string> command_line_overrides(const io::LoadedScenario& loaded
 // every section's throws, and the seed of each section that gives none (seed + its index, as
 // the reader sets it; a section's own `seed` is kept). Throws io::InputError (at --throws)
 // when the throws give the scenario, or a section, more trajectories than the reader allows.
+// A note (LoadedScenario::notes) for each quarry section that runs with the seed of an
+// earlier one (a section's own seed meeting another's [simulation] seed + index): the same
+// random numbers, so not independent samples (new-user review). Called by
+// apply_command_line_overrides; by `validate` for the file's seeds.
+void note_shared_section_seeds(io::LoadedScenario& loaded);
+
 void apply_command_line_overrides(io::LoadedScenario& loaded, std::optional<std::uint64_t> seed,
                                   std::optional<std::uint32_t> throws);
 

@@ -55,7 +55,8 @@ class ValidateCommand final : public Command {
   }
 
   int run() override {
-    const io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
+    io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
+    note_shared_section_seeds(l);
     if (strict_ && any_in_doubt(l)) {
       print_input_notes(stderr, l.notes);  // each said, then the refusal
       refuse_doubted_inputs(l);
