@@ -267,10 +267,15 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
       header = true;
       fmt::print(out, "{} {} {}: {}\n", design::to_string(c.status), c.subject, c.id, c.reason);
     }
-  const std::size_t fails = static_cast<std::size_t>(std::count_if(
-      r.checks.begin(), r.checks.end(), [](const auto& c) { return c.status == design::CheckStatus::fail; }));
+  // Every status counted, as the report's verdict counts them (a WARN is read, not only a FAIL).
+  auto count = [&](design::CheckStatus st) {
+    return std::count_if(r.checks.begin(), r.checks.end(), [&](const auto& c) { return c.status == st; });
+  };
   blank();
-  fmt::print(out, "{} check line{}, {} FAIL\n", r.checks.size(), r.checks.size() == 1 ? "" : "s", fails);
+  fmt::print(out, "{} check line{}: {} FAIL, {} WARN, {} PASS, {} N/A\n", r.checks.size(),
+             r.checks.size() == 1 ? "" : "s", count(design::CheckStatus::fail),
+             count(design::CheckStatus::warn), count(design::CheckStatus::pass),
+             count(design::CheckStatus::not_applicable));
 }
 
 }  // namespace pierre::app

@@ -218,6 +218,14 @@ void name_columns(std::vector<std::string>& cells, const std::filesystem::path& 
                   std::string_view line, const std::vector<std::string>& allowed,
                   std::string_view expected_header, const ColumnAliases& aliases,
                   bool commas_below) {
+  // A file that starts with its data: the first row is taken for the header. Looked for in
+  // every cell first, so that a row led by an id ("V001,1500") is said as such too, not as an
+  // unknown column "V001" (new-user review).
+  for (const std::string& h : cells)
+    if (is_number(h) && std::find(allowed.begin(), allowed.end(), h) == allowed.end())
+      throw InputError(file, line_no, "header",
+                       fmt::format("a row of values (\"{}\") where the header belongs", line),
+                       fmt::format("a header line {} above the data rows", expected_header));
   for (std::string& h : cells) {
     if (auto bad = unwritable_text(h))
       throw InputError(file, line_no, "header", *bad, std::string(kWritableText));
@@ -226,11 +234,6 @@ void name_columns(std::vector<std::string>& cells, const std::filesystem::path& 
       if (same_name(h, alias)) h = name;
     for (const std::string& name : allowed)
       if (same_name(h, name)) h = name;
-    // A file that starts with its data: the first row is taken for the header.
-    if (is_number(h) && std::find(allowed.begin(), allowed.end(), h) == allowed.end())
-      throw InputError(file, line_no, "header",
-                       fmt::format("a row of values (\"{}\") where the header belongs", line),
-                       fmt::format("a header line {} above the data rows", expected_header));
     if (std::find(allowed.begin(), allowed.end(), h) == allowed.end()) {
       const auto sep = other_separator(line);
       if (sep && h.find_first_of(";\t") != std::string::npos)

@@ -78,6 +78,17 @@ TEST_F(Check, PassingCandidateExitsZero) {
   EXPECT_EQ(check(j, "energy.mel")["status"], "PASS");
   EXPECT_EQ(check(j, "height.interception")["status"], "PASS");
   EXPECT_EQ(check(j, "energy.mel")["subject"], "Generous");
+  // The console's last line counts every status, as the lines in summary.json have them (it
+  // said only the FAILs: a WARN went unread, new-user review).
+  auto lines_at = [&](const char* status) {
+    return std::count_if(j["checks"].begin(), j["checks"].end(),
+                         [&](const auto& c) { return c["status"] == status; });
+  };
+  EXPECT_NE(r.out.find(fmt::format("\n11 check lines: 0 FAIL, {} WARN, {} PASS, {} N/A\n",
+                                   lines_at("WARN"), lines_at("PASS"), lines_at("N/A"))),
+            std::string::npos)
+      << r.out;
+  EXPECT_GT(lines_at("WARN") + lines_at("N/A"), 0);  // the counts are not all in PASS
   EXPECT_EQ(j["checks_failed"], false);
   ASSERT_EQ(j["barriers"].size(), 1u);
   const auto& b = j["barriers"][0];

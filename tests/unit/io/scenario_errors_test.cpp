@@ -108,6 +108,10 @@ TEST(ScenarioCsv, AMissingHeaderIsSaidAndCaseIsIgnored) {
   EXPECT_EQ(csv_error(dir, "0,10,rock\n10,0,rock\n20,0,\n"),
             p + ":1: header: found a row of values (\"0,10,rock\") where the header belongs, "
                 "expected a header line x,z,material above the data rows");
+  // Led by a text cell (a material, an id): the numbers after it still say it is a row.
+  EXPECT_EQ(csv_error(dir, "rock,0,10\nrock,10,0\n,20,0\n"),
+            p + ":1: header: found a row of values (\"rock,0,10\") where the header belongs, "
+                "expected a header line x,z,material above the data rows");
   EXPECT_EQ(csv_error(dir, "X,Z_M,Material\n0,10,rock\n10,0,rock\n20,1,\n"), "no InputError");
   const auto l = load_scenario(dir.path() / "s.toml", kRules);  // the scenario csv_error wrote
   EXPECT_DOUBLE_EQ(l.scenario.profile.vertices()[2].z, 1.0);
