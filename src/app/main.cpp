@@ -102,6 +102,8 @@ int main(int argc, char** argv) {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version
       app.exit(e);
+      // Lost on its way (a full disk): a script reading the version must not take exit 0.
+      if (std::fflush(stdout) != 0 || std::ferror(stdout)) return lost_stdout();
       return kExitOk;
     } catch (const CLI::ExtrasError& e) {
       // CLI11 lists the extra arguments back to front ("foo --out" for --out foo): name them in

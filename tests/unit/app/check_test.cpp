@@ -310,6 +310,20 @@ TEST_F(Check, AFailStaysOneWhenStdoutCannotBeWritten) {
   EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.json"));
 }
 
+// --help and --version that cannot be written exit 3, as any other lost output does (they
+// exited 0: a script reading the version took nothing for it, new-user review).
+TEST_F(Check, HelpAndVersionLostOnTheirWayExitThree) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  for (const char* args : {"--version", "--help", "check --help"}) {
+    const fs::path e = dir_ / "stderr.txt";
+    const int st = std::system((std::string("'") + PIERRE_BINARY + "' " + args + " >/dev/full 2>" + q(e)).c_str());
+    ASSERT_TRUE(WIFEXITED(st));
+    EXPECT_EQ(WEXITSTATUS(st), 3) << args;
+    EXPECT_NE(slurp(e).find("error: cannot write to standard output"), std::string::npos) << slurp(e);
+    EXPECT_EQ(std::system((std::string("'") + PIERRE_BINARY + "' " + args + " >/dev/null").c_str()), 0) << args;
+  }
+}
+
 TEST_F(Check, RunExitsZeroWhateverTheChecksSay) {
   const fs::path out = dir_ / "out";
   const Result r = pierre("run " + kData + "fail.toml --out '" + out.string() + "'");
