@@ -127,6 +127,28 @@ int main(int argc, char** argv) {
         }
       app.exit(e);
       return kExitInput;
+    } catch (const CLI::RequiredError& e) {
+      // Said as every other error is (found, expected), with the command's help to read; CLI11
+      // says "--out is required" (new-user review).
+      const auto parsed = std::find_if(subs.begin(), subs.end(), [](CLI::App* c) { return c->parsed(); });
+      if (parsed == subs.end()) {
+        if (argc > 1 && argv[1][0] != '-')  // a misspelt command
+          std::fprintf(stderr, "%s: not a command; expected run, check or validate (pierre --help)\n",
+                       argv[1]);
+        else
+          std::fprintf(stderr, "pierre: found no command, expected run, check or validate (pierre --help)\n");
+        return kExitInput;
+      }
+      std::string what = e.what();
+      if (const auto at = what.find(" is required"); at != std::string::npos) what.resize(at);
+      const char* name = (*parsed)->get_name().c_str();
+      std::fprintf(stderr, "pierre %s: found no %s, expected %s (pierre %s --help)\n", name,
+                   what.c_str(),
+                   what == "--out" ? "--out DIR, the folder the results go to"
+                   : what == "scenario" ? "the scenario file (TOML) to read"
+                                        : ("a " + what).c_str(),
+                   name);
+      return kExitInput;
     } catch (const CLI::ParseError& e) {
       // A misspelt command: CLI11 says only that one is required. Name it and the commands.
       if (argc > 1 && argv[1][0] != '-' &&

@@ -641,6 +641,16 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   // A misspelt command is named, with the commands there are.
   EXPECT_NE(pierre("chek " + kScenario).err.find("chek: not a command; expected run, check or validate"),
             std::string::npos);
+  // What is missing is said as every other error (CLI11 said "--out is required"), exit 2.
+  const std::pair<std::string, std::string> missing[] = {
+      {"run " + kScenario, "pierre run: found no --out, expected --out DIR, the folder the results go to (pierre run --help)\n"},
+      {"validate", "pierre validate: found no scenario, expected the scenario file (TOML) to read (pierre validate --help)\n"},
+      {"", "pierre: found no command, expected run, check or validate (pierre --help)\n"}};
+  for (const auto& [args, said] : missing) {
+    const Result r = pierre(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(r.err, said) << args;
+  }
   // A seed is a whole number from 0 to 2^63 - 1, said in whole numbers (not as 1.8e308 written
   // out in full); a larger one is refused, not clamped to the largest (two seeds, one run).
   for (const char* seed : {"-1", "9223372036854775808", "18446744073709551615", "1e3", "12x"}) {
