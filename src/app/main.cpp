@@ -28,10 +28,10 @@ namespace {
 // A failed write to stdout (a full disk, a reader that closed the pipe): what the command
 // printed is lost, so a script reading it must not take exit 0, nor an "internal error" for a
 // fault of where the output went.
-int lost_stdout() {
+int lost_stdout(bool writes_results = false) {
   const int err = errno;
   std::fputs(("error: cannot write to standard output: " + std::string(std::strerror(err)) +
-              " (the result files, if any, were written)\n")
+              (writes_results ? " (the result files, if any, were written)" : "") + "\n")
                  .c_str(),
              stderr);
   return pierre::app::kExitInternal;
@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
       // script reading it would take a lost verdict for a given one.
       // A FAIL stays 1 even then: the results are written, and a pipeline must see the verdict.
       if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        const int lost = lost_stdout();
+        const int lost = lost_stdout(subs[i]->get_name() != "validate");
         return code == kExitCheckFailed ? code : lost;
       }
       return code;

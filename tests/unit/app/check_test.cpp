@@ -321,7 +321,15 @@ TEST_F(Check, HelpAndVersionLostOnTheirWayExitThree) {
     EXPECT_EQ(WEXITSTATUS(st), 3) << args;
     EXPECT_NE(slurp(e).find("error: cannot write to standard output"), std::string::npos) << slurp(e);
     EXPECT_EQ(std::system((std::string("'") + PIERRE_BINARY + "' " + args + " >/dev/null").c_str()), 0) << args;
+    // They write no result files, and do not say they did.
+    EXPECT_EQ(slurp(e).find("result files"), std::string::npos) << slurp(e);
   }
+  const fs::path e = dir_ / "stderr.txt";
+  const int st = std::system((std::string("'") + PIERRE_BINARY + "' validate " + kData +
+                              "pass.toml >/dev/full 2>" + q(e)).c_str());
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), 3);
+  EXPECT_EQ(slurp(e), "error: cannot write to standard output: No space left on device\n");
 }
 
 TEST_F(Check, RunExitsZeroWhateverTheChecksSay) {
