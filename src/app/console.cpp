@@ -268,9 +268,7 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
       fmt::print(out, "{} {} {}: {}\n", design::to_string(c.status), c.subject, c.id, c.reason);
     }
   // Every status counted, as the report's verdict counts them (a WARN is read, not only a FAIL).
-  auto count = [&](design::CheckStatus st) {
-    return std::count_if(r.checks.begin(), r.checks.end(), [&](const auto& c) { return c.status == st; });
-  };
+  auto count = [&](design::CheckStatus st) { return design::count_status(r.checks, st); };
   blank();
   fmt::print(out, "{} check line{}: {} FAIL, {} WARN, {} PASS, {} N/A\n", r.checks.size(),
              r.checks.size() == 1 ? "" : "s", count(design::CheckStatus::fail),

@@ -37,6 +37,16 @@ int lost_stdout(bool writes_results = false) {
   return pierre::app::kExitInternal;
 }
 
+// A misspelt command (CLI11 says only that one is required): named, with the commands there
+// are. False when the first argument is an option or a command.
+bool said_misspelt_command(int argc, char** argv, const std::vector<CLI::App*>& subs) {
+  if (argc < 2 || argv[1][0] == '-' ||
+      std::any_of(subs.begin(), subs.end(), [&](CLI::App* c) { return c->check_name(argv[1]); }))
+    return false;
+  std::fprintf(stderr, "%s: not a command; expected run, check or validate (pierre --help)\n", argv[1]);
+  return true;
+}
+
 // A failure the user can mend (where the results go, how many to run): "error: ..." on stderr,
 // after what stdout holds, and exit 2 as for bad input.
 int said_as_input(const char* what, const std::exception& e) {
@@ -132,31 +142,21 @@ int main(int argc, char** argv) {
       // says "--out is required" (new-user review).
       const auto parsed = std::find_if(subs.begin(), subs.end(), [](CLI::App* c) { return c->parsed(); });
       if (parsed == subs.end()) {
-        if (argc > 1 && argv[1][0] != '-')  // a misspelt command
-          std::fprintf(stderr, "%s: not a command; expected run, check or validate (pierre --help)\n",
-                       argv[1]);
-        else
+        if (!said_misspelt_command(argc, argv, subs))
           std::fprintf(stderr, "pierre: found no command, expected run, check or validate (pierre --help)\n");
         return kExitInput;
       }
       std::string what = e.what();
       if (const auto at = what.find(" is required"); at != std::string::npos) what.resize(at);
+      const std::string expected = what == "--out"      ? "--out DIR, the folder the results go to"
+                                   : what == "scenario" ? "the scenario file (TOML) to read"
+                                                        : "a " + what;
       const char* name = (*parsed)->get_name().c_str();
       std::fprintf(stderr, "pierre %s: found no %s, expected %s (pierre %s --help)\n", name,
-                   what.c_str(),
-                   what == "--out" ? "--out DIR, the folder the results go to"
-                   : what == "scenario" ? "the scenario file (TOML) to read"
-                                        : ("a " + what).c_str(),
-                   name);
+                   what.c_str(), expected.c_str(), name);
       return kExitInput;
     } catch (const CLI::ParseError& e) {
-      // A misspelt command: CLI11 says only that one is required. Name it and the commands.
-      if (argc > 1 && argv[1][0] != '-' &&
-          std::none_of(subs.begin(), subs.end(), [&](CLI::App* c) { return c->check_name(argv[1]); })) {
-        std::fprintf(stderr, "%s: not a command; expected run, check or validate (pierre --help)\n",
-                     argv[1]);
-        return kExitInput;
-      }
+      if (said_misspelt_command(argc, argv, subs)) return kExitInput;
       app.exit(e);
       return kExitInput;
     }

@@ -21,6 +21,11 @@ bool any_failure(const std::vector<CheckLine>& lines) {
                      [](const CheckLine& l) { return l.status == CheckStatus::fail; });
 }
 
+std::size_t count_status(const std::vector<CheckLine>& lines, CheckStatus status) {
+  return static_cast<std::size_t>(std::count_if(
+      lines.begin(), lines.end(), [&](const CheckLine& l) { return l.status == status; }));
+}
+
 void doubt_passes(std::vector<CheckLine>& lines, const std::vector<DoubtedInput>& doubts) {
   auto bears_on = [](const DoubtedInput& d, const CheckLine& l) {
     if (!d.subject.empty() && d.subject != l.subject) return false;

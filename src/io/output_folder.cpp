@@ -150,11 +150,9 @@ std::vector<fs::path> OutputFolder::commit(const std::vector<StaleResult>& stale
   for (const auto& s : stale) {
     if (std::find(names.begin(), names.end(), fs::path(s.name)) != names.end()) continue;
     std::error_code ec;
-    if (!fs::is_regular_file(fs::symlink_status(dir_ / s.name, ec))) {
-      if (fs::exists(fs::symlink_status(dir_ / s.name, ec))) kept_.push_back(dir_ / s.name);
-      continue;
-    }
-    if (starts_with_header(dir_ / s.name, s.headers))
+    const auto st = fs::symlink_status(dir_ / s.name, ec);
+    if (ec || !fs::exists(st)) continue;
+    if (fs::is_regular_file(st) && starts_with_header(dir_ / s.name, s.headers))
       old.push_back(s.name);
     else
       kept_.push_back(dir_ / s.name);

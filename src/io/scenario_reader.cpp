@@ -351,11 +351,9 @@ void note_line_behind_sources(const TomlTable& t, const sim::Scenario& sc,
        {}});
 }
 
-// The notes of lines behind every source: which note, on which line.
+// The note of a line behind every source: which note, on which of the scenario's lines.
 struct LineBehindNote {
-  std::size_t note;
-  std::string line;
-  double x;
+  std::size_t note, line;
 };
 
 // A barrier on a line behind every source has nothing to be designed from: the line's note is
@@ -363,15 +361,15 @@ struct LineBehindNote {
 // `--strict` refuses it and none of its lines passes unconfirmed (new-user review: a design
 // that got no crossing left `check --strict` at exit 0). A line no barrier stands on stays a
 // plain note. A second barrier on the line gets a copy of the note, doubting its own lines.
-void doubt_barriers_behind_sources(const std::vector<LineBehindNote>& behind,
-                                   const std::vector<design::BarrierSpec>& barriers,
-                                   std::vector<InputNote>& notes) {
+void doubt_barriers_behind_sources(const std::vector<LineBehindNote>& behind, LoadedScenario& loaded) {
+  std::vector<InputNote>& notes = loaded.notes;
   for (const LineBehindNote& b : behind) {
+    const sim::ObservationLine& line = loaded.scenario.lines[b.line];
     bool first = true;
-    for (const design::BarrierSpec& spec : barriers) {
-      if (spec.line != b.line) continue;
+    for (const design::BarrierSpec& spec : loaded.barriers) {
+      if (spec.line != line.name) continue;
       InputNote n = notes[b.note];
-      n.doubt = design::DoubtedInput{n.field, spec.name, {}, b.x};
+      n.doubt = design::DoubtedInput{n.field, spec.name, {}, line.x};
       if (first)
         notes[b.note] = std::move(n);
       else
@@ -399,7 +397,7 @@ std::vector<LineBehindNote> read_lines(const TomlTable& top, sim::Scenario& sc,
                 " (the section's own horizontal x, not the road's or railway's station)");
     const std::size_t before = notes.size();
     note_line_behind_sources(t, sc, l, notes);
-    if (notes.size() > before) behind.push_back({before, l.name, l.x});
+    if (notes.size() > before) behind.push_back({before, sc.lines.size()});
     sc.lines.push_back(std::move(l));
   }
   return behind;
@@ -491,7 +489,7 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
   }
   const std::vector<LineBehindNote> behind = read_lines(top, out.scenario, out.notes);
   detail::read_barriers(top, rules, out);
-  doubt_barriers_behind_sources(behind, out.barriers, out.notes);
+  doubt_barriers_behind_sources(behind, out);
   apply_confirmations(top, out.notes);
   return out;
 }

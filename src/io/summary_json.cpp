@@ -420,9 +420,7 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
     json counts = json::object();
     for (design::CheckStatus st : {design::CheckStatus::pass, design::CheckStatus::warn,
                                    design::CheckStatus::fail, design::CheckStatus::not_applicable})
-      counts[std::string(design::to_string(st))] =
-          std::count_if(results.checks.begin(), results.checks.end(),
-                        [&](const design::CheckLine& c) { return c.status == st; });
+      counts[std::string(design::to_string(st))] = design::count_status(results.checks, st);
     j["check_counts"] = counts;
   }
   return j.dump(2) + "\n";

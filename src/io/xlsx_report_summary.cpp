@@ -287,11 +287,13 @@ void Report::summary_checks(lxw_worksheet* ws, Row r) {
         lines.push_back(l);
   r = table_title(ws, r, "checks");
   // The verdict first: how many lines FAIL, as `pierre check` counts them.
-  std::size_t n[4] = {0, 0, 0, 0};  // pass, fail, warn, N/A
-  for (const auto& l : lines) ++n[static_cast<int>(l.status)];
+  using design::CheckStatus;
   std::string verdict = lines.empty() ? t_.get("labels", "no_checks") : t_.get("labels", "verdict");
-  for (auto [key, v] : {std::pair{"{lines}", lines.size()}, {"{fail}", n[1]}, {"{warn}", n[2]},
-                        {"{pass}", n[0]}, {"{na}", n[3]}})
+  for (auto [key, v] : {std::pair{"{lines}", lines.size()},
+                        {"{fail}", design::count_status(lines, CheckStatus::fail)},
+                        {"{warn}", design::count_status(lines, CheckStatus::warn)},
+                        {"{pass}", design::count_status(lines, CheckStatus::pass)},
+                        {"{na}", design::count_status(lines, CheckStatus::not_applicable)}})
     verdict = replace_all(verdict, key, std::to_string(v));
   text(ws, r++, 0, verdict, bold());
   std::string failing;

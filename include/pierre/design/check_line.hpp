@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -39,6 +40,8 @@ inline bool at_most(double value, double limit) { return at_least(limit, value);
 
 // True when any line FAILs: the exit code of `pierre check`.
 bool any_failure(const std::vector<CheckLine>& lines);
+// How many lines have `status`: the verdict's counts (console, summary.json, report).
+std::size_t count_status(const std::vector<CheckLine>& lines, CheckStatus status);
 
 // An input the reader noted as a likely slip (a density in t/m³, a work area in cm), and the
 // check lines it bears on.
