@@ -230,7 +230,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   // said with the trajectories the finished sections ran.
   try {
     for (io::QuarrySection& s : loaded.quarries) {
-      files.begin_section(s.scenario, s.spec.name);
+      files.begin_section(s.scenario, s.spec.name, s.geometry);
       QuarrySink sink(files, s.geometry, all);
       FirstRows first(sink, layout.trajectory_rows - first_trajectories.size(),
                       layout.crossing_rows - first_crossings.size());

@@ -6,9 +6,7 @@
 
 namespace pierre::design {
 
-void QuarryDistances::add(const sim::TrajectorySummary& t, const QuarryGeometry& g) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  censor_distance = g.floor_length;
+QuarryTrajectory quarry_trajectory(const sim::TrajectorySummary& t, const QuarryGeometry& g) {
   QuarryTrajectory q;
   q.trajectory = t.trajectory;
   q.block = t.block;
@@ -24,29 +22,30 @@ void QuarryDistances::add(const sim::TrajectorySummary& t, const QuarryGeometry&
     // Which end it left by: the nearer one.
     const bool at_runout_end =
         std::abs(g.floor_length - d_stop) <= std::abs(d_stop - g.source_end_distance);
-    if (at_runout_end) {
-      q.censored = true;
-      q.rd = kInf;
-      ++left_profile;
-    } else {
-      q.rd = 0;
-      q.above_toe = true;
-      ++left_upslope;
-      ++above_toe;
-    }
-  } else {
-    if (t.stop_reason != sim::StopReason::energy && t.stop_reason != sim::StopReason::friction)
-      ++abnormal;
-    if (d_stop > 0) {
-      q.rd = d_stop;
-    } else {
-      q.rd = 0;
-      q.above_toe = true;
-      ++above_toe;
-    }
+    q.censored = at_runout_end;
+    q.left_upslope = !at_runout_end;
   }
+  if (q.censored) {
+    q.rd = std::numeric_limits<double>::infinity();
+  } else if (!q.left_upslope && d_stop > 0) {
+    q.rd = d_stop;
+  } else {
+    q.rd = 0;
+    q.above_toe = true;
+  }
+  return q;
+}
 
+void QuarryDistances::add(const sim::TrajectorySummary& t, const QuarryGeometry& g) {
+  censor_distance = g.floor_length;
+  const QuarryTrajectory q = quarry_trajectory(t, g);
   ++thrown;
+  left_profile += q.censored;
+  left_upslope += q.left_upslope;
+  above_toe += q.above_toe;
+  if (q.stop_reason != sim::StopReason::energy && q.stop_reason != sim::StopReason::friction &&
+      q.stop_reason != sim::StopReason::boundary)
+    ++abnormal;
   if (q.reached_floor) {
     ++reached_floor;
     id.push_back(q.id);

@@ -123,7 +123,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
       "trajectory", "source",   "block",       "throw",          "mass",
       "start_x",    "start_z",  "stop_x",      "stop_z",         "runout",
       "stop_reason", "duration", "impacts",    "first_impact_x", "first_impact_z",
-      "floor_contact_x", "floor_contact_z", "max_jump_height", "max_speed", "max_energy", "section"};
+      "floor_contact_x", "floor_contact_z", "id", "rd", "max_jump_height", "max_speed", "max_energy", "section"};
   s["headings.crossings"] = {"trajectory", "line",  "chainage", "block",  "mass",
                              "time",       "direction", "vx",   "vz",     "speed",
                              "omega",      "translational_energy", "rotational_energy",

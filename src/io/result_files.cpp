@@ -2,6 +2,7 @@
 // as the runner delivers its chunks.
 #include "pierre/io/result_writer.hpp"
 #include "pierre/io/output_folder.hpp"
+#include "pierre/design/quarry_distances.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -100,7 +101,7 @@ void ResultFiles::open(const std::filesystem::path& folder, bool impacts) {
   const std::string lead = sectioned_ ? "section," : "";
   // A quarry's ID is measured from the first floor contact, not the first impact (always on the
   // face there): with these columns it can be recomputed from the file.
-  const std::string floor = sectioned_ ? "floor_contact_x_m,floor_contact_z_m," : "";
+  const std::string floor = sectioned_ ? "floor_contact_x_m,floor_contact_z_m,ID_m,RD_m," : "";
   trajectories_ = std::make_unique<Csv>(
       folder / kTrajectoriesCsv,
       lead +
@@ -127,8 +128,10 @@ StaleResult stale_impacts_csv() {
   return {kImpactsCsv, {impacts_csv_header(false), impacts_csv_header(true)}};
 }
 
-void ResultFiles::begin_section(const sim::Scenario& scenario, std::string name) {
+void ResultFiles::begin_section(const sim::Scenario& scenario, std::string name,
+                                const design::QuarryGeometry& geometry) {
   scenario_ = &scenario;
+  geometry_ = &geometry;
   section_ = std::move(name);
   samples_ = design::RunSamples(scenario.lines.size(), scenario.profile.main_direction());
 }
@@ -173,6 +176,12 @@ std::unique_ptr<ResultFiles::Text> ResultFiles::format(const sim::ChunkResult& c
           fmt::format_to(out(b), FMT_COMPILE(",{:.9g},{:.9g}"), t.floor_contact.x, t.floor_contact.z);
         else
           fmt::format_to(out(b), FMT_COMPILE(",,"));
+        // As the section's statistics count it (fmt writes +infinity as "inf").
+        const design::QuarryTrajectory q = design::quarry_trajectory(t, *geometry_);
+        b.push_back(',');
+        optional_num(b, q.id);
+        b.push_back(',');
+        num(b, q.rd);
       }
       fmt::format_to(out(b), FMT_COMPILE(",{:.9g},{:.9g},{:.9g}\n"), t.max_jump_height, t.max_speed,
                      t.max_energy / 1000.0);

@@ -2,6 +2,8 @@
 // crossings.csv (the cap stated on the sheet), in a quarry run each under its section.
 #include "xlsx_report_writer.hpp"
 
+#include "pierre/design/quarry_distances.hpp"
+
 #include <algorithm>
 
 namespace pierre::io::detail {
@@ -42,10 +44,11 @@ void Report::data_sheet_print_area(lxw_worksheet* ws, Row head, Row r, Col last_
 void Report::trajectories(lxw_worksheet* ws) {
   page_setup(ws);
   // A quarry run leads with the section of each row; its names come from that section. It also
-  // has the floor contact after the first impact, as trajectories.csv does: ID is measured to it.
+  // has the floor contact after the first impact, ID and RD from the toe, as trajectories.csv
+  // does.
   const bool by_section = !d_.trajectory_sections.empty();
   const Col c0 = by_section ? 1 : 0;
-  const Col f = by_section ? 2 : 0;  // the floor contact's two columns
+  const Col f = by_section ? 4 : 0;  // the floor contact's two columns, ID and RD
   const Col last = 17 + c0 + f;
   widths(ws, 0, last, 11, {{0, by_section ? 16 : 11}, {1 + c0, 20}, {2 + c0, 12}, {10 + c0, 14}});
   const std::size_t shown = std::min(d_.trajectories.size(), t_.trajectory_rows);
@@ -54,7 +57,8 @@ void Report::trajectories(lxw_worksheet* ws) {
       ws, "trajectories", c0, shown, total, "trajectories.csv",
       {"trajectory", "source", "block", "throw", "mass", "start_x", "start_z", "stop_x", "stop_z",
        "runout", "stop_reason", "duration", "impacts", "first_impact_x", "first_impact_z"});
-  if (by_section) headings(ws, head, c0 + 15, "trajectories", {"floor_contact_x", "floor_contact_z"}, 45);
+  if (by_section)
+    headings(ws, head, c0 + 15, "trajectories", {"floor_contact_x", "floor_contact_z", "id", "rd"}, 45);
   headings(ws, head, c0 + 15 + f, "trajectories", {"max_jump_height", "max_speed", "max_energy"}, 45);
   Row r = head + 1;
   lxw_format *cf = number("count"), *xf = number("coordinate"), *mf = number("mass"),
@@ -86,6 +90,14 @@ void Report::trajectories(lxw_worksheet* ws) {
     if (by_section && t.has_floor_contact) {
       row.num(15, t.floor_contact.x, xf);
       row.num(16, t.floor_contact.z, xf);
+    }
+    if (by_section && row.geometry) {
+      const design::QuarryTrajectory q = design::quarry_trajectory(t, *row.geometry);
+      if (q.reached_floor) row.num(17, q.id, lf);
+      if (q.censored)
+        row.text(18, t_.get("labels", "beyond_profile"));
+      else
+        row.num(18, q.rd, lf);
     }
     row.num(15 + f, t.max_jump_height, lf);
     row.num(16 + f, t.max_speed, sf);

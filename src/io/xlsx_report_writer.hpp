@@ -163,6 +163,7 @@ class Report {
     Row r;
     Col c0;
     const sim::Scenario* scenario;
+    const design::QuarryGeometry* geometry = nullptr;  // a quarry row's section
     void num(Col c, double v, lxw_format* f) const { rep.num(ws, r, c + c0, v, f); }
     void text(Col c, const std::string& v, lxw_format* f = nullptr) const {
       rep.text(ws, r, c + c0, v, f);
@@ -176,6 +177,10 @@ class Report {
       const auto& q = d_.scenario->quarries[sections[i]];
       text(ws, r, 0, q.spec.name);
       row.scenario = &q.scenario;
+    }
+    // The section's crest and toe, as its design results have them (in section order).
+    if (d_.quarry && i < sections.size() && sections[i] < d_.quarry->sections.size()) {
+      row.geometry = &d_.quarry->sections[sections[i]].geometry;
     }
     return row;
   }

@@ -32,6 +32,7 @@ struct QuarryTrajectory {
   double rd = 0;                // m, >= 0; +infinity when censored
   bool censored = false;        // left the profile at its runout end
   bool above_toe = false;       // stopped on the face or a bench above the toe (RD = 0)
+  bool left_upslope = false;    // left the profile at its source end (RD = 0, above_toe too)
   sim::StopReason stop_reason = sim::StopReason::numerical;
   double duration = 0;          // s
 };
@@ -52,6 +53,10 @@ struct QuarryDistances {
   // Adds one trajectory (a run's sink may call this chunk by chunk).
   void add(const sim::TrajectorySummary& t, const QuarryGeometry& g);
 };
+
+// One trajectory's ID and RD and how it ended, as QuarryDistances counts it (and as the quarry
+// trajectories.csv writes it).
+QuarryTrajectory quarry_trajectory(const sim::TrajectorySummary& t, const QuarryGeometry& g);
 
 QuarryDistances quarry_distances(std::span<const sim::TrajectorySummary> trajectories,
                                  const QuarryGeometry& geometry);

@@ -19,8 +19,13 @@
 // A quarry scenario (docs/quarry.md) writes the same files once for all its sections, one section
 // after the other in file order, each row led by a `section` column (the section's name);
 // `trajectory` then counts within the section (it keys the section's own random streams).
-// Its trajectories.csv also has floor_contact_x_m,floor_contact_z_m after first_impact_z_m: the
-// first contact with the floor, from which ID is measured (empty when the block never reached it).
+// Its trajectories.csv also has, after first_impact_z_m:
+//   floor_contact_x_m,floor_contact_z_m — the first contact with the floor, from which ID is
+//     measured (empty when the block never reached it);
+//   ID_m — the first-impact distance from the toe (design-checks.md §2; empty as above);
+//   RD_m — the runout distance from the toe: 0 for a block that stopped at or above the toe or
+//     left the section at its source end, inf for one that left it at its runout end
+//     (right-censored).
 //
 // Numbers are written with 9 significant digits ({:.9g}): the same seed gives the same bytes.
 // Only what the statistics need stays in memory (design::RunSamples).
@@ -69,9 +74,10 @@ class ResultFiles final : public sim::ResultSink {
   ResultFiles(const std::filesystem::path& folder, bool impacts);
   ~ResultFiles() override;
 
-  // The chunks that follow belong to `scenario`, named `name` in the section column (which it
-  // must outlive); samples() starts afresh.
-  void begin_section(const sim::Scenario& scenario, std::string name);
+  // The chunks that follow belong to `scenario`, named `name` in the section column, with its
+  // crest and toe `geometry` (both of which it must outlive); samples() starts afresh.
+  void begin_section(const sim::Scenario& scenario, std::string name,
+                     const design::QuarryGeometry& geometry);
 
   // Formats the chunk's rows (on the worker thread; consume formats those that come without).
   void prepare(sim::ChunkResult& chunk) const override;
@@ -89,6 +95,7 @@ class ResultFiles final : public sim::ResultSink {
   std::unique_ptr<Text> format(const sim::ChunkResult& chunk) const;
 
   const sim::Scenario* scenario_ = nullptr;
+  const design::QuarryGeometry* geometry_ = nullptr;  // a quarry section's
   bool sectioned_ = false;
   std::string section_;
   std::unique_ptr<Csv> trajectories_, crossings_, impacts_;

@@ -258,7 +258,8 @@ TEST_F(QuarryCli, NoFirstImpactIsSaidAsNone) {
 
 // ID is measured from a block's first contact with the floor (design-checks.md §2), which the
 // first impact (on the face) is not: trajectories.csv gives it, so ID can be recomputed block by
-// block, ID = max(0, floor_contact_x_m - toe x). Recomputed, it has the section's ID statistics
+// block, ID = max(0, floor_contact_x_m - toe x), and it does: its ID_m and RD_m columns are
+// checked against the distances recomputed from the floor contact and the stop point. Recomputed, it has the section's ID statistics
 // of summary.json; the blocks without a floor contact are those it counts as not reaching the
 // floor, and each of them stopped above the toe (on the bench or the face) or left the section.
 TEST_F(QuarryCli, TheFloorContactColumnsGiveTheFirstImpactDistances) {
@@ -280,14 +281,15 @@ TEST_F(QuarryCli, TheFloorContactColumnsGiveTheFirstImpactDistances) {
   EXPECT_EQ(line,
             "section,trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,"
             "stop_z_m,runout_m,stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,"
-            "floor_contact_x_m,floor_contact_z_m,max_jump_height_m,max_speed_m_s,max_energy_kJ");
+            "floor_contact_x_m,floor_contact_z_m,ID_m,RD_m,max_jump_height_m,max_speed_m_s,"
+            "max_energy_kJ");
   const std::vector<std::string> head = cells(line);
   auto col = [&](const char* name) {
     return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
   };
   const std::size_t c_section = col("section"), c_fx = col("floor_contact_x_m"),
                     c_fz = col("floor_contact_z_m"), c_stop = col("stop_x_m"),
-                    c_reason = col("stop_reason");
+                    c_reason = col("stop_reason"), c_id = col("ID_m"), c_rd = col("RD_m");
 
   const double toe_x = 20.0;  // the foot of the face's lower part, as the geometry finds it
   std::vector<double> id;
@@ -299,6 +301,14 @@ TEST_F(QuarryCli, TheFloorContactColumnsGiveTheFirstImpactDistances) {
     EXPECT_EQ(row[c_section], "Benched");
     const std::string &fx = row[c_fx], &fz = row[c_fz];
     EXPECT_EQ(fx.empty(), fz.empty()) << line;
+    EXPECT_EQ(fx.empty(), row[c_id].empty()) << line;
+    // RD from the stop point: 0 at or above the toe; inf for a block that left at the runout end.
+    const double stop = std::stod(row[c_stop]);
+    if (row[c_reason] == "boundary" && stop > toe_x) {
+      EXPECT_EQ(row[c_rd], "inf") << line;
+    } else {
+      EXPECT_NEAR(std::stod(row[c_rd]), std::max(0.0, stop - toe_x), 1e-6) << line;
+    }
     if (fx.empty()) {
       ++not_reached;
       // Not on the floor: stopped above the toe, or left the section.
@@ -309,6 +319,7 @@ TEST_F(QuarryCli, TheFloorContactColumnsGiveTheFirstImpactDistances) {
     }
     EXPECT_GE(std::stod(fx), toe_x) << line;  // on the floor, past the toe
     id.push_back(std::max(0.0, std::stod(fx) - toe_x));
+    EXPECT_NEAR(std::stod(row[c_id]), id.back(), 1e-6) << line;
   }
   EXPECT_EQ(rows, 200);  // 2 blocks × 100 throws
 

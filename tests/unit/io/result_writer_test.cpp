@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pierre/design/quarry_geometry.hpp"
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/result_writer.hpp"
 #include "pierre/io/version.hpp"
@@ -178,27 +179,41 @@ TEST(ResultFiles, APreparedChunkWritesTheSameBytesAsAnUnpreparedOne) {
 }
 
 // A quarry run's rows are led by their section and carry the first floor contact (ID's origin,
-// design-checks.md §2) after the first impact: both cells empty for a block that never reached
-// the floor, as the first impact's are without one.
-TEST(ResultFiles, AQuarryRunGivesTheFirstFloorContact) {
+// design-checks.md §2) after the first impact, then ID and RD from the toe: the contact's cells
+// and ID empty for a block that never reached the floor, as the first impact's are without one.
+// The section here: a face from (0, 10) to its toe at (10, 0), then 10 m of floor.
+TEST(ResultFiles, AQuarryRunGivesTheFirstFloorContactAndTheDistancesFromTheToe) {
   TempDir dir;
   const sim::Scenario s = scenario();
+  const auto geometry = design::quarry_geometry(s.profile, {});
+  ASSERT_TRUE(geometry.ok());
+  ASSERT_EQ(geometry->toe.x, 10.0);
   io::ResultFiles files(dir.path(), false);
-  files.begin_section(s, "North");
+  files.begin_section(s, "North", *geometry);
   sim::ChunkResult c = chunk();
   c.trajectories[0].has_floor_contact = true;
-  c.trajectories[0].floor_contact = {12.25, 0.5};
+  c.trajectories[0].floor_contact = {12.25, 0};  // stops at 16.5: ID 2.25 m, RD 6.5 m
+  c.trajectories[1].has_floor_contact = true;   // left at the runout end (x 20): RD censored
+  c.trajectories[1].floor_contact = {10, 0};    // at the toe itself: ID 0
+  sim::TrajectorySummary on_face = c.trajectories[0];  // stopped on the face: RD 0, no ID
+  on_face.trajectory = 2;
+  on_face.throw_index = 2;
+  on_face.has_floor_contact = false;
+  on_face.stop = {4, 6};
+  c.trajectories.push_back(on_face);
   files.consume(std::move(c));
   files.close();
 
   const auto traj = lines_of(read_file(dir.path() / "trajectories.csv"));
-  ASSERT_EQ(traj.size(), 3u);
+  ASSERT_EQ(traj.size(), 4u);
   EXPECT_EQ(traj[0],
             "section,trajectory,source,block_id,throw,mass_kg,start_x_m,start_z_m,stop_x_m,stop_z_m,"
             "runout_m,stop_reason,duration_s,impacts,first_impact_x_m,first_impact_z_m,"
-            "floor_contact_x_m,floor_contact_z_m,max_jump_height_m,max_speed_m_s,max_energy_kJ");
-  EXPECT_EQ(traj[1], "North,0,top,\"big, round\",0,100,1,11,16.5,0,15.5,energy,3.25,4,2,8,12.25,0.5,1.5,12,7.2");
-  EXPECT_EQ(traj[2], "North,1,top,\"big, round\",1,100,1,11,21,-1,20,boundary,3.25,4,,,,,1.5,12,7.2");
+            "floor_contact_x_m,floor_contact_z_m,ID_m,RD_m,max_jump_height_m,max_speed_m_s,"
+            "max_energy_kJ");
+  EXPECT_EQ(traj[1], "North,0,top,\"big, round\",0,100,1,11,16.5,0,15.5,energy,3.25,4,2,8,12.25,0,2.25,6.5,1.5,12,7.2");
+  EXPECT_EQ(traj[2], "North,1,top,\"big, round\",1,100,1,11,21,-1,20,boundary,3.25,4,,,10,0,0,inf,1.5,12,7.2");
+  EXPECT_EQ(traj[3], "North,2,top,\"big, round\",2,100,1,11,4,6,3,energy,3.25,4,2,8,,,,0,1.5,12,7.2");
 }
 
 TEST(ResultFiles, NoImpactsFileUnlessAsked) {

@@ -453,23 +453,33 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     EXPECT_EQ(title.find("observation lines"), std::string::npos) << title;
     EXPECT_EQ(title.find("barriers"), std::string::npos) << title;
   }
-  // Trajectories: the floor contact follows the first impact, as in trajectories.csv, and is
-  // empty for a block that never reached the floor.
+  // Trajectories: the floor contact follows the first impact, as in trajectories.csv, then ID
+  // and RD from the toe; the contact and ID are empty for a block that never reached the floor.
+  // Face A's toe is the foot of its lower face, (18, 0): ID = 26.25 − 18, RD = 40 − 18, and the
+  // block held on the bench (stopped at x 14) has RD 0.
   {
+    ASSERT_EQ(q.sections[0].geometry.toe.x, 18.0);
     const Sheet& s = sheets["Trajectories"];
     const auto head = find_row(s, 0, "Quarry section");
     ASSERT_TRUE(head) << dump(s, 2);
     EXPECT_EQ(cell(s, *head, 15)->text, "First impact z (m)");
     EXPECT_EQ(cell(s, *head, 16)->text, "Floor contact x (m)");
     EXPECT_EQ(cell(s, *head, 17)->text, "Floor contact z (m)");
-    EXPECT_EQ(cell(s, *head, 18)->text, "Max jump height (m)");
+    EXPECT_EQ(cell(s, *head, 18)->text, "ID from the toe (m)");
+    EXPECT_EQ(cell(s, *head, 19)->text, "RD from the toe (m)");
+    EXPECT_EQ(cell(s, *head, 20)->text, "Max jump height (m)");
     ASSERT_EQ(s.size(), *head + 3);
     expect_number(s, *head + 1, 16, 26.25);
     expect_number(s, *head + 1, 17, 0.0);
-    expect_number(s, *head + 1, 18, 3.5);
-    const auto* empty = cell(s, *head + 2, 16);
-    EXPECT_TRUE(!empty || empty->text.empty()) << dump(s, *head + 2);
-    expect_number(s, *head + 2, 18, 4.5);
+    expect_number(s, *head + 1, 18, 8.25);
+    expect_number(s, *head + 1, 19, 22.0);
+    expect_number(s, *head + 1, 20, 3.5);
+    for (int c : {16, 18}) {
+      const auto* empty = cell(s, *head + 2, c);
+      EXPECT_TRUE(!empty || empty->text.empty()) << dump(s, *head + 2);
+    }
+    expect_number(s, *head + 2, 19, 0.0);
+    expect_number(s, *head + 2, 20, 4.5);
   }
   // Crossings: a quarry scenario has no observation lines, and the sheet says why it is empty
   // (it said "All 0 rows").
