@@ -116,6 +116,8 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
   info.threads = threads;
   info.all_crossings = all_crossings;
   info.impacts = impacts;
+  info.settings = loaded.scenario.settings;
+  info.materials = loaded.scenario.materials;
   info.overrides = loaded.overrides;
   info.input_notes = loaded.notes;
   info.inputs = loaded.inputs;

@@ -336,6 +336,37 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["seed"] = info.seed;
   j["throws"] = info.throws;
   j["command_line_overrides"] = info.overrides;  // [] when the file's values ran
+  // The model as it ran, defaults and presets resolved: what the input hashes above do not say
+  // without the files (a default or a preset may change between versions). Units as the
+  // scenario file has them (docs/scenario-format.md), written into the keys.
+  {
+    const sim::SimulationSettings& st = info.settings;
+    const model::RoughnessModel& r = st.roughness;
+    j["simulation"] = {
+        {"gravity_m_s2", st.gravity},
+        {"max_time_s", st.max_time},
+        {"max_impacts", st.max_impacts},
+        {"stop_head_factor", st.stop_head_factor},  // × the block radius R
+        {"max_sliding_speed_m_s", st.max_sliding_speed},
+        {"roughness_distribution",
+         r.distribution == model::RoughnessDistribution::uniform ? "uniform" : "truncated-normal"},
+        {"roughness_mean", r.mean},  // μ and σ of X, dimensionless
+        {"roughness_sd", r.sd},
+        {"size_reduction", r.size_reduction},  // Eq 6.6
+        {"size_reduction_b", r.b},
+        {"size_reduction_m_per_m", r.m},
+        {"size_reduction_floor", r.floor}};
+  }
+  j["materials"] = json::array();
+  for (const model::Material& m : info.materials)
+    j["materials"].push_back({{"name", m.name},
+                              {"source", m.source},
+                              {"normal_energy_m3_s2", m.normal_energy},
+                              {"normal_energy_k", m.normal_energy_k},
+                              {"tangential_energy_m3_s2", m.tangential_energy},
+                              {"tangential_energy_k", m.tangential_energy_k},
+                              {"roughness", m.roughness},
+                              {"friction_angle_deg", m.friction_angle_deg}});
   // The readers' notes (a profile running back in x, a source far above the ground): what the
   // console said, kept for a pipeline that reads only this file. [] when there were none.
   j["input_notes"] = json::array();

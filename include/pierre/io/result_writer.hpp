@@ -115,6 +115,10 @@ struct RunInfo {
   unsigned threads = 0;  // worker threads used
   bool all_crossings = false;
   bool impacts = false;  // impacts.csv written (--impacts)
+  // The model as it ran: the [simulation] settings and the materials with their presets and
+  // overrides resolved (in a quarry scenario, shared by every section).
+  sim::SimulationSettings settings;
+  std::vector<model::Material> materials;
   std::vector<std::string> overrides;  // LoadedScenario::overrides
   std::vector<InputNote> input_notes;  // LoadedScenario::notes: likely mistakes, not errors
   std::vector<InputFile> inputs;  // LoadedScenario::inputs and the report layout: every file read
@@ -143,7 +147,8 @@ struct DesignResults {
 };
 
 // summary.json's text (pretty-printed, NaN as null): pierre version, scenario, seed, throws,
-// trajectories, threads, stop-reason counts, per-line statistics (energies in kJ), runout;
+// the model settings and materials as resolved ("simulation", "materials"), trajectories,
+// threads, stop-reason counts, per-line statistics (energies in kJ), runout;
 // with design results also "barriers" (the design values of each) and, when a barrier got
 // none, "barriers_without_design" (name, line, chainage, rules as "barriers" give them, crossings, reason), for a quarry scenario
 // "quarries" (one entry per row of Tables 6.2/6.3 — a lone section or a pooled group — with

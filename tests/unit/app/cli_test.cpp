@@ -24,6 +24,9 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+#include "pierre/model/model_defaults.hpp"
 
 #include "support/cli_fixture.hpp"
 #include "support/tools.hpp"
@@ -111,6 +114,53 @@ TEST_F(Cli, RunWritesTheResults) {
   EXPECT_NE(r.out.find("speed (m/s)"), std::string::npos);
   EXPECT_NE(r.out.find("P99"), std::string::npos);
   EXPECT_NE(r.out.find((out / "trajectories.csv").string()), std::string::npos);
+}
+
+// summary.json says the model as it ran: the material of a preset with one field overridden
+// has the preset's other values as rules/materials.toml gives them (read here by toml++, not
+// by pierre's reader), and [simulation] has the values the file set and the model defaults
+// for the rest.
+TEST_F(Cli, SummaryJsonEchoesTheModelAsItRan) {
+  const fs::path scenario = dir_ / "s.toml";
+  std::ofstream(scenario)
+      << "[scenario]\nname = \"echo\"\n[simulation]\nseed = 3\nthrows = 2\ngravity = 9.80\n"
+         "roughness_distribution = \"uniform\"\nstop_head_factor = 0.3\nsize_reduction = false\n"
+         "[profile]\npoints = [[0.0, 30.0, \"slope\"], [40.0, 0.0, \"slope\"], [80.0, 0.0]]\n"
+         "[materials.slope]\npreset = \"talus\"\nroughness = 0.72\n[blocks]\n"
+         "[[blocks.table]]\nmass = 500.0\n[[sources]]\nname = \"top\"\nx = 1.0\nz = 31.0\n";
+  const fs::path out = dir_ / "out";
+  const Result r = pierre("run " + q(scenario) + " --out " + q(out) + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+
+  const toml::table presets = toml::parse_file(PIERRE_SOURCE_DIR "/rules/materials.toml");
+  const auto talus = [&](const char* key) { return presets["talus"][key].value<double>().value(); };
+  ASSERT_EQ(j["materials"].size(), 1u);
+  const auto& m = j["materials"][0];
+  EXPECT_EQ(m["name"], "slope");
+  EXPECT_DOUBLE_EQ(m["normal_energy_m3_s2"].get<double>(), talus("normal_energy"));
+  EXPECT_DOUBLE_EQ(m["normal_energy_k"].get<double>(), talus("normal_energy_k"));
+  EXPECT_DOUBLE_EQ(m["tangential_energy_m3_s2"].get<double>(), talus("tangential_energy"));
+  EXPECT_DOUBLE_EQ(m["tangential_energy_k"].get<double>(), talus("tangential_energy_k"));
+  EXPECT_DOUBLE_EQ(m["friction_angle_deg"].get<double>(), talus("friction_angle"));
+  EXPECT_DOUBLE_EQ(m["roughness"].get<double>(), 0.72);  // the override, not the preset's
+  ASSERT_NE(talus("roughness"), 0.72);
+  EXPECT_NE(m["source"].get<std::string>().find("talus"), std::string::npos) << m;
+
+  using D = pierre::model::ModelDefaults;
+  const auto& sim = j["simulation"];
+  EXPECT_DOUBLE_EQ(sim["gravity_m_s2"].get<double>(), 9.80);
+  EXPECT_EQ(sim["roughness_distribution"], "uniform");
+  EXPECT_DOUBLE_EQ(sim["stop_head_factor"].get<double>(), 0.3);
+  EXPECT_EQ(sim["size_reduction"], false);
+  EXPECT_DOUBLE_EQ(sim["max_time_s"].get<double>(), D::max_time);
+  EXPECT_EQ(sim["max_impacts"].get<long>(), D::max_impacts);
+  EXPECT_DOUBLE_EQ(sim["max_sliding_speed_m_s"].get<double>(), D::max_sliding_speed);
+  EXPECT_DOUBLE_EQ(sim["roughness_mean"].get<double>(), D::roughness_mean);
+  EXPECT_DOUBLE_EQ(sim["roughness_sd"].get<double>(), D::roughness_sd);
+  EXPECT_DOUBLE_EQ(sim["size_reduction_b"].get<double>(), D::size_reduction_b);
+  EXPECT_DOUBLE_EQ(sim["size_reduction_m_per_m"].get<double>(), D::size_reduction_m);
+  EXPECT_DOUBLE_EQ(sim["size_reduction_floor"].get<double>(), D::size_reduction_floor);
 }
 
 // The run's time with three significant digits, in ms below a second: 600 trajectories take
