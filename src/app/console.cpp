@@ -206,14 +206,21 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
     if (printed) fmt::print(out, "\n");
     printed = true;
   };
-  if (!r.barriers.empty()) {
+  if (!r.barriers.empty() || !r.barriers_without_design.empty()) {
     blank();
     fmt::print(out, "Barriers (ETAG 027, docs/barriers.md; characteristic values at the rule set's percentile)\n");
     // The class the requirement needs, not a candidate's (the report's "smallest energy class
     // required"): "class" alone read as the candidate's own.
-    const std::size_t wb = column_width(r.barriers, 18, [](const auto& d) { return d.spec.name; });
-    const std::size_t wn = column_width(r.barriers, 12, [](const auto& d) { return d.spec.line; });
-    const std::size_t wr = column_width(r.barriers, 18, [](const auto& d) { return d.rules_name; });
+    const auto& none = r.barriers_without_design;
+    const std::size_t wb =
+        std::max(column_width(r.barriers, 18, [](const auto& d) { return d.spec.name; }),
+                 column_width(none, 18, [](const auto& d) { return d.name; }));
+    const std::size_t wn =
+        std::max(column_width(r.barriers, 12, [](const auto& d) { return d.spec.line; }),
+                 column_width(none, 12, [](const auto& d) { return d.line; }));
+    const std::size_t wr =
+        std::max(column_width(r.barriers, 18, [](const auto& d) { return d.rules_name; }),
+                 column_width(none, 18, [](const auto& d) { return d.rules_name; }));
     fmt::print(out, "{:<{}} {:<{}} {:<{}} {:>10} {:>10} {:>8} {:>9} {:>10} {:>10} {:>9} {:>7}\n",
                "barrier", wb, "line", wn, "rules", wr, "v_k m/s", "h_k m", "v_d m/s", "E_d kJ",
                "MEL_req kJ", "SEL_req kJ", "req class", "h_i m");
@@ -237,8 +244,14 @@ void print_design(std::FILE* out, const io::DesignResults& r, bool follows_outpu
                                       (d.energy_class->open_ended ? "+" : "")
                                 : std::string("-"),
                  design::number_cell(d.h_i, length, 7));
-    fmt::print(out, "v_k, h_k: W the Weibull quantile, E the empirical percentile (the rule set's "
-                    "`governing`)\n");
+    // A barrier its line gave no design: in the table all the same, with why (its check line
+    // below says it too), so that a reader of the table misses none.
+    for (const auto& d : none)
+      fmt::print(out, "{:<{}} {:<{}} {:<{}} no design: {}\n", d.name, wb, d.line, wn, d.rules_name,
+                 wr, d.reason);
+    if (!r.barriers.empty())
+      fmt::print(out, "v_k, h_k: W the Weibull quantile, E the empirical percentile (the rule "
+                      "set's `governing`)\n");
     // What an engineer should know of a design (fits from few values, zero heights left out of
     // the Weibull, ...): the report and summary.json keep them too.
     for (const auto& d : r.barriers)

@@ -483,6 +483,20 @@ TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
   EXPECT_EQ(b["crossings"].get<std::uint64_t>(), reached);
   EXPECT_EQ(b["failed_check"], "reach");
   EXPECT_NE(b["reason"].get<std::string>().find("fewer than two"), std::string::npos) << b["reason"];
+
+  // The console's barrier table has its row too, with why there are no values.
+  const Result shown = pierre("check '" + scenario.string() + "' --out '" + (dir_ / "out2").string() + "'");
+  ASSERT_EQ(shown.code, 0) << shown.err;
+  std::istringstream text(shown.out);
+  std::string row;
+  while (std::getline(text, row) && row.rfind("Barriers (ETAG 027", 0) != 0) {
+  }
+  ASSERT_TRUE(std::getline(text, row)) << shown.out;  // the column headings
+  ASSERT_TRUE(std::getline(text, row)) << shown.out;
+  EXPECT_EQ(row.rfind("Design ", 0), 0u) << row;
+  EXPECT_NE(row.find(" Road "), std::string::npos) << row;
+  EXPECT_NE(row.find("peila-ronco-2009"), std::string::npos) << row;
+  EXPECT_NE(row.find("no design: " + b["reason"].get<std::string>()), std::string::npos) << row;
 }
 
 // A candidate on a line that no block reaches has nothing to be checked against: besides the
