@@ -177,21 +177,23 @@ std::unique_ptr<Fixture> make_fixture() {
     }
     d.quarry_sections.push_back(v);
   }
-  // Two trajectories of a section: one that reached the floor, one that stayed on the bench.
-  for (int k = 0; k < 2; ++k) {
+  // Three trajectories of a section: one that reached the floor, one that stayed on the bench,
+  // one that left the section at its runout end (x 168).
+  for (int k = 0; k < 3; ++k) {
     sim::TrajectorySummary t;
     t.trajectory = static_cast<std::uint64_t>(k);
     t.start = {10.5, 20.5};
     t.has_first_impact = true;
     t.first_impact = {11.0, 19.0};
-    t.has_floor_contact = k == 0;
+    t.has_floor_contact = k != 1;
     t.floor_contact = {26.25, 0};
-    t.stop = k == 0 ? geometry::Vec2{40, 0} : geometry::Vec2{14, 10};
+    t.stop = k == 0 ? geometry::Vec2{40, 0} : k == 1 ? geometry::Vec2{14, 10} : geometry::Vec2{168, 0};
+    t.stop_reason = k == 2 ? sim::StopReason::boundary : sim::StopReason::energy;
     t.max_jump_height = 3.5 + k;
     d.trajectories.push_back(t);
     d.trajectory_sections.push_back(0);
   }
-  d.total_trajectories = 2;
+  d.total_trajectories = 3;
   d.statistics.runout = {1200, 14.5, 26.0, 31.0, 44.0};  // m from the release points, pooled
   return f;
 }
@@ -456,7 +458,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
   // Trajectories: the floor contact follows the first impact, as in trajectories.csv, then ID
   // and RD from the toe; the contact and ID are empty for a block that never reached the floor.
   // Face A's toe is the foot of its lower face, (18, 0): ID = 26.25 − 18, RD = 40 − 18, and the
-  // block held on the bench (stopped at x 14) has RD 0.
+  // block held on the bench (stopped at x 14) has RD 0, the one that left has none to give.
   {
     ASSERT_EQ(q.sections[0].geometry.toe.x, 18.0);
     const Sheet& s = sheets["Trajectories"];
@@ -468,7 +470,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     EXPECT_EQ(cell(s, *head, 18)->text, "ID from the toe (m)");
     EXPECT_EQ(cell(s, *head, 19)->text, "RD from the toe (m)");
     EXPECT_EQ(cell(s, *head, 20)->text, "Max jump height (m)");
-    ASSERT_EQ(s.size(), *head + 3);
+    ASSERT_EQ(s.size(), *head + 4);
     expect_number(s, *head + 1, 16, 26.25);
     expect_number(s, *head + 1, 17, 0.0);
     expect_number(s, *head + 1, 18, 8.25);
@@ -480,6 +482,7 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
     }
     expect_number(s, *head + 2, 19, 0.0);
     expect_number(s, *head + 2, 20, 4.5);
+    EXPECT_EQ(cell(s, *head + 3, 19)->text, "beyond the profile") << dump(s, *head + 3);
   }
   // Crossings: a quarry scenario has no observation lines, and the sheet says why it is empty
   // (it said "All 0 rows").
