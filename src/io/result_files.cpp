@@ -100,7 +100,7 @@ ResultFiles::ResultFiles(const std::filesystem::path& folder, bool impacts) : se
 void ResultFiles::open(const std::filesystem::path& folder, bool impacts) {
   const std::string lead = sectioned_ ? "section," : "";
   // A quarry's ID is measured from the first floor contact, not the first impact (always on the
-  // face there): with these columns it can be recomputed from the file.
+  // face there): the contact is given, and ID and RD from it and the stop point.
   const std::string floor = sectioned_ ? "floor_contact_x_m,floor_contact_z_m,ID_m,RD_m," : "";
   trajectories_ = std::make_unique<Csv>(
       folder / kTrajectoriesCsv,
