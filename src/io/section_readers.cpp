@@ -301,6 +301,7 @@ struct GroupSource {  // where a block group was written, for messages
   std::string size_field;
   long density_line;       // of its own density (its row's line when it has none)
   std::string density_field;
+  bool own_density;        // false: it has [blocks].density
 };
 
 void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
@@ -368,7 +369,8 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
       g.count = static_cast<unsigned>(n);
     }
     groups.push_back(std::move(g));
-    where.push_back({file, r.line, "id", r.line, has_mass ? "mass" : "volume", r.line, "density"});
+    where.push_back({file, r.line, "id", r.line, has_mass ? "mass" : "volume", r.line, "density",
+                     present(r, c_den)});
   }
 }
 
@@ -378,17 +380,37 @@ void read_blocks_csv(const fs::path& file, double density, ShapeRange shape,
 void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<BlockGroup>& groups,
                           const std::vector<GroupSource>& where, std::vector<InputNote>& notes) {
   auto rock = [](double d) { return d >= kRockDensityMin && d <= kRockDensityMax; };
-  constexpr std::string_view effect = "blocks 1000 times too light, and every energy 1000 times too small";
+  auto by_mass = [&](std::size_t i) { return where[i].size_field.ends_with("mass"); };
+  // What a density 1000 times too small does depends on what it turns into: a volume's mass, or
+  // a mass's volume (the block's size: its radius R enters c_stop·R, Eq 3.13, the roughness's
+  // size factor, Eq 6.6, and the free board).
+  constexpr std::string_view light = "blocks 1000 times too light, and every energy 1000 times too small";
+  constexpr std::string_view large =
+      "blocks 1000 times too large in volume for their masses (10 times in diameter), and with "
+      "their radius the stop criterion c_stop·R, the roughness and the free board";
+  auto effect_on = [&](bool volume_rows, bool mass_rows) -> std::string {
+    if (volume_rows && mass_rows)
+      return fmt::format("the rows given by volume {}; and the rows given by mass {}",
+                         light.substr(std::string_view("blocks ").size()),
+                         large.substr(std::string_view("blocks ").size()));
+    if (volume_rows) return std::string(light);
+    if (mass_rows) return std::string(large);
+    return "no block anything: every row has a density of its own";
+  };
   const std::size_t before = notes.size();
   // The mass or volume as typed in row i: what a note on it names and [confirmed] restates.
   auto typed_size = [&](std::size_t i) {
     return where[i].size_field.ends_with("mass") ? groups[i].mass : groups[i].volume;
   };
-  if (b.has("density") && !rock(shared))
+  if (b.has("density") && !rock(shared)) {
+    bool volume_rows = false, mass_rows = false;  // that take this density
+    for (std::size_t i = 0; i < groups.size(); ++i)
+      if (!where[i].own_density) (by_mass(i) ? mass_rows : volume_rows) = true;
     notes.push_back({b.file(), line_of(*b.find("density")), b.field("density"),
                      fmt::format("the block density {:g} kg/m³ is {}", shared,
-                                 density_slip(shared, effect)),
+                                 density_slip(shared, effect_on(volume_rows, mass_rows))),
                      doubts_every_line(b.field("density"), shared)});
+  }
   std::size_t odd = 0, first = 0;
   for (std::size_t i = 0; i < groups.size(); ++i)
     if (groups[i].density != shared && !rock(groups[i].density) && odd++ == 0) first = i;
@@ -397,7 +419,8 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
                      fmt::format("block \"{}\" has a density of {:g} kg/m³{}, {}",
                                  groups[first].id, groups[first].density,
                                  odd > 1 ? fmt::format(" (and {} more rows like it)", odd - 1) : "",
-                                 density_slip(groups[first].density, effect)),
+                                 density_slip(groups[first].density,
+                                              effect_on(!by_mass(first), by_mass(first)))),
                      doubts_every_line(where[first].density_field, groups[first].density)});
   if (notes.size() > before) return;  // light blocks of a light density: said already
   std::size_t heaviest = 0;
@@ -413,7 +436,6 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
          doubts_every_line(where[heaviest].size_field, typed_size(heaviest))});
   // One row given by its mass in tonnes among rows given by volume: the heaviest is a real
   // block, so the test above is silent, but this row weighs a thousandth of what was meant.
-  auto by_mass = [&](std::size_t i) { return where[i].size_field.ends_with("mass"); };
   double lightest_by_volume = std::numeric_limits<double>::infinity(), heaviest_by_volume = 0;
   for (std::size_t i = 0; i < groups.size(); ++i)
     if (!by_mass(i)) {
@@ -513,7 +535,8 @@ void read_blocks(const TomlTable& top, std::vector<BlockGroup>& groups,
       const char* size = mass ? "mass" : "volume";
       where.push_back({top.file(), t.has("id") ? line_of(*t.find("id")) : t.line(), t.field("id"),
                        line_of(*t.find(size)), t.field(size),
-                       t.has("density") ? line_of(*t.find("density")) : t.line(), t.field("density")});
+                       t.has("density") ? line_of(*t.find("density")) : t.line(), t.field("density"),
+                       t.has("density")});
       groups.push_back(std::move(g));
     }
   }

@@ -136,9 +136,10 @@ std::string density_in_tonnes() {
   return text;
 }
 
-// A density typed in t/m³ (2.65 for 2650 kg/m³) makes every block 1000 times too light; the
-// reader notes it, and no line of the run may then PASS: a pipeline gating on `check` would take
-// a barrier checked against blocks of a few kilograms for a sized one. Each PASS of the same
+// A density typed in t/m³ (2.65 for 2650 kg/m³) makes the block given by volume 1000 times too
+// light and the one given by mass 1000 times too large; the reader notes it, and no line of the
+// run may then PASS: a pipeline gating on `check` would take a barrier checked against blocks of
+// a few kilograms for a sized one. Each PASS of the same
 // file with the density right is a WARN naming the input, and FAIL-free, the exit stays 0.
 TEST_F(Check, NoPlainPassOnBlocksTheReaderDoubts) {
   const std::string text = density_in_tonnes();

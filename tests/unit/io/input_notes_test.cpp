@@ -171,14 +171,44 @@ TEST(InputNotes, TheThresholdIsAHundredMetresAndTheProfilesHeight) {
 TEST(InputNotes, ADensityInTonnesPerCubicMetreIsNoted) {
   TempDir dir;
   const fs::path s = dir.path() / "s.toml";
+  // The base's block is given by its mass (line 18): the density makes its volume, not its mass.
   const auto notes = notes_of(dir, base_with(16, "[blocks]\ndensity = 2.65"));
   ASSERT_EQ(notes.size(), 1u);  // and not the light blocks too: the density says why
   EXPECT_EQ(notes[0].message(),
             s.string() + ":17: blocks.density: the block density 2.65 kg/m³ is outside the "
                          "densities of rock (1500 to 4000 kg/m³). A density is in kg/m³: if "
                          "2.65 is in t/m³ (or g/cm³), it is 2650 kg/m³; as typed, it gives blocks "
-                         "1000 times too light, and every energy 1000 times too small. If it is meant, confirm "
+                         "1000 times too large in volume for their masses (10 times in diameter), "
+                         "and with their radius the stop criterion c_stop·R, the roughness and the "
+                         "free board. If it is meant, confirm "
                 "it in the scenario: [confirmed] \"blocks.density\" = 2.65");
+  // Given by volume, the density makes the mass.
+  const auto by_volume =
+      notes_of(dir, base_with({{16, "[blocks]\ndensity = 2.65"}, {18, "volume = 1.0"}}));
+  ASSERT_EQ(by_volume.size(), 1u);
+  EXPECT_NE(by_volume[0].text.find("as typed, it gives blocks 1000 times too light, and every "
+                                   "energy 1000 times too small. If"),
+            std::string::npos)
+      << by_volume[0].text;
+  // Both kinds of row take it: each is said.
+  const auto both = notes_of(dir, base_with(18, "volume = 1.0\n[[blocks.table]]\nmass = 900.0"));
+  EXPECT_TRUE(both.empty());  // 2650 kg/m³, the default
+  const auto mixed = notes_of(
+      dir, base_with({{16, "[blocks]\ndensity = 2.65"}, {18, "volume = 1.0\n[[blocks.table]]\nmass = 900.0"}}));
+  ASSERT_EQ(mixed.size(), 1u);
+  EXPECT_NE(mixed[0].text.find("as typed, it gives the rows given by volume 1000 times too light, "
+                               "and every energy 1000 times too small; and the rows given by mass "
+                               "1000 times too large in volume"),
+            std::string::npos)
+      << mixed[0].text;
+  // Every row with a density of its own: this one gives none.
+  const auto unused = notes_of(
+      dir, base_with({{16, "[blocks]\ndensity = 2.65"}, {18, "mass = 900.0\ndensity = 2700.0"}}));
+  ASSERT_EQ(unused.size(), 1u);
+  EXPECT_NE(unused[0].text.find("as typed, it gives no block anything: every row has a density "
+                                "of its own"),
+            std::string::npos)
+      << unused[0].text;
   // A density that is not rock in t/m³ either (a digit too many) is not read as one.
   const auto typo = notes_of(dir, base_with(16, "[blocks]\ndensity = 26500.0"));
   ASSERT_EQ(typo.size(), 1u);
@@ -197,6 +227,8 @@ TEST(InputNotes, ADensityInTonnesPerCubicMetreIsNoted) {
                               "it), outside the densities of rock"),
             std::string::npos)
       << rows[0].text;
+  EXPECT_NE(rows[0].text.find("gives blocks 1000 times too light"), std::string::npos)
+      << rows[0].text;  // "a" is given by volume
   // The bounds themselves are rock.
   EXPECT_TRUE(notes_of(dir, base_with(16, "[blocks]\ndensity = 1500.0")).empty());
   EXPECT_TRUE(notes_of(dir, base_with(16, "[blocks]\ndensity = 4000.0")).empty());
