@@ -16,7 +16,7 @@ std::string volume_how(const DesignBlock& b) {
     case DesignBlock::Kind::given:
       return "the design block, given";
     case DesignBlock::Kind::largest:
-      return "the largest block thrown";
+      return "the largest block thrown, by mass";
     case DesignBlock::Kind::percentile:
       break;
   }
@@ -52,9 +52,17 @@ stats::Outcome<DesignBlockValues> resolve_design_block(
       if (thrown.volumes.empty() || thrown.densities.size() != thrown.volumes.size())
         return Result::failure("no block list for the design block rule");
       if (b.kind == DesignBlock::Kind::largest) {
-        const auto it = std::max_element(thrown.volumes.begin(), thrown.volumes.end());
-        v.volume = *it;
-        v.density = thrown.densities[static_cast<std::size_t>(it - thrown.volumes.begin())];
+        // By mass, as E_d = ½ m_d v_d² goes: of blocks of different densities the largest by
+        // volume can be the lighter (3 m³ at 2000 kg/m³ against 2.5 m³ at 3000). With a density
+        // given, mass goes with volume. Of equal masses, the first.
+        auto mass = [&](std::size_t i) {
+          return thrown.volumes[i] * (b.density > 0 ? b.density : thrown.densities[i]);
+        };
+        std::size_t k = 0;
+        for (std::size_t i = 1; i < thrown.volumes.size(); ++i)
+          if (mass(i) > mass(k)) k = i;
+        v.volume = thrown.volumes[k];
+        v.density = thrown.densities[k];
       } else {
         v.volume = stats::percentile(thrown.volumes, b.percentile);
         v.density = std::accumulate(thrown.densities.begin(), thrown.densities.end(), 0.0) /

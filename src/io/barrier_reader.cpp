@@ -46,7 +46,7 @@ design::DesignBlock read_design_block(const TomlTable& t, const std::string& bar
       "{ volume = m³, density = kg/m³ }";
   design::DesignBlock b;
   const toml::node* n = t.find("design_block");
-  if (!n) return b;  // default: the largest block thrown
+  if (!n) return b;  // default: the largest block thrown, by mass
   if (const auto* s = n->as_string()) {
     if (s->get() != "largest") t.fail("design_block", expected);
     return b;

@@ -270,7 +270,7 @@ TEST(BarrierProcedure, TheDesignBlockIsResolvedFromTheBlocksAlone) {
   EXPECT_DOUBLE_EQ(v->mass(), 2700);
   EXPECT_NEAR(v->free_board_diameter, 0.5 * (2 * std::cbrt(0.6 / (4 * std::numbers::pi)) + d_big),
               1e-12);
-  EXPECT_EQ(v->volume_how, "the largest block thrown");
+  EXPECT_EQ(v->volume_how, "the largest block thrown, by mass");
   EXPECT_EQ(v->free_board_diameter_how, "the mean equivalent diameter of the blocks thrown");
   design::DesignBlock p90{design::DesignBlock::Kind::percentile, 0, 0, 90};
   const auto p = design::resolve_design_block(p90, 0.8, thrown);
@@ -287,6 +287,28 @@ TEST(BarrierProcedure, TheDesignBlockIsResolvedFromTheBlocksAlone) {
   const auto g = design::resolve_design_block(given, 1.0, {});
   ASSERT_TRUE(g) << g.error;
   EXPECT_DOUBLE_EQ(g->mass(), 3900);
+}
+
+// "largest" is the heaviest block, for its energy: of mixed densities, the larger volume can be
+// the lighter block. With a density given for the design block, the larger volume is heavier.
+TEST(BarrierProcedure, TheLargestDesignBlockIsTheHeaviest) {
+  model::Block wide, dense;
+  wide.density = 2000;
+  wide.mass = 6000;  // 3 m³
+  dense.density = 3000;
+  dense.mass = 7500;  // 2.5 m³
+  const design::BlocksThrown thrown = design::blocks_thrown({wide, dense});
+  const auto v = design::resolve_design_block(design::DesignBlock{}, std::nullopt, thrown);
+  ASSERT_TRUE(v) << v.error;
+  EXPECT_DOUBLE_EQ(v->volume, 2.5);
+  EXPECT_DOUBLE_EQ(v->density, 3000);
+  EXPECT_DOUBLE_EQ(v->mass(), 7500);
+  design::DesignBlock at_2600;
+  at_2600.density = 2600;
+  const auto d = design::resolve_design_block(at_2600, std::nullopt, thrown);
+  ASSERT_TRUE(d) << d.error;
+  EXPECT_DOUBLE_EQ(d->volume, 3.0);
+  EXPECT_DOUBLE_EQ(d->mass(), 7800);
 }
 
 TEST(BarrierProcedure, ObservedDataGiveTheObservedColumn) {
