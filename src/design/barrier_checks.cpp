@@ -194,6 +194,11 @@ struct OwnCapacity {
   double value;
   const char* unit;
   const char* line;
+  // For a FAIL, which the candidate cannot mend: the requirement judged ("MEL_req"), the
+  // simulated quantity ("energies") and what raises the requirement.
+  const char* required;
+  const char* quantity;
+  const char* remedy;
 };
 
 // `row`: its column of Table 4.2 (none without a design). The line judges P(X > required), as
@@ -219,8 +224,18 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, const 
                                   rejected + ": its tail is no basis to pass");
   else if (at_most(p, *acceptable))
     set(l, CheckStatus::pass, pct(p) + " <= acceptable " + pct(*acceptable));
-  else
-    set(l, CheckStatus::fail, pct(p) + " > acceptable " + pct(*acceptable));
+  else {
+    // The requirement itself is exceeded too often: no candidate mends that, the design values do.
+    set(l, CheckStatus::fail, pct(p) + " > acceptable " + pct(*acceptable) + ": the simulated " +
+                                  own.quantity + " exceed the design's own " + own.required + " " +
+                                  quantity_text(row->threshold, own.unit) +
+                                  " too often, whatever the candidate (" + own.remedy + ")");
+    if (!few.empty()) l.reason += "; the Weibull fit is " + few + ": more throws";
+  }
+  if (row && l.status == CheckStatus::fail && at_least(own.value, row->threshold))
+    l.reason += std::string("; the candidate's own ") + own.name + " " +
+                quantity_text(own.value, own.unit) + " is exceeded with " +
+                pct(weibull_exceedance(fit, own.value));
   if (row && own.value < row->threshold) {
     // Not a PASS beside the FAIL of the candidate's own capacity line: the line still judges
     // the spec's value, and says what it does not cover (in the capacity line's numbers).
@@ -370,11 +385,13 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
     exceedance_line(b, "exceedance.energy",
                     "P(E > MEL_req) from the Weibull fit of the simulated energies", column(1),
                     d.spec.acceptable_energy_exceedance, d.energy, "fit.E",
-                    {"MEL", d.candidate_mel_kJ, "kJ", "energy.mel"});
+                    {"MEL", d.candidate_mel_kJ, "kJ", "energy.mel", "MEL_req", "energies",
+                     "a heavier design block or a higher percentile raises it"});
     exceedance_line(b, "exceedance.height",
                     "P(h > h_i) from the Weibull fit of the simulated passing heights", column(2),
                     d.spec.acceptable_height_exceedance, d.height, "fit.h",
-                    {"height", c.height.value_or(kNaN), "m", "height.interception"});
+                    {"height", c.height.value_or(kNaN), "m", "height.interception", "h_i",
+                     "passing heights", "a higher percentile or a larger free board raises it"});
   }
   fit_line(b, "fit.v", "the speeds", d.speed, &d.v_k, "v_k", "m/s");
   fit_line(b, "fit.h", "the passing heights", d.height, &d.h_k, "h_k", "m");
