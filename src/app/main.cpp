@@ -9,6 +9,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -89,7 +90,8 @@ int main(int argc, char** argv) {
         "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42\n"
         "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
         "Run `pierre <command> --help` for a command's options. Exit codes: 0 ran (check: every\n"
-        "check passed), 1 a check failed (check only), 2 bad input or usage, 3 internal error,\n"
+        "check passed), 1 a check failed (check only), 2 bad input or usage, 3 internal error\n"
+        "or the standard output cannot be written (a closed pipe: `pierre check ... | head`),\n"
         "130 interrupted by Ctrl-C, SIGTERM or SIGHUP (nothing written).");
 
     std::vector<std::unique_ptr<Command>> commands;
@@ -101,6 +103,22 @@ int main(int argc, char** argv) {
 
     // A long option typed with one dash ("-out x") would be read by CLI11 as short options
     // with a value ("-o ut"), and the run would go quietly to ./ut: refuse it and name it.
+    // `pierre help [command]`, as git and cargo take it: the help it names.
+    std::vector<char*> args(argv, argv + argc);
+    std::string help_flag = "--help";
+    if (argc >= 2 && std::string_view(argv[1]) == "help") {
+      args.erase(args.begin() + 1);
+      args.push_back(help_flag.data());
+    }
+    // --version after a command ("pierre run --version") is the program's: CLI11 knows it on
+    // the program alone, and said "found no scenario".
+    for (int i = 1; i < argc && std::string_view(argv[i]) != "--"; ++i)
+      if (std::string_view(argv[i]) == "--version") {
+        args = {argv[0], argv[i]};
+        break;
+      }
+    argc = static_cast<int>(args.size());
+    argv = args.data();
     std::vector<CLI::App*> apps = subs;
     apps.push_back(&app);
     if (const std::string word = single_dash_long_option(argc, argv, apps); !word.empty()) {
@@ -142,7 +160,12 @@ int main(int argc, char** argv) {
       // says "--out is required" (new-user review).
       const auto parsed = std::find_if(subs.begin(), subs.end(), [](CLI::App* c) { return c->parsed(); });
       if (parsed == subs.end()) {
-        if (!said_misspelt_command(argc, argv, subs))
+        if (argc >= 2 && argv[1][0] == '-')  // "pierre -v": an option of no command
+          std::fprintf(stderr,
+                       "pierre: found %s: not an option of pierre; expected a command (run, check "
+                       "or validate), --help or --version (pierre --help)\n",
+                       argv[1]);
+        else if (!said_misspelt_command(argc, argv, subs))
           std::fprintf(stderr, "pierre: found no command, expected run, check or validate (pierre --help)\n");
         return kExitInput;
       }

@@ -691,6 +691,22 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   // A misspelt command is named, with the commands there are.
   EXPECT_NE(pierre("chek " + kScenario).err.find("chek: not a command; expected run, check or validate"),
             std::string::npos);
+  // An option of no command is named too (it was "found no command").
+  const Result dash_v = pierre("-v");
+  EXPECT_EQ(dash_v.code, 2);
+  EXPECT_EQ(dash_v.err, "pierre: found -v: not an option of pierre; expected a command (run, "
+                        "check or validate), --help or --version (pierre --help)\n");
+  // `pierre help [command]` is the help it names; --version after a command is the program's.
+  const Result help = pierre("help"), help_run = pierre("help run"), run_help = pierre("run --help");
+  EXPECT_EQ(help.code, 0) << help.err;
+  EXPECT_EQ(help.out, pierre("--help").out);
+  EXPECT_EQ(help_run.code, 0) << help_run.err;
+  EXPECT_EQ(help_run.out, run_help.out);
+  EXPECT_NE(help_run.out.find("Usage: pierre run"), std::string::npos) << help_run.out;
+  const Result version = pierre("--version"), run_version = pierre("run --version");
+  EXPECT_EQ(run_version.code, 0) << run_version.err;
+  EXPECT_EQ(run_version.out, version.out);
+  EXPECT_EQ(version.out.rfind("pierre ", 0), 0u) << version.out;
   // What is missing is said as every other error (CLI11 said "--out is required"), exit 2.
   const std::pair<std::string, std::string> missing[] = {
       {"run " + kScenario, "pierre run: found no --out, expected --out DIR, the folder the results go to (pierre run --help)\n"},
