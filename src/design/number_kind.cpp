@@ -58,7 +58,8 @@ std::string printed(double v, int decimals, bool scientific, int width) {
 
 // The decimals of the shipped layout's formats (a test holds them together): "#,##0" count,
 // "0.00" speed and length, "#,##0.0" energy, "0.0000" parameter, "0.00E+00" scientific (of the
-// mantissa), "0.00000" small_percent (scientific below 0.00001 %).
+// mantissa), "0.00000" small_percent (scientific below 0.001 %, where five decimals would keep
+// fewer than three digits: 1.29e-05 % printed as 0.00001).
 int decimals_of(NumberKind kind) {
   switch (kind) {
     case NumberKind::count: return 0;
@@ -76,7 +77,7 @@ std::string number_cell(double v, NumberKind kind, int width) {
   if (std::isnan(v)) return right_aligned("-", width);
   if (std::isinf(v)) return right_aligned(v > 0 ? "beyond" : "-inf", width);
   const bool scientific = kind == NumberKind::scientific ||
-                          (kind == NumberKind::small_percent && v != 0 && std::abs(v) < 1e-5);
+                          (kind == NumberKind::small_percent && v != 0 && std::abs(v) < 1e-3);
   return printed(v, scientific ? 2 : decimals_of(kind), scientific, width);
 }
 

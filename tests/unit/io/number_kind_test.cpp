@@ -3,6 +3,7 @@
 // barrier table's E_d reads 1280.2 kJ in both places. A change to either alone fails here.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
@@ -18,7 +19,7 @@ using pierre::design::number_cell;
 const std::filesystem::path kTemplate = PIERRE_SOURCE_DIR "/templates/report.toml";
 
 // The decimals an Excel number format shows for a positive value in its last section ("0.00"
-// → 2, "#,##0.0" → 1, "[=0]0;[<0.00001]0.00E+00;0.00000" → 5; a mantissa's before "E").
+// → 2, "#,##0.0" → 1, "[=0]0;[<0.001]0.00E+00;0.00000" → 5; a mantissa's before "E").
 int format_decimals(const std::string& code) {
   const std::string last = code.substr(code.rfind(';') == std::string::npos ? 0 : code.rfind(';') + 1);
   const auto dot = last.find('.');
@@ -54,6 +55,17 @@ TEST(NumberKind, TheConsoleRoundsAsTheShippedReportLayout) {
   EXPECT_EQ(number_cell(5.4e-19, NumberKind::scientific), "5.40E-19");
   EXPECT_EQ(number_cell(3e-6, NumberKind::small_percent), "3.00E-06");
   EXPECT_EQ(number_cell(0.00217, NumberKind::small_percent), "0.00217");
+  // Three digits at least (a new user read 1.29e-05 % as "0.00001"), switching where the
+  // report's format does: its "[<t]" section.
+  EXPECT_EQ(number_cell(1.29e-5, NumberKind::small_percent), "1.29E-05");
+  EXPECT_EQ(number_cell(0.000999, NumberKind::small_percent), "9.99E-04");
+  const std::string code = t.get("formats", "small_percent");
+  const auto lt = code.find("[<");
+  ASSERT_NE(lt, std::string::npos) << code;
+  const double switch_at = std::stod(code.substr(lt + 2, code.find(']', lt) - lt - 2));
+  EXPECT_NE(number_cell(std::nextafter(switch_at, 0.0), NumberKind::small_percent).find('E'),
+            std::string::npos);
+  EXPECT_EQ(number_cell(switch_at, NumberKind::small_percent).find('E'), std::string::npos);
 }
 
 TEST(NumberKind, ACheckLineIsRoundedByItsUnit) {
