@@ -94,8 +94,8 @@ stats::Outcome<PositivePartKs> positive_part_ks(std::span<const double> sample,
   }
   PositivePartKs out;
   out.statistic = D;
-  out.n = n;
-  out.observed = static_cast<double>(i);
+  out.n = x.size();
+  out.observed = i;
   out.below = below;
   // n, not the values below `below`: the sample CDF is over all n (a censored value is one above
   // the threshold). The supremum over d < below only is a smaller statistic than the full one

@@ -554,13 +554,13 @@ void row_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& rule
       l.value = st->ks->p_value;
       const bool rejected = l.value < l.limit;
       // As a barrier's fit lines: a KS test on a handful of values rejects almost no fit.
-      const bool few = st->ks->observed < static_cast<double>(rules.min_reached);
+      const bool few = st->ks->observed < rules.min_reached;
       l.status = rejected || few ? CheckStatus::warn : CheckStatus::pass;
       const std::string censored =
           st->ks->observed < st->ks->n
-              ? " (" + num(st->ks->observed, 6) + " below the censoring point)"
+              ? " (" + std::to_string(st->ks->observed) + " below the censoring point)"
               : std::string();
-      l.reason = "D = " + num(st->ks->statistic, 3) + ", n = " + num(st->ks->n, 6) +
+      l.reason = "D = " + num(st->ks->statistic, 3) + ", n = " + std::to_string(st->ks->n) +
                  " values above zero" + censored + ", p = " + num(l.value, 3) +
                  (rejected ? " < " : " >= ") +
                  num(l.limit) +

@@ -50,8 +50,8 @@ struct DistanceSample {
 struct PositivePartKs {
   double statistic = 0;
   double p_value = 1;
-  double n = 0;         // the positive values, censored ones included
-  double observed = 0;  // of those, the values below `below`: the ones the test sees
+  std::size_t n = 0;         // the positive values, censored ones included
+  std::size_t observed = 0;  // of those, the values below `below`: the ones the test sees
   double below = 0;     // the supremum is taken for d < below (+infinity: uncensored)
 };
 

@@ -94,6 +94,15 @@ TEST_F(QuarryCli, WorkAreasOutsideTheZonesExitZero) {
     }
   }
   EXPECT_EQ(north["runout"]["count"], 600);
+  // Counts are whole numbers in JSON too (956, not 956.0), and the KS test's are at most the
+  // blocks that ran out beyond the toe.
+  for (const char* key : {"n", "observed"}) {
+    const auto& v = north["runout"]["lognormal_ks"][key];
+    EXPECT_TRUE(v.is_number_unsigned()) << key << " " << v;
+    EXPECT_LE(v.get<double>(), 600) << key;
+  }
+  EXPECT_LE(north["runout"]["lognormal_ks"]["observed"].get<double>(),
+            north["runout"]["lognormal_ks"]["n"].get<double>());
   EXPECT_DOUBLE_EQ(north["height_m"].get<double>(), 20.0);
   const double rd95 = north["runout"]["p95_m"].get<double>();
   EXPECT_GT(rd95, 0.0);
