@@ -25,7 +25,29 @@ std::size_t edits(std::string_view a, std::string_view b) {
   return d[n][m];
 }
 
+// Lower case without '_', '-' and spaces: "free board" and "free_board" alike.
+std::string folded(std::string_view s) {
+  std::string out;
+  for (char c : s)
+    if (c != '_' && c != '-' && c != ' ') out.push_back(lower(c));
+  return out;
+}
+
 }  // namespace
+
+std::vector<std::string> names_beginning_with(std::string_view found,
+                                              const std::vector<std::string>& names) {
+  const std::string f = folded(found);
+  std::vector<std::string> out;
+  if (f.size() < 4) return out;  // "x", "tan": the start of too many names to mean one
+  for (const std::string& name : names) {
+    const std::string n = folded(name);
+    if (n != f && n.starts_with(f) &&
+        std::find(out.begin(), out.end(), name) == out.end())
+      out.push_back(name);
+  }
+  return out;
+}
 
 std::string nearest_name(std::string_view found, const std::vector<std::string>& names) {
   if (found.empty() || found.size() > 200) return {};  // a pasted paragraph is no typo
@@ -48,8 +70,13 @@ std::string nearest_name(std::string_view found, const std::vector<std::string>&
 }
 
 std::string nearest_name_hint(std::string_view found, const std::vector<std::string>& names) {
-  const std::string n = nearest_name(found, names);
-  return n.empty() ? std::string() : "; the nearest is " + n;
+  if (const std::string n = nearest_name(found, names); !n.empty()) return "; the nearest is " + n;
+  const std::vector<std::string> longer = names_beginning_with(found, names);
+  if (longer.empty() || longer.size() > 3) return {};
+  std::string list = longer.front();
+  for (std::size_t i = 1; i < longer.size(); ++i)
+    list += (i + 1 == longer.size() ? " or " : ", ") + longer[i];
+  return (longer.size() > 1 ? "; the nearest are " : "; the nearest is ") + list;
 }
 
 }  // namespace pierre::io::detail

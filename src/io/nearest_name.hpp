@@ -15,7 +15,15 @@ namespace pierre::io::detail {
 // is itself a name.
 std::string nearest_name(std::string_view found, const std::vector<std::string>& names);
 
-// "; the nearest is observation_lines", or "" when there is no nearest name.
+// The names that begin with `found` (letter case, '_', '-' and spaces ignored; `found` of 4
+// characters or more): "freeboard" for free_board_diameter, "elongation" for elongation_mel and
+// elongation_sel. A name the edits above do not reach, as it is much longer.
+std::vector<std::string> names_beginning_with(std::string_view found,
+                                              const std::vector<std::string>& names);
+
+// "; the nearest is observation_lines", else the names beginning so ("; the nearest is
+// free_board_diameter", "; the nearest are elongation_mel or elongation_sel", up to three), or
+// "" when there is neither.
 std::string nearest_name_hint(std::string_view found, const std::vector<std::string>& names);
 
 }  // namespace pierre::io::detail

@@ -179,7 +179,20 @@ std::optional<TomlTable> TomlTable::subtable(std::string_view key,
   const toml::node* n = find(key);
   if (!n) return std::nullopt;
   const auto* t = n->as_table();
-  if (!t) fail(key, "a table");
+  if (!t) {
+    // `profile = "profile.csv"` for a table that takes a file: the form that was meant.
+    const auto* s = n->as_string();
+    if (s && std::find(allowed.begin(), allowed.end(), "file") != allowed.end()) {
+      const std::string path = s->get().empty() ? "..." : s->get();
+      const std::string f = field(key);
+      const std::string inline_form = fmt::format("{} = {{ file = \"{}\" }}", key, path);
+      fail(key, f.find_first_of(".[") == std::string::npos
+                    ? fmt::format("a table: [{}] with file = \"{}\" on the line below it, or {}", f,
+                                  path, inline_form)
+                    : "a table, e.g. " + inline_form);
+    }
+    fail(key, "a table");
+  }
   return TomlTable(file_, *t, field(key), line_of(*n), allowed);
 }
 

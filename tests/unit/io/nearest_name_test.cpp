@@ -38,6 +38,23 @@ TEST(NearestName, NothingWhenNoneIsCloseOrTwoAreAsClose) {
   EXPECT_EQ(nearest_name_hint("source", kRoot), "; the nearest is sources");
 }
 
+// A name typed short, too many edits from the long one it begins (a new user's "freeboard" and
+// a candidate's "elongation"): the names beginning so, up to three, '_' and case ignored.
+TEST(NearestName, ANameThatBeginsALongerOne) {
+  const std::vector<std::string> barrier = {"name", "line", "free_board_diameter", "design_block"};
+  EXPECT_EQ(nearest_name("freeboard", barrier), "");  // 10 edits: too far for the typo rule
+  EXPECT_EQ(nearest_name_hint("freeboard", barrier), "; the nearest is free_board_diameter");
+  EXPECT_EQ(nearest_name_hint("Free-Board", barrier), "; the nearest is free_board_diameter");
+  const std::vector<std::string> candidate = {"mel", "sel", "elongation_mel", "elongation_sel"};
+  EXPECT_EQ(nearest_name_hint("elongation", candidate),
+            "; the nearest are elongation_mel or elongation_sel");
+  EXPECT_EQ(nearest_name_hint("me", candidate), "; the nearest is mel");  // the typo rule first
+  // Too short to mean one name, or the start of too many: nothing.
+  EXPECT_EQ(nearest_name_hint("ele", candidate), "");
+  EXPECT_EQ(pierre::io::detail::names_beginning_with("size", {"size_a", "size_b", "size_c", "size_d"}).size(), 4u);
+  EXPECT_EQ(nearest_name_hint("size", {"size_a", "size_b", "size_c", "size_d"}), "");
+}
+
 // In the messages: an unknown key and an undefined material end with the nearest name.
 TEST(NearestName, SaidAfterTheValidNames) {
   pierre::test::TempDir dir;

@@ -225,6 +225,29 @@ TEST(ScenarioSyntax, RowsAfterAnInlineTableSayToWriteATable) {
   }
 }
 
+// A file named where a table of a file was asked (`profile = "profile.csv"`): the table's form is
+// said, at the root as [profile] and inline inside a quarry section.
+TEST(ScenarioSyntax, AFileGivenForATableSaysTheTablesForm) {
+  TempDir dir;
+  auto expected_of = [&](const std::string& text) {
+    try {
+      (void)load_scenario(dir.write("s.toml", text), kRules);
+    } catch (const InputError& e) {
+      return e.field() + ": " + e.expected();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(expected_of("profile = \"profile.csv\"\n" + pierre::test::base_with({{8, ""}, {9, ""}})),
+            "profile: a table: [profile] with file = \"profile.csv\" on the line below it, or "
+            "profile = { file = \"profile.csv\" }");
+  std::string quarry = pierre::test::read_file(PIERRE_SOURCE_DIR "/examples/quarry-austria/scenario.toml");
+  const std::string inline_file = "profile = { file = \"profile-kloech.csv\" }";
+  ASSERT_NE(quarry.find(inline_file), std::string::npos);
+  quarry.replace(quarry.find(inline_file), inline_file.size(), "profile = \"profile-kloech.csv\"");
+  EXPECT_EQ(expected_of(quarry),
+            "quarries[0].profile: a table, e.g. profile = { file = \"profile-kloech.csv\" }");
+}
+
 // The two slips toml++ describes in its own terms get a hint in ours: a decimal comma cuts a
 // number short ("saw ','"), and a string without its closing quote runs into the line's end.
 TEST(ScenarioSyntax, ADecimalCommaAndAnUnclosedStringAreHinted) {
