@@ -382,30 +382,29 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
   auto rock = [](double d) { return d >= kRockDensityMin && d <= kRockDensityMax; };
   auto by_mass = [&](std::size_t i) { return where[i].size_field.ends_with("mass"); };
   // What a density 1000 times too small does depends on what it turns into: a volume's mass, or
-  // a mass's volume (the block's size: its radius R enters c_stop·R, Eq 3.13, the roughness's
-  // size factor, Eq 6.6, and the free board).
-  constexpr std::string_view light = "blocks 1000 times too light, and every energy 1000 times too small";
+  // a mass's volume (the block's size: its radius R enters the restitution, Eq 6.4, the inertia,
+  // the roughness's size factor, Eq 6.6, the stop criterion c_stop·R, Eq 3.13, and the free board).
   constexpr std::string_view large =
-      "blocks 1000 times too large in volume for their masses (10 times in diameter), and with "
-      "their radius the stop criterion c_stop·R, the roughness and the free board";
+      "1000 times too large in volume for their masses (10 times in radius), and with the radius "
+      "the restitution, the roughness, the stop criterion c_stop·R and the free board";
   auto effect_on = [&](bool volume_rows, bool mass_rows) -> std::string {
     if (volume_rows && mass_rows)
-      return fmt::format("the rows given by volume {}; and the rows given by mass {}",
-                         light.substr(std::string_view("blocks ").size()),
-                         large.substr(std::string_view("blocks ").size()));
-    if (volume_rows) return std::string(light);
-    if (mass_rows) return std::string(large);
-    return "no block anything: every row has a density of its own";
+      return fmt::format("the blocks given by volume 1000 times too light, and their energies "
+                         "1000 times too small; and the blocks given by mass {}",
+                         large);
+    if (volume_rows) return "blocks 1000 times too light, and every energy 1000 times too small";
+    return fmt::format("blocks {}", large);
   };
   const std::size_t before = notes.size();
   // The mass or volume as typed in row i: what a note on it names and [confirmed] restates.
   auto typed_size = [&](std::size_t i) {
     return where[i].size_field.ends_with("mass") ? groups[i].mass : groups[i].volume;
   };
-  if (b.has("density") && !rock(shared)) {
-    bool volume_rows = false, mass_rows = false;  // that take this density
-    for (std::size_t i = 0; i < groups.size(); ++i)
-      if (!where[i].own_density) (by_mass(i) ? mass_rows : volume_rows) = true;
+  bool volume_rows = false, mass_rows = false;  // that take [blocks].density
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    if (!where[i].own_density) (by_mass(i) ? mass_rows : volume_rows) = true;
+  // (A density no row takes changes nothing: no note, and nothing doubted.)
+  if (b.has("density") && !rock(shared) && (volume_rows || mass_rows)) {
     notes.push_back({b.file(), line_of(*b.find("density")), b.field("density"),
                      fmt::format("the block density {:g} kg/m³ is {}", shared,
                                  density_slip(shared, effect_on(volume_rows, mass_rows))),
