@@ -34,6 +34,7 @@ BlocksThrown blocks_thrown(const std::vector<model::Block>& blocks) {
     out.volumes.push_back(b.volume());
     out.densities.push_back(b.density);
     out.diameters.push_back(b.diameter());
+    out.masses.push_back(b.mass);
   }
   return out;
 }
@@ -49,14 +50,16 @@ stats::Outcome<DesignBlockValues> resolve_design_block(
       break;
     case DesignBlock::Kind::largest:
     case DesignBlock::Kind::percentile: {
-      if (thrown.volumes.empty() || thrown.densities.size() != thrown.volumes.size())
+      if (thrown.volumes.empty() || thrown.densities.size() != thrown.volumes.size() ||
+          thrown.masses.size() != thrown.volumes.size())
         return Result::failure("no block list for the design block rule");
       if (b.kind == DesignBlock::Kind::largest) {
         // By mass, as E_d = ½ m_d v_d² goes: of blocks of different densities the largest by
         // volume can be the lighter (3 m³ at 2000 kg/m³ against 2.5 m³ at 3000). With a density
-        // given, mass goes with volume. Of equal masses, the first.
+        // given (the library's; the reader gives none with "largest"), mass goes with volume. Of
+        // equal masses, the first.
         auto mass = [&](std::size_t i) {
-          return thrown.volumes[i] * (b.density > 0 ? b.density : thrown.densities[i]);
+          return b.density > 0 ? thrown.volumes[i] : thrown.masses[i];
         };
         std::size_t k = 0;
         for (std::size_t i = 1; i < thrown.volumes.size(); ++i)
@@ -74,7 +77,7 @@ stats::Outcome<DesignBlockValues> resolve_design_block(
   }
   v.volume_how = volume_how(b);
   v.density_how = b.density > 0 ? "given with the design block"
-                  : b.kind == DesignBlock::Kind::largest ? "the largest block's"
+                  : b.kind == DesignBlock::Kind::largest ? "the heaviest block's"
                                                          : "the mean of the blocks'";
   if (free_board_diameter) {
     v.free_board_diameter = *free_board_diameter;

@@ -20,11 +20,12 @@ struct DesignBlock {
   double percentile = 95;  // of the block volumes (Kind::percentile)
 };
 
-// Every block thrown, one entry each (the same index in the three lists).
+// Every block thrown, one entry each (the same index in the four lists).
 struct BlocksThrown {
   std::vector<double> volumes;    // m³
   std::vector<double> densities;  // kg/m³
   std::vector<double> diameters;  // m, equivalent sphere
+  std::vector<double> masses;     // kg, as given (volume × density may differ by a rounding)
 };
 
 // The lists of a scenario's blocks (sim::Scenario::blocks): each block once, whatever the throws.

@@ -662,7 +662,7 @@ TEST_F(Check, ValidateSaysTheDesignBlockAndFreeBoardDiameter) {
   const Result v = pierre("validate " + kData + "design.toml");
   EXPECT_EQ(v.code, 0) << v.err;
   EXPECT_NE(v.out.find("a design (no candidate); design block 1.2 m³ × 2650 kg/m³ = 3180 kg (the "
-                       "largest block thrown, by mass; density the largest block's), D_f = 1.015 m (the "
+                       "largest block thrown, by mass; density the heaviest block's), D_f = 1.015 m (the "
                        "mean equivalent diameter of the blocks thrown)\n"),
             std::string::npos)
       << v.out;

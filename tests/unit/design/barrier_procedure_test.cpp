@@ -31,6 +31,7 @@ design::BarrierSample sample(std::size_t n = kN, std::uint64_t seed = 7) {
   s.not_reached = 100;
   s.blocks.volumes = {0.5, 1.0, 1.5, 2.0};
   s.blocks.densities = {2600, 2650, 2700, 2800};
+  s.blocks.masses = {0.5 * 2600, 1.0 * 2650, 1.5 * 2700, 2.0 * 2800};
   s.blocks.diameters = {1.0, 1.2, 1.4, 1.6};
   s.throws = 10;
   return s;
@@ -235,7 +236,7 @@ TEST(BarrierProcedure, DesignBlockRulesAndDefaultFreeBoard) {
   auto out = design::design_barrier(b, test::thesis_2015(), test::etag027(), sample(), std::nullopt, 0, 1);
   ASSERT_TRUE(out.design);
   EXPECT_DOUBLE_EQ(out.design->design_volume, 2.0);
-  EXPECT_DOUBLE_EQ(out.design->design_density, 2800);  // the largest block's own
+  EXPECT_DOUBLE_EQ(out.design->design_density, 2800);  // the heaviest block's own
   EXPECT_DOUBLE_EQ(out.design->free_board_diameter, 1.3);  // mean of 1.0, 1.2, 1.4, 1.6
   EXPECT_DOUBLE_EQ(out.design->free_board, 0.65);
   EXPECT_DOUBLE_EQ(out.design->m_d, 2.0 * 2800 * 1.05);
@@ -309,6 +310,19 @@ TEST(BarrierProcedure, TheLargestDesignBlockIsTheHeaviest) {
   ASSERT_TRUE(d) << d.error;
   EXPECT_DOUBLE_EQ(d->volume, 3.0);
   EXPECT_DOUBLE_EQ(d->mass(), 7800);
+  // Of equal masses as given, the first, whatever volume × density rounds to (3500 / 2600 × 2600
+  // is a rounding above 3500).
+  model::Block a, c;
+  a.mass = c.mass = 3500;
+  a.density = 2650;
+  c.density = 2600;
+  ASSERT_GT(c.mass / c.density * c.density, c.mass);
+  for (const auto& order : {std::vector{a, c}, std::vector{c, a}}) {
+    const auto t = design::resolve_design_block(design::DesignBlock{}, std::nullopt,
+                                                design::blocks_thrown(order));
+    ASSERT_TRUE(t) << t.error;
+    EXPECT_EQ(t->density, order.front().density);
+  }
 }
 
 TEST(BarrierProcedure, ObservedDataGiveTheObservedColumn) {

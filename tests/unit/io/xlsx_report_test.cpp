@@ -791,7 +791,7 @@ TEST(XlsxReport, ResolvedBarrierInputsShowTheirValuesAndOrigins) {
   b.design_density = 2650;
   b.free_board_diameter = 1.1875;
   b.how["volume"] = "the largest block thrown, by mass";
-  b.how["density"] = "the largest block's";
+  b.how["density"] = "the heaviest block's";
   b.how["free_board_diameter"] = "the mean equivalent diameter of the blocks thrown";
   const fs::path xlsx = dir.path() / "report.xlsx";
   const auto tpl = io::load_report_template(kTemplate);
