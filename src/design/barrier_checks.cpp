@@ -232,7 +232,7 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, const 
                                   " too often, whatever the candidate (" + own.remedy + ")");
     if (!few.empty()) l.reason += "; the Weibull fit is " + few + ": more throws";
   }
-  if (row && l.status == CheckStatus::fail && at_least(own.value, row->threshold))
+  if (row && !std::isnan(p) && l.status == CheckStatus::fail && at_least(own.value, row->threshold))
     l.reason += std::string("; the candidate's own ") + own.name + " " +
                 quantity_text(own.value, own.unit) + " is exceeded with " +
                 pct(weibull_exceedance(fit, own.value));
@@ -386,12 +386,15 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
                     "P(E > MEL_req) from the Weibull fit of the simulated energies", column(1),
                     d.spec.acceptable_energy_exceedance, d.energy, "fit.E",
                     {"MEL", d.candidate_mel_kJ, "kJ", "energy.mel", "MEL_req", "energies",
-                     "a heavier design block or a higher percentile raises it"});
+                     "the rule set's percentile and partial factors (data_quality) raise it, and a "
+                     "heavier design block"});
     exceedance_line(b, "exceedance.height",
                     "P(h > h_i) from the Weibull fit of the simulated passing heights", column(2),
                     d.spec.acceptable_height_exceedance, d.height, "fit.h",
                     {"height", c.height.value_or(kNaN), "m", "height.interception", "h_i",
-                     "passing heights", "a higher percentile or a larger free board raises it"});
+                     "passing heights",
+                     "the rule set's percentile and partial factors (data_quality) raise it, and a "
+                     "larger free board"});
   }
   fit_line(b, "fit.v", "the speeds", d.speed, &d.v_k, "v_k", "m/s");
   fit_line(b, "fit.h", "the passing heights", d.height, &d.h_k, "h_k", "m");

@@ -322,8 +322,9 @@ TEST(BarrierCheckLines, ACandidateBelowTheRequirementHasItsOwnExceedanceInTheRea
   EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::fail);
   EXPECT_EQ(line(lines, "exceedance.height").reason,
             "2 % > acceptable 1 %: the simulated passing heights exceed the design's own h_i "
-            "4.00 m too often, whatever the candidate (a higher percentile or a larger free board "
-            "raises it); and the candidate's own height 3.50 m is below the required "
+            "4.00 m too often, whatever the candidate (the rule set's percentile and partial "
+            "factors (data_quality) raise it, and a larger free board); and the candidate's own "
+            "height 3.50 m is below the required "
             "4.00 m (height.interception) and is exceeded still more often, with 4.68 %");
   EXPECT_NEAR(std::exp(-1.75 * 1.75), 0.0468, 5e-5);
 }
@@ -341,15 +342,15 @@ TEST(BarrierCheckLines, AFailedExceedanceSaysTheCandidateCannotMendIt) {
   // S(2000 kJ) = exp(-2²) = 1.83 %.
   EXPECT_EQ(e.reason,
             "0.1 % > acceptable 0.05 %: the simulated energies exceed the design's own MEL_req "
-            "1500.0 kJ too often, whatever the candidate (a heavier design block or a higher "
-            "percentile raises it); the candidate's own MEL 2000.0 kJ is exceeded with 1.83 %");
+            "1500.0 kJ too often, whatever the candidate (the rule set's percentile and partial "
+            "factors (data_quality) raise it, and a heavier design block); the candidate's own MEL "
+            "2000.0 kJ is exceeded with 1.83 %");
   EXPECT_NEAR(std::exp(-4.0), 0.0183, 5e-5);
   d.energy.weibull->used = 6;  // fewer than the rule set's 30
   lines = design::barrier_check_lines(d, rules());
   const auto& few = line(lines, "exceedance.energy");
   EXPECT_EQ(few.status, CheckStatus::fail);
-  EXPECT_NE(few.reason.find("too often, whatever the candidate (a heavier design block or a "
-                            "higher percentile raises it); the Weibull fit is from 6 values, "
+  EXPECT_NE(few.reason.find("and a heavier design block); the Weibull fit is from 6 values, "
                             "fewer than the 30"),
             std::string::npos)
       << few.reason;
