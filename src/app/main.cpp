@@ -90,9 +90,10 @@ int main(int argc, char** argv) {
         "  pierre run examples/vaujany-2d/scenario.toml --out results/vaujany --seed 42\n"
         "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
         "Run `pierre <command> --help` for a command's options. Exit codes: 0 ran (check: every\n"
-        "check passed), 1 a check failed (check only), 2 bad input or usage, 3 internal error\n"
-        "or the standard output cannot be written (a closed pipe: `pierre check ... | head`),\n"
-        "130 interrupted by Ctrl-C, SIGTERM or SIGHUP (nothing written).");
+        "check passed), 1 a check failed (check only, even when the standard output is lost),\n"
+        "2 bad input or usage, 3 internal error or the standard output lost (a closed pipe:\n"
+        "`pierre check ... | head -1` may give 3), 130 interrupted by Ctrl-C, SIGTERM or SIGHUP\n"
+        "(nothing written).");
 
     std::vector<std::unique_ptr<Command>> commands;
     commands.push_back(make_run_command());
@@ -103,12 +104,21 @@ int main(int argc, char** argv) {
 
     // A long option typed with one dash ("-out x") would be read by CLI11 as short options
     // with a value ("-o ut"), and the run would go quietly to ./ut: refuse it and name it.
-    // `pierre help [command]`, as git and cargo take it: the help it names.
+    // `pierre help [command]`, as git and cargo take it: the help it names (what follows the
+    // command is left out, as --help would ignore it).
     std::vector<char*> args(argv, argv + argc);
     std::string help_flag = "--help";
     if (argc >= 2 && std::string_view(argv[1]) == "help") {
-      args.erase(args.begin() + 1);
-      args.push_back(help_flag.data());
+      if (argc == 2) {
+        args = {argv[0], help_flag.data()};
+      } else if (std::any_of(subs.begin(), subs.end(),
+                             [&](CLI::App* c) { return c->check_name(argv[2]); })) {
+        args = {argv[0], argv[2], help_flag.data()};
+      } else {
+        std::fprintf(stderr, "pierre help: found %s, expected a command: run, check or validate\n",
+                     argv[2]);
+        return kExitInput;
+      }
     }
     // --version after a command ("pierre run --version") is the program's: CLI11 knows it on
     // the program alone, and said "found no scenario".
@@ -159,8 +169,10 @@ int main(int argc, char** argv) {
       // Said as every other error is (found, expected), with the command's help to read; CLI11
       // says "--out is required" (new-user review).
       const auto parsed = std::find_if(subs.begin(), subs.end(), [](CLI::App* c) { return c->parsed(); });
-      if (parsed == subs.end()) {
-        if (argc >= 2 && argv[1][0] == '-')  // "pierre -v": an option of no command
+      // "pierre -- run": the command after "--" is a word, not a command (CLI11: "A subcommand
+      // is required", said of the command it then half-took).
+      if (parsed == subs.end() || std::string_view(e.what()).starts_with("A subcommand")) {
+        if (argc >= 2 && argv[1][0] == '-' && std::string_view(argv[1]) != "--")  // "pierre -v"
           std::fprintf(stderr,
                        "pierre: found %s: not an option of pierre; expected a command (run, check "
                        "or validate), --help or --version (pierre --help)\n",

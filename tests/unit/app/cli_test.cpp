@@ -703,6 +703,15 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(help_run.code, 0) << help_run.err;
   EXPECT_EQ(help_run.out, run_help.out);
   EXPECT_NE(help_run.out.find("Usage: pierre run"), std::string::npos) << help_run.out;
+  // What `help` does not know is said as a misspelt command is, exit 2 (not the program's help).
+  for (const char* word : {"nonsense", "-v", "help", "--"}) {
+    const Result r = pierre(std::string("help ") + word);
+    EXPECT_EQ(r.code, 2) << word;
+    EXPECT_EQ(r.err, std::string("pierre help: found ") + word +
+                         ", expected a command: run, check or validate\n");
+  }
+  // A command after "--" is no command (CLI11 said "found no A subcommand").
+  EXPECT_EQ(pierre("-- run").err, "pierre: found no command, expected run, check or validate (pierre --help)\n");
   const Result version = pierre("--version"), run_version = pierre("run --version");
   EXPECT_EQ(run_version.code, 0) << run_version.err;
   EXPECT_EQ(run_version.out, version.out);
