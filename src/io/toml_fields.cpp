@@ -46,18 +46,23 @@ long line_of(const toml::node& n) { return static_cast<long>(n.source().begin.li
 
 // A key as TOML writes it: bare when it may be (A–Z, a–z, 0–9, _ and -), else in quotes, so
 // that an empty key or one with a space or a dot reads as what it is ("" = 1, "a.b" = 1).
+// A TOML basic string: in quotes, with '"' and '\' escaped (a Windows path pasted back reads
+// as written).
+std::string toml_string(std::string_view s) {
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
 std::string written_key(std::string_view k) {
   const bool bare = !k.empty() && std::all_of(k.begin(), k.end(), [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
            c == '-';
   });
-  if (bare) return std::string(k);
-  std::string q = "\"";
-  for (char c : k) {
-    if (c == '"' || c == '\\') q += '\\';
-    q += c;
-  }
-  return q + "\"";
+  return bare ? std::string(k) : toml_string(k);
 }
 
 TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::string prefix,
@@ -183,11 +188,11 @@ std::optional<TomlTable> TomlTable::subtable(std::string_view key,
     // `profile = "profile.csv"` for a table that takes a file: the form that was meant.
     const auto* s = n->as_string();
     if (s && std::find(allowed.begin(), allowed.end(), "file") != allowed.end()) {
-      const std::string path = s->get().empty() ? "..." : s->get();
+      const std::string path = toml_string(s->get().empty() ? "..." : s->get());
       const std::string f = field(key);
-      const std::string inline_form = fmt::format("{} = {{ file = \"{}\" }}", key, path);
+      const std::string inline_form = fmt::format("{} = {{ file = {} }}", key, path);
       fail(key, f.find_first_of(".[") == std::string::npos
-                    ? fmt::format("a table: [{}] with file = \"{}\" on the line below it, or {}", f,
+                    ? fmt::format("a table: [{}] with file = {} on the line below it, or {}", f,
                                   path, inline_form)
                     : "a table, e.g. " + inline_form);
     }

@@ -246,6 +246,10 @@ TEST(ScenarioSyntax, AFileGivenForATableSaysTheTablesForm) {
   quarry.replace(quarry.find(inline_file), inline_file.size(), "profile = \"profile-kloech.csv\"");
   EXPECT_EQ(expected_of(quarry),
             "quarries[0].profile: a table, e.g. profile = { file = \"profile-kloech.csv\" }");
+  // The path as TOML writes it: a Windows path pasted back is read as typed.
+  EXPECT_EQ(expected_of("profile = 'C:\\data\\p\"1.csv'\n" + pierre::test::base_with({{8, ""}, {9, ""}})),
+            "profile: a table: [profile] with file = \"C:\\\\data\\\\p\\\"1.csv\" on the line below "
+            "it, or profile = { file = \"C:\\\\data\\\\p\\\"1.csv\" }");
 }
 
 // The two slips toml++ describes in its own terms get a hint in ours: a decimal comma cuts a
