@@ -102,8 +102,6 @@ int main(int argc, char** argv) {
     std::vector<CLI::App*> subs;
     for (auto& c : commands) subs.push_back(c->add_to(app));
 
-    // A long option typed with one dash ("-out x") would be read by CLI11 as short options
-    // with a value ("-o ut"), and the run would go quietly to ./ut: refuse it and name it.
     // `pierre help [command]`, as git and cargo take it: the help it names (what follows the
     // command is left out, as --help would ignore it).
     std::vector<char*> args(argv, argv + argc);
@@ -129,6 +127,8 @@ int main(int argc, char** argv) {
       }
     argc = static_cast<int>(args.size());
     argv = args.data();
+    // A long option typed with one dash ("-out x") would be read by CLI11 as short options
+    // with a value ("-o ut"), and the run would go quietly to ./ut: refuse it and name it.
     std::vector<CLI::App*> apps = subs;
     apps.push_back(&app);
     if (const std::string word = single_dash_long_option(argc, argv, apps); !word.empty()) {
