@@ -38,12 +38,14 @@ int lost_stdout(bool writes_results = false) {
   return pierre::app::kExitInternal;
 }
 
+bool is_command(const char* word, const std::vector<CLI::App*>& subs) {
+  return std::any_of(subs.begin(), subs.end(), [&](CLI::App* c) { return c->check_name(word); });
+}
+
 // A misspelt command (CLI11 says only that one is required): named, with the commands there
 // are. False when the first argument is an option or a command.
 bool said_misspelt_command(int argc, char** argv, const std::vector<CLI::App*>& subs) {
-  if (argc < 2 || argv[1][0] == '-' ||
-      std::any_of(subs.begin(), subs.end(), [&](CLI::App* c) { return c->check_name(argv[1]); }))
-    return false;
+  if (argc < 2 || argv[1][0] == '-' || is_command(argv[1], subs)) return false;
   std::fprintf(stderr, "%s: not a command; expected run, check or validate (pierre --help)\n", argv[1]);
   return true;
 }
@@ -109,8 +111,7 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::string_view(argv[1]) == "help") {
       if (argc == 2) {
         args = {argv[0], help_flag.data()};
-      } else if (std::any_of(subs.begin(), subs.end(),
-                             [&](CLI::App* c) { return c->check_name(argv[2]); })) {
+      } else if (is_command(argv[2], subs)) {
         args = {argv[0], argv[2], help_flag.data()};
       } else {
         std::fprintf(stderr, "pierre help: found %s, expected a command: run, check or validate\n",

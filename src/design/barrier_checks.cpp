@@ -195,10 +195,10 @@ struct OwnCapacity {
   const char* unit;
   const char* line;
   // For a FAIL, which the candidate cannot mend: the requirement judged ("MEL_req"), the
-  // simulated quantity ("energies") and what raises the requirement.
+  // simulated quantity ("energies") and what raises the requirement besides the rule set.
   const char* required;
   const char* quantity;
-  const char* remedy;
+  const char* raised_by;
 };
 
 // `row`: its column of Table 4.2 (none without a design). The line judges P(X > required), as
@@ -229,7 +229,9 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, const 
     set(l, CheckStatus::fail, pct(p) + " > acceptable " + pct(*acceptable) + ": the simulated " +
                                   own.quantity + " exceed the design's own " + own.required + " " +
                                   quantity_text(row->threshold, own.unit) +
-                                  " too often, whatever the candidate (" + own.remedy + ")");
+                                  " too often, whatever the candidate (the rule set's percentile "
+                                  "and partial factors (data_quality) raise it, and " +
+                                  own.raised_by + ")");
     if (!few.empty()) l.reason += "; the Weibull fit is " + few + ": more throws";
   }
   if (row && !std::isnan(p) && l.status == CheckStatus::fail && at_least(own.value, row->threshold))
@@ -386,15 +388,12 @@ std::vector<CheckLine> barrier_check_lines(const BarrierDesign& d, const Barrier
                     "P(E > MEL_req) from the Weibull fit of the simulated energies", column(1),
                     d.spec.acceptable_energy_exceedance, d.energy, "fit.E",
                     {"MEL", d.candidate_mel_kJ, "kJ", "energy.mel", "MEL_req", "energies",
-                     "the rule set's percentile and partial factors (data_quality) raise it, and a "
-                     "heavier design block"});
+                     "a heavier design block"});
     exceedance_line(b, "exceedance.height",
                     "P(h > h_i) from the Weibull fit of the simulated passing heights", column(2),
                     d.spec.acceptable_height_exceedance, d.height, "fit.h",
                     {"height", c.height.value_or(kNaN), "m", "height.interception", "h_i",
-                     "passing heights",
-                     "the rule set's percentile and partial factors (data_quality) raise it, and a "
-                     "larger free board"});
+                     "passing heights", "a larger free board"});
   }
   fit_line(b, "fit.v", "the speeds", d.speed, &d.v_k, "v_k", "m/s");
   fit_line(b, "fit.h", "the passing heights", d.height, &d.h_k, "h_k", "m");
