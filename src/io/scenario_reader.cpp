@@ -186,9 +186,9 @@ std::vector<model::Material> read_materials(const TomlTable& top, Presets& prese
     if (auto bad = detail::unwritable_text(name))
       throw InputError(top.file(), line, top.field("materials"), "a material name: " + *bad,
                        std::string(detail::kWritableText));
-    TomlTable t(top.file(), *tbl, mats->field(name), line_of(*node),
-                {"preset", "normal_energy", "normal_energy_k", "tangential_energy",
-                 "tangential_energy_k", "roughness", "friction_angle"});
+    const TomlTable t =
+        *mats->subtable(name, {"preset", "normal_energy", "normal_energy_k", "tangential_energy",
+                               "tangential_energy_k", "roughness", "friction_angle"});
     model::Material m;
     bool from_preset = false;
     if (auto p = t.string("preset")) {

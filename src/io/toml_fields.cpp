@@ -67,8 +67,26 @@ std::string written_key(std::string_view k) {
 
 TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::string prefix,
                      long line, std::initializer_list<std::string_view> allowed)
-    : file_(std::move(file)), t_(&t), prefix_(std::move(prefix)), line_(line) {
+    : TomlTable(std::move(file), t, std::move(prefix), line, allowed, nullptr) {}
+
+namespace {
+
+// The header a table's keys are written under: [simulation], [materials.face], [[sources]].
+std::string header_of(std::string_view prefix) {
+  if (prefix.empty() || prefix.back() != ']') return fmt::format("[{}]", prefix);
+  return fmt::format("[[{}]]", prefix.substr(0, prefix.rfind('[')));
+}
+
+}  // namespace
+
+TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::string prefix,
+                     long line, std::initializer_list<std::string_view> allowed,
+                     Sections sections)
+    : file_(std::move(file)), t_(&t), prefix_(std::move(prefix)), line_(line),
+      sections_(std::move(sections)) {
   if (allowed.size() == 0) return;
+  if (prefix_.empty())
+    sections_ = std::make_shared<const std::vector<std::string>>(allowed.begin(), allowed.end());
   const toml::key* worst = nullptr;
   for (auto&& [k, v] : t) {
     if (std::find(allowed.begin(), allowed.end(), k.str()) != allowed.end()) continue;
@@ -77,10 +95,18 @@ TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::stri
   if (worst) {
     std::string names;
     for (std::string_view a : allowed) names += (names.empty() ? "" : ", ") + std::string(a);
-    throw InputError(file_, static_cast<long>(worst->source().begin.line),
-                     field(written_key(worst->str())), "an unknown key",
-                     fmt::format("one of {}{}", names,
-                                 nearest_name_hint(worst->str(), {allowed.begin(), allowed.end()})));
+    const std::string key(worst->str());
+    std::string hint = nearest_name_hint(key, {allowed.begin(), allowed.end()});
+    if (sections_ && !prefix_.empty() &&
+        std::find(sections_->begin(), sections_->end(), key) != sections_->end()) {
+      const std::string header = header_of(prefix_);
+      hint = fmt::format(
+          "; {} is a section of its own, and TOML puts every key below the {} header into it: "
+          "write {} above the first header, or as a [{}] table of its own",
+          key, header, key, key);
+    }
+    throw InputError(file_, static_cast<long>(worst->source().begin.line), field(written_key(key)),
+                     "an unknown key", fmt::format("one of {}{}", names, hint));
   }
 }
 
@@ -120,6 +146,24 @@ std::optional<std::filesystem::path> TomlTable::file_path(std::string_view key,
 }
 
 void TomlTable::missing(std::string_view key, std::string_view expected) const {
+  // A section missing from the root may stand below another section's header, where TOML put
+  // it (`profile = "p.csv"` at the end of the file, under the last [[observation_lines]]).
+  if (prefix_.empty()) {
+    const auto misplaced = [&](const toml::table& t, std::string header) {
+      if (const toml::node* n = t.get(key))
+        throw InputError(file_, line_of(*n), field(key), "nothing",
+                         fmt::format("{}; the {} on this line stands below the {} header, and "
+                                     "TOML puts it into that table: write {} above the first "
+                                     "header, or as a [{}] table of its own",
+                                     expected, key, header, key, key));
+    };
+    for (auto&& [k, v] : *t_) {
+      const std::string name(k.str());
+      if (const auto* t = v.as_table()) misplaced(*t, fmt::format("[{}]", name));
+      if (const auto* a = v.as_array(); a && a->is_array_of_tables())
+        for (const toml::node& e : *a) misplaced(*e.as_table(), fmt::format("[[{}]]", name));
+    }
+  }
   throw InputError(file_, line_, field(key), "nothing", std::string(expected));
 }
 
@@ -198,7 +242,7 @@ std::optional<TomlTable> TomlTable::subtable(std::string_view key,
     }
     fail(key, "a table");
   }
-  return TomlTable(file_, *t, field(key), line_of(*n), allowed);
+  return TomlTable(file_, *t, field(key), line_of(*n), allowed, sections_);
 }
 
 const toml::array* TomlTable::array_of_tables(std::string_view key) const {
@@ -214,7 +258,7 @@ TomlTable TomlTable::element(std::string_view key, const toml::array& a, std::si
                              std::initializer_list<std::string_view> allowed) const {
   const toml::node& node = *a.get(i);
   return TomlTable(file_, *node.as_table(), fmt::format("{}[{}]", field(key), i), line_of(node),
-                   allowed);
+                   allowed, sections_);
 }
 
 const toml::array* TomlTable::array(std::string_view key) const {

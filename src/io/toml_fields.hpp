@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <initializer_list>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -72,10 +73,17 @@ class TomlTable {
   }
 
  private:
+  // The file's own sections (the root's allowed keys), handed down to its tables: a section's
+  // name typed below another section's header is told so (TOML puts it in that section).
+  using Sections = std::shared_ptr<const std::vector<std::string>>;
+  TomlTable(std::filesystem::path file, const toml::table& t, std::string prefix, long line,
+            std::initializer_list<std::string_view> allowed, Sections sections);
+
   std::filesystem::path file_;
   const toml::table* t_;
   std::string prefix_;
   long line_;
+  Sections sections_;
 };
 
 // TOML text parsed; InputError at the syntax error's line.

@@ -1,6 +1,7 @@
 // Every input error of the scenario format (docs/scenario-format.md): each case writes a bad
 // input, loads it, and asserts the file, the line, the field and the value found that the
 // InputError carries, and the message format "<file>:<line>: <field>: found <value>, expected".
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -12,6 +13,8 @@
 
 namespace {
 
+using ::testing::HasSubstr;
+using ::testing::Not;
 using pierre::io::InputError;
 using pierre::io::load_scenario;
 using pierre::test::base_lines;
@@ -250,6 +253,37 @@ TEST(ScenarioSyntax, AFileGivenForATableSaysTheTablesForm) {
   EXPECT_EQ(expected_of("profile = 'C:\\data\\p\"1.csv'\n" + pierre::test::base_with({{8, ""}, {9, ""}})),
             "profile: a table: [profile] with file = \"C:\\\\data\\\\p\\\"1.csv\" on the line below "
             "it, or profile = { file = \"C:\\\\data\\\\p\\\"1.csv\" }");
+}
+
+// A section's key typed below another section's header is in that section for TOML: the
+// message says so, whether the other section rejects it as unknown or the section is then
+// missing from the root.
+TEST(ScenarioSyntax, ASectionBelowAnotherHeaderIsToldSo) {
+  TempDir dir;
+  auto error_of = [&](const std::string& text) {
+    try {
+      (void)load_scenario(dir.write("s.toml", text), kRules);
+    } catch (const InputError& e) {
+      return std::to_string(e.line()) + " " + e.field() + ": " + e.expected();
+    }
+    return std::string("no error");
+  };
+  const std::string points = "points = [[0.0, 10.0, \"rock\"], [10.0, 0.0, \"rock\"], [20.0, 0.0, \"\"]]";
+  // Below [simulation], which reads its keys strictly.
+  EXPECT_THAT(error_of(pierre::test::base_with({{7, "profile = { " + points + " }"}, {8, ""}, {9, ""}})),
+              HasSubstr("; profile is a section of its own, and TOML puts every key below the "
+                        "[simulation] header into it: write profile above the first header, or "
+                        "as a [profile] table of its own"));
+  // At the end of the file, below the last [[observation_lines]]: the profile is found missing
+  // first, and the message points at the line where it stands.
+  const std::string at_end =
+      pierre::test::base_with({{8, ""}, {9, ""}}) + "profile = { " + points + " }\n";
+  EXPECT_EQ(error_of(at_end),
+            "27 profile: a [profile] table with file = \"...\" or points = [...]; the profile on "
+            "this line stands below the [[observation_lines]] header, and TOML puts it into that "
+            "table: write profile above the first header, or as a [profile] table of its own");
+  // A key that is no section gets no such hint.
+  EXPECT_THAT(error_of(pierre::test::base_with(7, "seeds = 1")), Not(HasSubstr("section")));
 }
 
 // The two slips toml++ describes in its own terms get a hint in ours: a decimal comma cuts a
