@@ -42,7 +42,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                   "percent", "small_percent", "time",      "angle",    "material",    "general", "date",
                   "open_class", "open_energy", "info_energy"};
   s["titles"] = {"summary",      "run",          "barriers",       "lines",
-                 "checks",       "inputs",       "simulation",     "materials",
+                 "barrier_classes", "checks",   "inputs",       "simulation",     "materials",
                  "blocks",       "sources",      "profile_vertices", "observation_lines", "barrier_inputs",
                  "scenario_text", "barrier",     "statistics",     "bootstrap",
                  "design",       "factors",      "exceedance",     "barrier_checks",
@@ -63,13 +63,14 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
                  "quarry_average_note", "resolved", "defaulted", "from_class",
                  "open_class_capacity", "input_notes", "quarry_all", "quarry_all_note", "travel_time",
-                 "travel_time_value", "runout_quarry_note", "failing", "candidate_passes",
-                 "candidate_fails", "candidate_warns", "verify_note", "passing_height_note",
+                 "travel_time_value", "runout_quarry_note", "failing", "no_candidate",
+                 "verify_note", "passing_height_note",
                  "translational_energy_note", "blocks_sheet"};
   s["basis"] = {"model", "not_modelled", "statistics", "barriers", "quarries"};
-  s["headings.barriers"] = {"name",    "line",    "chainage", "energy_class",
-                            "class_mel", "class_sel", "mel_req", "sel_req",
-                            "interception_height", "rules"};
+  s["headings.barriers"] = {"name",      "line",      "chainage", "v_k",          "h_k",
+                            "v_d",       "e_d",       "free_board", "interception_height",
+                            "rules",     "mel_req",   "sel_req",  "energy_class", "class_mel",
+                            "class_sel", "candidate", "verdict",  "verdict_lines"};
   s["headings.lines"] = {"name", "chainage", "count", "not_reached", "quantity", "mean", "p50",
                          "p95",  "max",      "speed", "height",      "energy"};
   s["headings.stop_reasons"] = {"reason", "count", "share", "meaning"};
@@ -170,6 +171,8 @@ const std::map<std::string, Keys, std::less<>>& retired_sections() {
   static const std::map<std::string, Keys, std::less<>> r = {
       // Before the Summary's observation lines showed mean, P50, P95 and max of each quantity.
       {"headings.lines", {"speed_mean", "speed_p95", "height_p95", "energy_p95", "energy_max"}},
+      // Before the Summary gave each candidate barrier's kit and verdict in its own table.
+      {"labels", {"candidate_passes", "candidate_fails", "candidate_warns"}},
   };
   return r;
 }

@@ -121,38 +121,84 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
   return r;
 }
 
-// The recommended barriers, and how each energy class was chosen.
+// The barriers in two tables: the design values (the console's), then what each must reach,
+// the smallest energy class that does, the kit checked against it and the verdict of the
+// barrier's check lines; under them how each class was chosen.
 Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
   if (d_.barriers.empty()) return r;
   r = table_title(ws, r, "barriers");
   headings(ws, r++, 0, "barriers",
-           {"name", "line", "rules", "chainage", "energy_class", "class_mel", "class_sel",
-            "mel_req", "sel_req", "interception_height"},
-           45);
+           {"name", "line", "rules", "chainage", "v_k", "h_k", "v_d", "e_d", "free_board",
+            "interception_height"},
+           60);  // h_i's heading takes four lines in a column 12 wide
   for (const auto& b : d_.barriers) {
-    text(ws, r, 0, b.spec.name);
-    text(ws, r, 1, b.spec.line);
-    text(ws, r, 2, b.rules_name.empty() ? b.spec.rules : b.rules_name, wrap());
+    const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
+    text(ws, r, 0, b.spec.name, wrap());
+    text(ws, r, 1, b.spec.line, wrap());
+    text(ws, r, 2, rules, wrap());
     num(ws, r, 3, b.chainage, number("coordinate", 1));
+    num(ws, r, 4, b.v_k.value, number("speed", 1));
+    num(ws, r, 5, b.h_k.value, number("length", 1));
+    num(ws, r, 6, b.v_d, number("speed", 1));
+    num(ws, r, 7, b.E_d_kJ, number("energy", 1));
+    num(ws, r, 8, b.free_board, number("length", 1));
+    num(ws, r, 9, b.h_i, number("length", 1));
+    fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
+    ++r;
+  }
+
+  r = table_title(ws, r, "barrier_classes");
+  headings(ws, r++, 0, "barriers",
+           {"name", "mel_req", "sel_req", "energy_class", "class_mel", "class_sel", "candidate",
+            "verdict", "verdict_lines"},
+           45);
+  const Row first = r;
+  for (const auto& b : d_.barriers) {
+    text(ws, r, 0, b.spec.name, wrap());
+    // A capacity the rule set does not design on is information, not a requirement: a class
+    // whose SEL is below an SEL_req of a MEL design read as a failure.
+    num(ws, r, 1, b.MEL_req_kJ, number(design::needs_mel(b.design_on) ? "energy" : "info_energy", 1));
+    num(ws, r, 2, b.SEL_req_kJ, number(design::needs_sel(b.design_on) ? "energy" : "info_energy", 1));
     if (b.energy_class) {
       // An open-ended class ("> 4500 kJ") shows as such: its bounds are not its capacity, the
       // kit declares its own (the note below says what it must reach).
       const bool open = b.energy_class->open_ended;
-      num(ws, r, 4, b.energy_class->number, number(open ? "open_class" : "count", 1));
-      num(ws, r, 5, b.energy_class->mel_kJ, number(open ? "open_energy" : "energy", 1));
-      num(ws, r, 6, b.energy_class->sel_kJ, number(open ? "open_energy" : "energy", 1));
+      num(ws, r, 3, b.energy_class->number, number(open ? "open_class" : "count", 1));
+      num(ws, r, 4, b.energy_class->mel_kJ, number(open ? "open_energy" : "energy", 1));
+      num(ws, r, 5, b.energy_class->sel_kJ, number(open ? "open_energy" : "energy", 1));
     } else {
-      text(ws, r, 4, t_.get("labels", "none"), centred());
+      text(ws, r, 3, t_.get("labels", "none"), centred());
     }
-    // A capacity the rule set does not design on is information, not a requirement: a class
-    // whose SEL is below an SEL_req of a MEL design read as a failure.
-    num(ws, r, 7, b.MEL_req_kJ, number(design::needs_mel(b.design_on) ? "energy" : "info_energy", 1));
-    num(ws, r, 8, b.SEL_req_kJ, number(design::needs_sel(b.design_on) ? "energy" : "info_energy", 1));
-    num(ws, r, 9, b.h_i, number("length", 1));
-    const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
-    fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
+    // The kit the candidate declares, and the barrier's verdict: its worst check line.
+    std::string kit = t_.get("labels", "no_candidate");
+    if (b.spec.candidate) {
+      const design::CandidateBarrier& c = *b.spec.candidate;
+      kit.clear();
+      auto add = [&](const std::string& part) { kit += (kit.empty() ? "" : ", ") + part; };
+      if (c.energy_class) add("class " + std::to_string(*c.energy_class));
+      if (!std::isnan(b.candidate_mel_kJ)) add("MEL " + design::number_text(b.candidate_mel_kJ, 6) + " kJ");
+      if (!std::isnan(b.candidate_sel_kJ)) add("SEL " + design::number_text(b.candidate_sel_kJ, 6) + " kJ");
+      if (c.height) add(fmt::format("height {:.2f} m", *c.height));
+    }
+    std::string fails, warns;
+    for (const auto& l : d_.checks) {
+      if (l.subject != b.spec.name) continue;
+      if (l.status == design::CheckStatus::fail) fails += (fails.empty() ? "" : ", ") + l.id;
+      if (l.status == design::CheckStatus::warn) warns += (warns.empty() ? "" : ", ") + l.id;
+    }
+    const design::CheckStatus worst = !fails.empty()   ? design::CheckStatus::fail
+                                      : !warns.empty() ? design::CheckStatus::warn
+                                                       : design::CheckStatus::pass;
+    std::string lines;
+    if (!fails.empty()) lines = "FAIL " + fails;
+    if (!warns.empty()) lines += (lines.empty() ? "WARN " : "; WARN ") + warns;
+    text(ws, r, 6, kit, wrap());
+    text(ws, r, 7, std::string(design::to_string(worst)), centred_bold());
+    text(ws, r, 8, lines, wrap());
+    fit_row(ws, r, {{&b.spec.name, 16}, {&kit, 26}, {&lines, 44}});
     ++r;
   }
+  status_colours(ws, first, r - 1, 7);
   // How each class was chosen: on which capacity, from which table (its source).
   // Over the print area's width (kNoteWidth).
   for (const auto& b : d_.barriers)
@@ -166,30 +212,6 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
                                               design::number_text(b.SEL_req_kJ, 4))
                                 : std::string()),
            wrapped_note());
-  // The kit each candidate barrier checks, and its verdict from its own check lines: the table
-  // above gives what is required, not what is offered.
-  for (const auto& b : d_.barriers) {
-    if (!b.spec.candidate) continue;
-    const design::CandidateBarrier& c = *b.spec.candidate;
-    std::string kit;
-    auto add = [&](const std::string& part) { kit += (kit.empty() ? "" : ", ") + part; };
-    if (c.energy_class) add("class " + std::to_string(*c.energy_class));
-    if (!std::isnan(b.candidate_mel_kJ)) add("MEL " + design::number_text(b.candidate_mel_kJ, 6) + " kJ");
-    if (!std::isnan(b.candidate_sel_kJ)) add("SEL " + design::number_text(b.candidate_sel_kJ, 6) + " kJ");
-    if (c.height) add(fmt::format("height {:.2f} m", *c.height));
-    std::string fails, warns;
-    for (const auto& l : d_.checks) {
-      if (l.subject != b.spec.name) continue;
-      if (l.status == design::CheckStatus::fail) fails += (fails.empty() ? "" : ", ") + l.id;
-      if (l.status == design::CheckStatus::warn) warns += (warns.empty() ? "" : ", ") + l.id;
-    }
-    std::string s = t_.get("labels", fails.empty() ? "candidate_passes" : "candidate_fails");
-    s = replace_all(replace_all(s, "{barrier}", b.spec.name), "{candidate}", kit);
-    s = replace_all(s, "{lines}", fails);
-    s = replace_all(s, "{warns}",
-                    warns.empty() ? "" : replace_all(t_.get("labels", "candidate_warns"), "{lines}", warns));
-    paragraph(ws, r++, 0, kNoteLast, kNoteWidth, s, wrapped_note());
-  }
   return r;
 }
 

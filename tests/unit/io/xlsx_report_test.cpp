@@ -40,6 +40,11 @@ const fs::path kTemplate = PIERRE_SOURCE_DIR "/templates/report.toml";
 const fs::path kRules = PIERRE_SOURCE_DIR "/rules";
 const fs::path kSmall = PIERRE_TEST_DATA "/small/scenario.toml";
 
+// A heading of the Summary's barrier tables, as the shipped layout writes it.
+std::string tpl_heading(const char* key) {
+  return io::load_report_template(kTemplate).get("headings.barriers", key);
+}
+
 // ---- the report data -------------------------------------------------------------------
 
 struct Fixture {
@@ -267,7 +272,8 @@ TEST(XlsxReport, WorkbookStructureChartsAndConditionalFormats) {
   // Summary (sheet1): status cells coloured by conditional formats, not by static fills.
   const std::string s1 = zip_entry(xlsx, "xl/worksheets/sheet1.xml", dir.path());
   EXPECT_NE(s1.find("<conditionalFormatting"), std::string::npos);
-  EXPECT_EQ(occurrences(s1, "type=\"containsText\""), 3u);
+  // Two status columns: the barriers' verdicts and the check lines', each PASS, FAIL, WARN.
+  EXPECT_EQ(occurrences(s1, "type=\"containsText\""), 6u);
   for (const char* w : {"PASS", "FAIL", "WARN"})
     EXPECT_NE(s1.find(std::string("NOT(ISERROR(SEARCH(\"") + w), std::string::npos) << w;
 
@@ -467,13 +473,16 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
             std::string::npos)
       << cell(sum, *stops + 7, 0)->text;
 
-  // The recommended barrier: MEL_req and h_i as numbers.
+  // The recommended barrier: its design values, then MEL_req and the class, as numbers.
   const auto rec = find_row(sum, 0, "Screen A");
   ASSERT_TRUE(rec);
   EXPECT_EQ(number(sum, *rec, 3), 60.0);
-  EXPECT_EQ(number(sum, *rec, 4), 7.0);  // the class the fixture recommends
-  EXPECT_EQ(number(sum, *rec, 7), 1386.9);
+  EXPECT_EQ(number(sum, *rec, 7), 1066.9);
   EXPECT_EQ(number(sum, *rec, 9), 4.02);
+  const auto req = find_row(sum, 0, "Screen A", *rec + 1);
+  ASSERT_TRUE(req);
+  EXPECT_EQ(number(sum, *req, 1), 1386.9);
+  EXPECT_EQ(number(sum, *req, 3), 7.0);  // the class the fixture recommends
 
   // The barrier sheet: Table 4.1's row and the factors.
   const Sheet& bar = sheets["Screen A"];
@@ -622,11 +631,13 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   // must declare (it showed 8, MEL 4,500.0 and SEL 1,500.0 beside SEL_req 1,066.9 and a larger
   // MEL_req, as if the class fell short of its own requirement).
   const Sheet& sum = sheets.at("Summary");
-  const auto rec = find_row(sum, 0, "Screen A");
+  const auto classes = find_row(sum, 6, tpl_heading("candidate"));
+  ASSERT_TRUE(classes);
+  const auto rec = find_row(sum, 0, "Screen A", *classes);
   ASSERT_TRUE(rec);
-  EXPECT_EQ(cell(sum, *rec, 4)->text, "8+") << dump(sum, *rec);
-  EXPECT_EQ(cell(sum, *rec, 5)->text, "> 4,500.0") << dump(sum, *rec);
-  EXPECT_EQ(cell(sum, *rec, 6)->text, "> 1,500.0") << dump(sum, *rec);
+  EXPECT_EQ(cell(sum, *rec, 3)->text, "8+") << dump(sum, *rec);
+  EXPECT_EQ(cell(sum, *rec, 4)->text, "> 4,500.0") << dump(sum, *rec);
+  EXPECT_EQ(cell(sum, *rec, 5)->text, "> 1,500.0") << dump(sum, *rec);
   bool declared = false;
   for (const auto& row : sum)
     for (const auto& c : row)
@@ -663,43 +674,67 @@ TEST(XlsxReport, ACapacityTheRulesDoNotDesignOnIsInformation) {
   const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);  // as shown
   ASSERT_EQ(r.status, 0) << r.output;
   const Sheet& sum = sheets.at("Summary");
-  const auto a = find_row(sum, 0, "Screen A"), b = find_row(sum, 0, "Screen B");
+  const auto classes = find_row(sum, 6, tpl_heading("candidate"));
+  ASSERT_TRUE(classes);
+  const auto a = find_row(sum, 0, "Screen A", *classes), b = find_row(sum, 0, "Screen B", *classes);
   ASSERT_TRUE(a && b);
-  // Columns 7 and 8: MEL_req and SEL_req (1,386.9 and 1,066.9 kJ in the fixture).
-  EXPECT_EQ(cell(sum, *a, 7)->text, "1,386.9") << dump(sum, *a);
-  EXPECT_EQ(cell(sum, *a, 8)->text, "1,066.9 (info)") << dump(sum, *a);
-  EXPECT_EQ(cell(sum, *b, 7)->text, "1,386.9 (info)") << dump(sum, *b);
-  EXPECT_EQ(cell(sum, *b, 8)->text, "1,066.9") << dump(sum, *b);
+  // Columns 1 and 2 of the class table: MEL_req and SEL_req (1,386.9 and 1,066.9 kJ in the
+  // fixture).
+  EXPECT_EQ(cell(sum, *a, 1)->text, "1,386.9") << dump(sum, *a);
+  EXPECT_EQ(cell(sum, *a, 2)->text, "1,066.9 (info)") << dump(sum, *a);
+  EXPECT_EQ(cell(sum, *b, 1)->text, "1,386.9 (info)") << dump(sum, *b);
+  EXPECT_EQ(cell(sum, *b, 2)->text, "1,066.9") << dump(sum, *b);
 }
 
-// The Summary's barrier table gives what is required; under it each candidate barrier names the
-// kit it checks and its verdict from its own check lines (a reviewer found the class-6 kit only
-// on the Inputs sheet, and the table the same whether it passed or failed).
+// The Summary gives each barrier's design values, then in a table of its own what it must reach,
+// the kit checked against it and the verdict of its check lines, coloured (a reviewer took the
+// required class for the kit, whose verdict stood only in a grey note under the table).
 TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
   PIERRE_NEED_PROGRAM("soffice");
   TempDir dir;
   auto f = make_fixture();
   f->data.barriers.push_back(f->data.barriers.at(0));
   f->data.barriers.back().spec.name = "Screen B";
+  f->data.barriers.push_back(f->data.barriers.at(0));
+  f->data.barriers.back().spec.name = "Screen C";
+  f->data.barriers.back().spec.candidate.reset();
   f->data.checks = {line("Screen A", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass),
                     line("Screen A", "sample.size", 6.7, 5, "%", design::CheckStatus::warn),
                     line("Screen B", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass),
                     line("Screen B", "height.interception", 3.5, 4.02, "m", design::CheckStatus::fail),
                     line("Screen B", "elongation", 5, 9, "m", design::CheckStatus::fail),
-                    line("Screen B", "sample.size", 6.7, 5, "%", design::CheckStatus::warn)};
+                    line("Screen B", "sample.size", 6.7, 5, "%", design::CheckStatus::warn),
+                    line("Screen C", "reach", 445, 30, "", design::CheckStatus::pass)};
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
   ASSERT_EQ(r.status, 0) << r.output;
-  std::vector<std::string> said;
-  for (const auto& row : sheets.at("Summary"))
-    for (const auto& c : row)
-      if (c.text.find(": the candidate (") != std::string::npos) said.push_back(c.text);
-  ASSERT_EQ(said.size(), 2u);
-  EXPECT_EQ(said[0], "Screen A: the candidate (class 6, MEL 3000 kJ, SEL 1000 kJ, height 3.50 m): "
-                     "no check line FAILs; WARN sample.size.");
-  EXPECT_EQ(said[1], "Screen B: the candidate (class 6, MEL 3000 kJ, SEL 1000 kJ, height 3.50 m) "
-                     "FAILS height.interception, elongation; WARN sample.size.");
+  const Sheet& sum = sheets.at("Summary");
+  // The design values: E_d and h_i as the fixture's barrier has them.
+  const auto values = find_row(sum, 7, tpl_heading("e_d"));
+  ASSERT_TRUE(values);
+  const auto a_values = find_row(sum, 0, "Screen A", *values);
+  ASSERT_TRUE(a_values);
+  EXPECT_EQ(cell(sum, *a_values, 7)->text, "1,066.9") << dump(sum, *a_values);  // E_d_kJ = 1066.9
+  EXPECT_EQ(cell(sum, *a_values, 9)->text, "4.02") << dump(sum, *a_values);      // h_i = 4.02
+  // The class table: the kit, the verdict and the lines behind it.
+  const auto classes = find_row(sum, 6, tpl_heading("candidate"));
+  ASSERT_TRUE(classes);
+  struct Expected {
+    std::string name, kit, verdict, lines;
+  };
+  const std::string kit = "class 6, MEL 3000 kJ, SEL 1000 kJ, height 3.50 m";
+  for (const Expected& e :
+       {Expected{"Screen A", kit, "WARN", "WARN sample.size"},
+        Expected{"Screen B", kit, "FAIL", "FAIL height.interception, elongation; WARN sample.size"},
+        Expected{"Screen C", "none given (design only)", "PASS", ""}}) {
+    const auto row = find_row(sum, 0, e.name, *classes);
+    ASSERT_TRUE(row) << e.name;
+    EXPECT_EQ(cell(sum, *row, 6)->text, e.kit) << dump(sum, *row);
+    EXPECT_EQ(cell(sum, *row, 7)->text, e.verdict) << dump(sum, *row);
+    const auto lines = cell(sum, *row, 8);
+    EXPECT_EQ(lines ? lines->text : std::string(), e.lines) << dump(sum, *row);
+  }
 }
 
 // The Summary states what the numbers rest on: the model and what it leaves out, the run's own
