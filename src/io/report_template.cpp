@@ -63,7 +63,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
                  "quarry_average_note", "resolved", "defaulted", "from_class",
                  "open_class_capacity", "input_notes", "quarry_all", "quarry_all_note", "travel_time",
-                 "travel_time_value", "runout_quarry_note", "failing", "no_candidate",
+                 "travel_time_value", "runout_quarry_note", "runout_note", "failing", "no_candidate",
                  "verify_note", "passing_height_note",
                  "translational_energy_note", "blocks_sheet"};
   s["basis"] = {"model", "not_modelled", "statistics", "barriers", "quarries"};

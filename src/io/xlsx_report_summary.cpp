@@ -111,12 +111,12 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
       label(key);
       num(ws, r++, 2, v, number("length", 2));
     }
-    // Beside the quarry table's RD, these read as a danger zone: say what they are.
-    if (d_.quarry)
-      text(ws, r++, 0,
-           replace_all(t_.get("labels", "runout_quarry_note"), "{sections}",
-                       std::to_string(d_.quarry_sections.size())),
-           note());
+    // What they are measured from; beside the quarry table's RD they read as a danger zone.
+    text(ws, r++, 0,
+         d_.quarry ? replace_all(t_.get("labels", "runout_quarry_note"), "{sections}",
+                                 std::to_string(d_.quarry_sections.size()))
+                   : t_.get("labels", "runout_note"),
+         note());
   }
   return r;
 }
