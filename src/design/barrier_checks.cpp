@@ -49,7 +49,7 @@ void within_interval(CheckLine& l, double value, double upper, const char* unit,
                      double confidence) {
   if (l.status != CheckStatus::pass || !std::isfinite(upper) || !(value < upper)) return;
   l.status = CheckStatus::warn;
-  l.reason += ", but " + within_interval_text("the requirement's", confidence, quantity_text(upper, unit)) +
+  l.reason += ", but " + within_interval_text("the requirement's", confidence, "up to " + quantity_text(upper, unit)) +
               std::string(kWithinUncertainty);
 }
 

@@ -64,9 +64,9 @@ std::string throws_needed_text(const SampleNeeded& needed) {
   return ", i.e. throws = " + number_text(needed.throws, 9) + " per block and source";
 }
 
-std::string within_interval_text(std::string_view whose, double confidence, const std::string& upper) {
+std::string within_interval_text(std::string_view whose, double confidence, const std::string& bound) {
   return "within " + std::string(whose) + " " + number_text(100 * confidence) +
-         " % bootstrap interval (up to " + upper + ")";
+         " % bootstrap interval (" + bound + ")";
 }
 
 }  // namespace pierre::design

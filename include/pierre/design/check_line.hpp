@@ -71,9 +71,10 @@ SampleNeeded sample_needed(double trajectories, std::uint32_t throws, double rel
 std::string throws_needed_text(const SampleNeeded& needed);
 
 // A PASS whose margin lies inside the bootstrap interval of what it is judged against, barriers'
-// capacities and quarries' zones alike: "within <whose> 90 % bootstrap interval (up to
-// <upper>)", and what follows from it.
-std::string within_interval_text(std::string_view whose, double confidence, const std::string& upper);
+// capacities and quarries' zones alike: "within <whose> 90 % bootstrap interval (<bound>)",
+// bound "up to 25.1 m" (a limit to stay above) or "down to 20.4 m" (one to stay below), and
+// what follows from it.
+std::string within_interval_text(std::string_view whose, double confidence, const std::string& bound);
 inline constexpr std::string_view kWithinUncertainty =
     ": the margin is within the sampling uncertainty; more throws settle it";
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 
+#include "pierre/design/number_kind.hpp"
 #include "pierre/design/number_text.hpp"
 #include "support/builders.hpp"
 #include "support/seeded_samples.hpp"
@@ -623,6 +624,33 @@ TEST(QuarryZones, ObservedValuesAgainstTheGoverningDistances) {
   ASSERT_TRUE(none);
   EXPECT_EQ(none->status, CheckStatus::not_applicable);
   EXPECT_EQ(none->reason, "no observed P95");
+}
+
+// Covered by RD_gov, but by less than RD_gov's own sampling uncertainty: observed P95 above the
+// lower end of its bootstrap interval is a WARN that says so, as a work area's zone line is (a
+// reviewer found Preg 2's 21.90 m passing against 21.92 m, with an interval from 20.42 m).
+TEST(QuarryZones, AnObservedRunoutWithinTheZonesIntervalWarns) {
+  auto close = section("Close", one_to(100));  // RD_gov = 95.05 m
+  close.observed.rd.p95 = 94.9;
+  auto clear = section("Clear", one_to(100));
+  clear.observed.rd.p95 = 60;
+  const auto out = design_quarry({close, clear}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const QuarryRow& row = out.design->rows[0];
+  ASSERT_TRUE(row.rd_interval);
+  const double lower = row.rd_interval->lower * row.height;
+  ASSERT_LT(lower, 94.9);  // the case itself: the interval reaches below what was seen
+  ASSERT_GT(lower, 60.0);
+  const CheckLine* near = find(*out.design, "Close", "observed.RD");
+  ASSERT_TRUE(near);
+  EXPECT_EQ(near->status, CheckStatus::warn);
+  EXPECT_EQ(near->reason, "observed P95 94.90 m <= RD_gov 95.05 m (P95 4.75 H), but within RD_gov's "
+                          "90 % bootstrap interval (down to " + pierre::design::quantity_text(lower, "m") +
+                              "): the margin is within the sampling uncertainty; more throws "
+                              "settle it");
+  const CheckLine* far = find(*out.design, "Clear", "observed.RD");
+  ASSERT_TRUE(far);
+  EXPECT_EQ(far->status, CheckStatus::pass) << far->reason;
 }
 
 TEST(QuarryZones, GroupsPoolSectionsAndAveragesTakeRows) {
