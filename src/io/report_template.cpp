@@ -159,7 +159,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                                 "empirical_cdf", "fitted_cdf", "observed_x", "observed_cdf",
                                 "histogram", "source",     "x",           "z",
                                 "profile",   "paths",      "toe",         "danger_zone",
-                                "first_impact_zone", "work_areas"};
+                                "first_impact_zone", "work_areas", "bench"};
   for (const auto& c : kCharts) s["chart." + c] = kChartKeys;
   return s;
 }
@@ -181,7 +181,7 @@ const Keys kColours = {"heading_font", "heading_fill", "title_font", "note_font"
                        "pass_fill",    "fail_font",    "fail_fill",  "warn_font", "warn_fill",
                        "profile",      "paths",        "lines",      "barriers",  "histogram",
                        "weibull",      "lognormal",    "empirical",  "observed",  "toe",
-                       "danger_zone",  "first_impact_zone", "work_areas"};
+                       "danger_zone",  "first_impact_zone", "work_areas", "bench"};
 
 std::string joined(const Keys& keys) {
   std::string s;

@@ -228,7 +228,8 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
   text(ws, data_row++, 0, s.spec.name, section());
   const Row head = data_row;
   std::size_t k = 0;
-  for (const char* key : {"profile", "paths", "toe", "danger_zone", "first_impact_zone", "work_areas"}) {
+  for (const char* key :
+       {"profile", "paths", "toe", "danger_zone", "first_impact_zone", "work_areas", "bench"}) {
     text(ws, head, static_cast<Col>(2 * k), h("quarry_chart", key), heading());
     text(ws, head + 1, static_cast<Col>(2 * k), h("quarry_chart", "x"), heading());
     text(ws, head + 1, static_cast<Col>(2 * k + 1), h("quarry_chart", "z"), heading());
@@ -256,9 +257,10 @@ Row Report::quarry_section_chart(lxw_worksheet* ws, const std::string& sheet, Ro
   return last + 1;
 }
 
-// The marks on a section's ground: the toe and the ends of the danger zone and of the
-// first-impact zone (vertical segments, a series each), and the work areas (named points);
-// returns the row after the last one written (r0 when none is).
+// The marks on a section's ground: the toe, the ends of the danger zone and of the
+// first-impact zone and the planned catch bench's outer edge (vertical segments, a series
+// each), and the work areas (named points); returns the row after the last one written (r0
+// when none is).
 Row Report::quarry_section_marks(lxw_worksheet* ws, const std::string& sheet, lxw_chart* chart,
                                  Row r0, const design::QuarrySectionResult& s,
                                  const geometry::Profile& prof) {
@@ -286,6 +288,10 @@ Row Report::quarry_section_marks(lxw_worksheet* ws, const std::string& sheet, lx
        LXW_CHART_LINE_DASH_SOLID);
   mark(8, g.toe.x + g.direction * s.first_impact_zone, "first_impact_zone",
        t_.colour("first_impact_zone"), 2.0f, LXW_CHART_LINE_DASH_SOLID);
+  // The bench's edge: where bench.retention counts a block as retained.
+  if (s.spec.bench_width)
+    mark(12, g.toe.x + g.direction * *s.spec.bench_width, "bench", t_.colour("bench"), 1.75f,
+         LXW_CHART_LINE_DASH_ROUND_DOT);
   // Work areas: points on the floor.
   Row wr = r0;
   for (const auto& w : s.spec.work_areas) {

@@ -215,7 +215,8 @@ TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
   // Face A: its section + RD and ID histograms and CDFs (5); East: 2 sections + 4. No
   // scenario profile here.
   EXPECT_EQ(charts.size(), 11u);
-  std::size_t with_markers = 0;
+  std::size_t with_markers = 0, with_bench = 0;
+  const std::string bench = "<c:v>" + tpl.get("headings.quarry_chart", "bench") + "</c:v>";
   for (const auto& c : charts) {
     SCOPED_TRACE(c);
     const std::string xml = zip_entry(xlsx, c, dir.path());
@@ -229,9 +230,14 @@ TEST(XlsxQuarryReport, SheetsAndChartsInTheWorkbook) {
       // Each named, so that two work areas are not two like triangles.
       EXPECT_NE(xml.find("<a:t>crusher</a:t>"), std::string::npos);
       EXPECT_NE(xml.find("<a:t>office</a:t>"), std::string::npos);
+      // Face A plans a catch bench: its edge is drawn, dotted, where bench.retention counts.
+      EXPECT_NE(xml.find(bench), std::string::npos);
+      EXPECT_NE(xml.find("<a:prstDash val=\"sysDot\"/>"), std::string::npos);
     }
+    with_bench += xml.find(bench) != std::string::npos;
   }
   EXPECT_EQ(with_markers, 1u);  // the work areas of Face A, as points
+  EXPECT_EQ(with_bench, 1u);    // the East sections plan no bench
 
   const std::string wb = zip_entry(xlsx, "xl/workbook.xml", dir.path());
   std::vector<std::string> order;
