@@ -125,6 +125,13 @@ void describe_derivations(BarrierDesign& d, const BarrierRuleSet& rules,
   };
   d.how["gamma_E_MEL"] = cited("gamma_E_MEL", "γE,MEL", d.gamma_E_MEL);
   d.how["gamma_E_SEL"] = cited("gamma_E_SEL", "γE,SEL", d.gamma_E_SEL);
+  const std::string elongation =
+      "; the elongation check asks a distance to the protected object of at least γd times the "
+      "kit's declared elongation";
+  if (d.gamma_d_MEL)
+    d.how["gamma_d_MEL"] = cited("gamma_d_MEL", "γd,MEL", *d.gamma_d_MEL) + elongation;
+  if (d.gamma_d_SEL)
+    d.how["gamma_d_SEL"] = cited("gamma_d_SEL", "γd,SEL", *d.gamma_d_SEL) + elongation;
   d.how["free_board"] = "f = max(" + number_text(rules.free_board_abs) + " m, " +
                         number_text(rules.free_board_rel) + " · D_f) (" + rules.name + ")";
   d.how["h_d"] = "h_k · γh";
@@ -371,6 +378,8 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   d.gamma_M = dv->gamma_M;
   d.gamma_h = dv->gamma_h;
   d.gamma_E_MEL = dv->gamma_E_MEL;
+  if (needs_mel(rules.design_on)) d.gamma_d_MEL = rules.gamma_d_MEL;
+  if (needs_sel(rules.design_on)) d.gamma_d_SEL = rules.gamma_d_SEL;
   d.gamma_E_SEL = dv->gamma_E_SEL;
   d.v_d = dv->v_d;
   d.m_d = dv->m_d;

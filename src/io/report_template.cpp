@@ -109,7 +109,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
       "quantity",      "value",       "unit",          "how",         "v_k_weibull",
       "v_k_empirical", "v_k",         "gamma_F",       "v_d",         "density",
       "volume",        "gamma_M",     "m_d",           "E_d",         "gamma_E_SEL",
-      "sel_req",       "gamma_E_MEL", "mel_req",       "h_k_weibull", "h_k_empirical",
+      "sel_req",       "gamma_E_MEL", "mel_req",       "gamma_d_MEL", "gamma_d_SEL",
+      "h_k_weibull",   "h_k_empirical",
       "h_k",           "gamma_h",     "h_d",           "free_board_diameter", "free_board",
       "h_i",           "h_max_sim",   "candidate_mel", "candidate_sel",
       "residual_height_category"};

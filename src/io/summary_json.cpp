@@ -84,6 +84,10 @@ ojson barrier_json(const design::BarrierDesign& d) {
   j["gamma_h"] = factor_json(d.gamma_h);
   j["gamma_E_MEL"] = d.gamma_E_MEL;
   j["gamma_E_SEL"] = d.gamma_E_SEL;
+  // The elongation factors the elongation check uses; null for a test the rule set does not
+  // check.
+  j["gamma_d_MEL"] = d.gamma_d_MEL ? ojson(*d.gamma_d_MEL) : ojson(nullptr);
+  j["gamma_d_SEL"] = d.gamma_d_SEL ? ojson(*d.gamma_d_SEL) : ojson(nullptr);
   j["v_d_m_s"] = d.v_d;
   j["m_d_kg"] = d.m_d;
   j["E_d_kJ"] = d.E_d_kJ;

@@ -307,6 +307,8 @@ Row Report::barrier_factors(lxw_worksheet* ws, Row r, const design::BarrierDesig
   fr("sel_req", b.SEL_req_kJ, "energy", "kJ", "γE,SEL · E_d");
   fr("gamma_E_MEL", b.gamma_E_MEL, "factor", "");
   fr("mel_req", b.MEL_req_kJ, "energy", "kJ", "γE,MEL · E_d");
+  if (b.gamma_d_MEL) fr("gamma_d_MEL", *b.gamma_d_MEL, "factor", "");
+  if (b.gamma_d_SEL) fr("gamma_d_SEL", *b.gamma_d_SEL, "factor", "");
   fr("h_k_weibull", b.h_k.weibull, "length", "m");
   fr("h_k_empirical", b.h_k.empirical, "length", "m");
   fr("h_k", b.h_k.value, "length", "m");

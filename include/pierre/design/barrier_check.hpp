@@ -103,6 +103,9 @@ struct BarrierDesign {
   Characteristic v_k, h_k;
   ResolvedFactor gamma_F, gamma_M, gamma_h;
   double gamma_E_MEL = 1, gamma_E_SEL = 1;
+  // The elongation factors the elongation check uses (the rule set's, for the tests it designs
+  // on); absent: that check is not applicable.
+  std::optional<double> gamma_d_MEL, gamma_d_SEL;
   double design_volume = 0, design_density = 0;  // m³, kg/m³
   double v_d = 0, m_d = 0, E_d_kJ = 0;            // m/s, kg, kJ
   double MEL_req_kJ = 0, SEL_req_kJ = 0;

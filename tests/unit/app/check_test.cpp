@@ -94,6 +94,8 @@ TEST_F(Check, PassingCandidateExitsZero) {
   const auto& b = j["barriers"][0];
   EXPECT_EQ(b["name"], "Generous");
   EXPECT_EQ(b["rules"]["name"], "thesis-2015");
+  // thesis-2015 checks no elongation: no γd.
+  EXPECT_TRUE(b["gamma_d_MEL"].is_null() && b["gamma_d_SEL"].is_null());
   // Every barrier has a design: the list of those without is there, empty (no guard needed).
   ASSERT_TRUE(j.contains("barriers_without_design"));
   EXPECT_TRUE(j["barriers_without_design"].is_array() && j["barriers_without_design"].empty());
@@ -452,6 +454,10 @@ TEST_F(Check, DesignWithoutCandidateHasOnlyAdvisoryLines) {
             std::string::npos)
       << b["energy_class"]["how"];
   EXPECT_NEAR(b["gamma_F"]["value"].get<double>(), 1.10 * 1.10, 1e-12);
+  // The MEL test's elongation factor (rules/peila-ronco-2009.toml: 1.3); the SEL test's is not
+  // checked by a MEL design.
+  EXPECT_EQ(b["gamma_d_MEL"], 1.3);
+  EXPECT_TRUE(b["gamma_d_SEL"].is_null());
 }
 
 // A barrier on a line that (almost) no block reaches has no design: its "reach" line WARNs (the

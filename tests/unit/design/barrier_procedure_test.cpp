@@ -174,6 +174,16 @@ TEST(BarrierProcedure, EachDesignQuantitySaysWhereItComesFrom) {
   // SEL_req with nothing to say it does not matter).
   EXPECT_NE(o2.design->how.at("energy_class").find("meeting MEL_req (the rule set designs on MEL"),
             std::string::npos) << o2.design->how.at("energy_class");
+  // The elongation factor of the test it designs on, cited, for the factors table (the
+  // elongation check used γd = 1.3 that the report showed nowhere); none for the SEL test.
+  ASSERT_TRUE(pr.gamma_d_MEL && pr.gamma_d_SEL);
+  EXPECT_EQ(o2.design->gamma_d_MEL, pr.gamma_d_MEL);
+  EXPECT_FALSE(o2.design->gamma_d_SEL);
+  EXPECT_EQ(o2.design->how.at("gamma_d_MEL").rfind("γd,MEL = 1.3 (given", 0), 0u)  // the fixture's
+      << o2.design->how.at("gamma_d_MEL");
+  EXPECT_FALSE(o2.design->how.count("gamma_d_SEL"));
+  // thesis-2015 checks no elongation: no factor to show.
+  EXPECT_FALSE(d.gamma_d_MEL || d.gamma_d_SEL);
 }
 
 TEST(BarrierProcedure, DesignFollowsFromTheCharacteristicValues) {

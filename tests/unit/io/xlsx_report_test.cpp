@@ -169,6 +169,7 @@ std::unique_ptr<Fixture> make_fixture(int crossings = 400, int trajectories = 30
   b.gamma_h = {1.0, "γh = 1.0 (given)"};
   b.gamma_E_MEL = 1.3;
   b.gamma_E_SEL = 1.0;
+  b.gamma_d_MEL = 1.3;  // designs on MEL's elongation; no γd,SEL
   b.design_volume = 1.26;
   b.design_density = 2800;
   b.v_d = 24.0;
@@ -508,6 +509,11 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   ASSERT_TRUE(gf);
   EXPECT_EQ(number(bar, *gf, 1), 1.16);
   EXPECT_EQ(cell(bar, *gf, 3)->text, "γF = 1.16 (given)");
+  // The elongation factor the elongation check uses, and only that one.
+  const auto gd = find_row(bar, 0, tpl.get("headings.factors", "gamma_d_MEL"));
+  ASSERT_TRUE(gd);
+  EXPECT_EQ(number(bar, *gd, 1), 1.3);
+  EXPECT_FALSE(find_row(bar, 0, tpl.get("headings.factors", "gamma_d_SEL")));
   const auto ex = find_row(bar, 0, "P(h > h_i)");
   ASSERT_TRUE(ex);
   EXPECT_EQ(number(bar, *ex, 3), 0.025) << dump(bar, *ex);
