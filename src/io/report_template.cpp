@@ -84,7 +84,8 @@ std::map<std::string, Keys, std::less<>> make_sections() {
   s["headings.materials"] = {"name",      "source",    "normal_energy", "normal_energy_k",
                              "tangential_energy", "tangential_energy_k", "roughness",
                              "friction_angle"};
-  s["headings.blocks"] = {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"};
+  s["headings.blocks"] = {"id",       "mass",      "volume",    "density",
+                          "diameter", "shape_min", "shape_max", "count"};
   s["headings.sources"] = {"name", "x", "z", "vx", "vz", "omega"};
   s["headings.profile_vertices"] = {"x", "z", "material"};
   s["headings.observation_lines"] = {"name", "x"};

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "pierre/model/block.hpp"
+
 namespace pierre::io::detail {
 namespace {
 
@@ -113,28 +115,34 @@ Row Report::inputs_materials(lxw_worksheet* ws, Row r, const LoadedScenario& sc)
 void Report::blocks(lxw_worksheet* ws) {
   page_setup(ws);
   width(ws, 0, 0, 30);
-  width(ws, 1, 6, 16);
+  width(ws, 1, 7, 16);
   text(ws, 0, 0, t_.get("titles", "blocks"), title());
   if (!d_.scenario) return;
   const Row head = 2;
   const Row end = inputs_blocks(ws, head, *d_.scenario);
-  check(worksheet_print_area(ws, 0, 0, end > 0 ? end - 1 : 0, 6), "worksheet_print_area");
+  check(worksheet_print_area(ws, 0, 0, end > 0 ? end - 1 : 0, 7), "worksheet_print_area");
   check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
 }
 
 // The block groups' table from row r (its heading there), a quarry section's under its name.
 Row Report::inputs_blocks(lxw_worksheet* ws, Row r, const LoadedScenario& sc) {
   headings(ws, r++, 0, "blocks",
-           {"id", "mass", "volume", "density", "shape_min", "shape_max", "count"});
+           {"id", "mass", "volume", "density", "diameter", "shape_min", "shape_max", "count"});
   each_section(ws, r, sc, [&](const std::vector<BlockGroup>& groups, const sim::Scenario&) {
     for (const auto& b : groups) {
+      // The sphere of the block's volume, as the model throws it (§3.5): D_f's default is
+      // the mean of these over the blocks thrown.
+      model::Block sphere;
+      sphere.mass = b.mass;
+      sphere.density = b.density;
       text(ws, r, 0, b.id);
       num(ws, r, 1, b.mass, number("mass"));
       num(ws, r, 2, b.volume, number("volume"));
       num(ws, r, 3, b.density, number("density"));
-      num(ws, r, 4, b.shape_min, number("factor"));
-      num(ws, r, 5, b.shape_max, number("factor"));
-      count(ws, r++, 6, b.count);
+      num(ws, r, 4, sphere.diameter(), number("length"));
+      num(ws, r, 5, b.shape_min, number("factor"));
+      num(ws, r, 6, b.shape_max, number("factor"));
+      count(ws, r++, 7, b.count);
     }
   });
   return r;

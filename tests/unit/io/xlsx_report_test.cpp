@@ -17,6 +17,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -1033,7 +1034,10 @@ TEST(XlsxReport, TheBlockGroupsHaveASheetWithHeadingsOnEveryPage) {
   EXPECT_EQ(b.size(), 3u + groups.size());
   for (std::size_t k = 0; k < groups.size(); ++k) {
     EXPECT_EQ(cell(b, 3 + k, 0)->text, groups[k].id);
-    EXPECT_EQ(number(b, 3 + k, 6), static_cast<double>(groups[k].count));
+    EXPECT_EQ(number(b, 3 + k, 7), static_cast<double>(groups[k].count));
+    // The sphere of equal volume the model throws: D = (6 V / π)^(1/3), at the shown 0.00.
+    const double d = std::cbrt(6.0 * groups[k].mass / groups[k].density / std::numbers::pi);
+    EXPECT_NEAR(*number(b, 3 + k, 4), d, 0.005 + 1e-12) << groups[k].id;
   }
   const Sheet& in = sheets.at("Inputs");
   EXPECT_TRUE(find_row(in, 0, "On the sheet Blocks: a long table, on a sheet of its own so that "
