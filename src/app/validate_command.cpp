@@ -132,6 +132,14 @@ class ValidateCommand final : public Command {
     if (!note.empty()) fmt::print("Note: {}\n", note);
   }
 
+  // " (haul road 12 m, crusher 30 m)": each work area with its distance from the toe.
+  static std::string work_areas_text(const std::vector<design::WorkArea>& areas) {
+    std::string t;
+    for (const auto& a : areas)
+      t += fmt::format("{}{} {} m", t.empty() ? " (" : ", ", a.name, a.distance);
+    return t.empty() ? t : t + " from the toe)";
+  }
+
   // A quarry scenario: one paragraph per section (docs/quarry.md).
   static int print_quarries(const io::LoadedScenario& l) {
     const sim::Scenario& s = l.scenario;
@@ -154,7 +162,7 @@ class ValidateCommand final : public Command {
           "group{} ({}); {} source{}; {} throw{} per block and source with seed {}{}: {} "
           "trajector{}. Crest x = {:.2f} m ({}), toe x = {:.2f} m ({}), H = {:.2f} m ({}); "
           "floor from segment {} (counted from 0, as in impacts.csv), {:.2f} m long. "
-          "Rule set {} ({}); {} work area{}{}{}{}.\n",
+          "Rule set {} ({}); {} work area{}{}{}{}{}.\n",
           q.spec.name, q.spec.group.empty() ? "" : fmt::format(" (group \"{}\")", q.spec.group),
           c.profile.vertices().size(), c.profile.x_min(), c.profile.x_max(), c.blocks.size(),
           c.blocks.size() == 1 ? "" : "s", groups, groups == 1 ? "" : "s", block_ranges(c.blocks),
@@ -165,7 +173,7 @@ class ValidateCommand final : public Command {
           design::to_string(g.crest_origin), g.toe.x, design::to_string(g.toe_origin), g.height,
           design::to_string(g.height_origin), g.floor_segment, g.floor_length, q.rules.name,
           q.rules_file.string(), q.spec.work_areas.size(), q.spec.work_areas.size() == 1 ? "" : "s",
-          q.spec.bench_width ? fmt::format(", bench width {} m", *q.spec.bench_width) : "",
+          work_areas_text(q.spec.work_areas), q.spec.bench_width ? fmt::format(", bench width {} m", *q.spec.bench_width) : "",
           q.observed.id.empty() && q.observed.rd.empty() ? "" : ", observed values",
           q.observed.source.empty() ? "" : fmt::format(" ({})", q.observed.source));
     }

@@ -534,6 +534,9 @@ TEST_F(QuarryCli, ValidateListsTheSections) {
   EXPECT_NE(r.out.find("toe x = 22.00 m (given)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("H = 20.00 m (found)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("600 trajectories"), std::string::npos) << r.out;
+  // The work areas by name and distance (pass.toml: crusher 65 m, office 60 m).
+  EXPECT_NE(r.out.find("1 work area (crusher 65 m from the toe)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 work area (office 60 m from the toe)"), std::string::npos) << r.out;
 }
 
 TEST_F(QuarryCli, SameSeedSameResultsWhateverTheThreads) {
