@@ -474,7 +474,9 @@ std::vector<QuarrySection> read_quarries(const toml::table& root, const std::fil
                                          const std::vector<model::Material>& materials,
                                          const sim::SimulationSettings& settings) {
   std::vector<QuarrySection> out;
-  const TomlTable top(file, root, "", 0, {});
+  // Its root read as the scenario reader reads it: a section typed inside a [[quarries]] entry
+  // is told so.
+  const TomlTable top(file, root, "", 0, detail::kScenarioSections);
   const toml::array* a = top.array_of_tables("quarries");
   if (!a) return out;
   std::set<std::string> names;

@@ -41,7 +41,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                   "volume",  "density",   "factor",   "parameter",   "p_value", "scientific", "probability",
                   "percent", "small_percent", "time",      "angle",    "material",    "general", "date",
                   "open_class", "open_energy", "info_energy"};
-  s["titles"] = {"summary",      "run",          "barriers",       "lines",
+  s["titles"] = {"summary",      "run",          "barrier_values", "lines",
                  "barrier_classes", "checks",   "inputs",       "simulation",     "materials",
                  "blocks",       "sources",      "profile_vertices", "observation_lines", "barrier_inputs",
                  "scenario_text", "barrier",     "statistics",     "bootstrap",
@@ -63,7 +63,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "stop_boundary", "stop_time_limit", "stop_impact_limit", "stop_numerical",
                  "quarry_average_note", "resolved", "defaulted", "from_class",
                  "open_class_capacity", "input_notes", "quarry_all", "quarry_all_note", "travel_time",
-                 "travel_time_value", "runout_quarry_note", "runout_note", "failing", "no_candidate",
+                 "travel_time_value", "runout_quarry_note", "runout_note", "failing", "no_candidate", "no_design",
                  "verify_note", "passing_height_note",
                  "translational_energy_note", "blocks_sheet"};
   s["basis"] = {"model", "not_modelled", "statistics", "barriers", "quarries"};
@@ -175,6 +175,8 @@ const std::map<std::string, Keys, std::less<>>& retired_sections() {
       {"headings.lines", {"speed_mean", "speed_p95", "height_p95", "energy_p95", "energy_max"}},
       // Before the Summary gave each candidate barrier's kit and verdict in its own table.
       {"labels", {"candidate_passes", "candidate_fails", "candidate_warns"}},
+      // Before the Summary's barrier table was split (titles.barrier_values, barrier_classes).
+      {"titles", {"barriers"}},
   };
   return r;
 }

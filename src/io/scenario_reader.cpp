@@ -413,9 +413,7 @@ LoadedScenario read_scenario(const std::filesystem::path& scenario_file, const R
   out.file = scenario_file;
   out.text = read_text(scenario_file, "scenario file (TOML)");
   const toml::table root = parse_toml(scenario_file, out.text);
-  const TomlTable top(scenario_file, root, "", 0,
-                      {"scenario", "simulation", "profile", "materials", "blocks", "sources",
-                       "observation_lines", "barriers", "quarries", "confirmed"});
+  const TomlTable top(scenario_file, root, "", 0, detail::kScenarioSections);
 
   const auto head = top.subtable("scenario", {"name", "description", "materials_file", "reference",
                                               "revision", "prepared_by", "checked_by"});

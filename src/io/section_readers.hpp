@@ -21,6 +21,12 @@
 
 namespace pierre::io::detail {
 
+// The sections of a scenario file, the keys of its root: what the scenario reader accepts there,
+// and what a key typed below another section's header is recognised as (toml_fields.hpp).
+inline const std::initializer_list<std::string_view> kScenarioSections = {
+    "scenario", "simulation", "profile",  "materials", "blocks",
+    "sources",  "observation_lines",      "barriers",  "quarries", "confirmed"};
+
 // In the readers below `parent` is the table holding the part (the root, or one [[quarries]]
 // entry) and `table_path` its path as a TOML header names it ("" for the root, "quarries"),
 // used in messages: "a [quarries.profile] table".

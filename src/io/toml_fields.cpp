@@ -71,10 +71,26 @@ TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::stri
 
 namespace {
 
-// The header a table's keys are written under: [simulation], [materials.face], [[sources]].
+// The header a table's keys are written under, from its field path: [simulation] for
+// "simulation", [materials.face], [[sources]] for "sources[0]", [barriers.candidate] for
+// "barriers[1].candidate".
 std::string header_of(std::string_view prefix) {
-  if (prefix.empty() || prefix.back() != ']') return fmt::format("[{}]", prefix);
-  return fmt::format("[[{}]]", prefix.substr(0, prefix.rfind('[')));
+  std::string path;
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    if (prefix[i] == '[') {
+      i = prefix.find(']', i);
+      if (i == std::string_view::npos) break;
+      continue;
+    }
+    path += prefix[i];
+  }
+  return prefix.empty() || prefix.back() != ']' ? fmt::format("[{}]", path)
+                                                : fmt::format("[[{}]]", path);
+}
+
+// What to do with a section found below another section's header.
+std::string section_advice(std::string_view key) {
+  return fmt::format("write {} above the first header, or under a header of its own", key);
 }
 
 }  // namespace
@@ -97,14 +113,16 @@ TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::stri
     for (std::string_view a : allowed) names += (names.empty() ? "" : ", ") + std::string(a);
     const std::string key(worst->str());
     std::string hint = nearest_name_hint(key, {allowed.begin(), allowed.end()});
-    if (sections_ && !prefix_.empty() &&
-        std::find(sections_->begin(), sections_->end(), key) != sections_->end()) {
-      const std::string header = header_of(prefix_);
-      hint = fmt::format(
-          "; {} is a section of its own, and TOML puts every key below the {} header into it: "
-          "write {} above the first header, or as a [{}] table of its own",
-          key, header, key, key);
-    }
+    // A section's name below another section's header (not inside an inline table, where it
+    // stands as written): meant as that section when it holds a table or a list, or when no
+    // key of this table is near it (`materials = "…"` in [scenario] was materials_file).
+    const toml::node& value = *t.get(key);
+    const bool section = sections_ && !prefix_.empty() && !t.is_inline() &&
+                         std::find(sections_->begin(), sections_->end(), key) != sections_->end();
+    if (section && (value.is_table() || value.is_array() || hint.empty()))
+      hint = fmt::format("; {} is a section of its own, and TOML puts every key below the {} "
+                         "header into it: {}",
+                         key, header_of(prefix_), section_advice(key));
     throw InputError(file_, static_cast<long>(worst->source().begin.line), field(written_key(key)),
                      "an unknown key", fmt::format("one of {}{}", names, hint));
   }
@@ -148,21 +166,24 @@ std::optional<std::filesystem::path> TomlTable::file_path(std::string_view key,
 void TomlTable::missing(std::string_view key, std::string_view expected) const {
   // A section missing from the root may stand below another section's header, where TOML put
   // it (`profile = "p.csv"` at the end of the file, under the last [[observation_lines]]).
+  // Tables at any depth (not inline ones, whose keys stand where they are written).
   if (prefix_.empty()) {
-    const auto misplaced = [&](const toml::table& t, std::string header) {
-      if (const toml::node* n = t.get(key))
-        throw InputError(file_, line_of(*n), field(key), "nothing",
-                         fmt::format("{}; the {} on this line stands below the {} header, and "
-                                     "TOML puts it into that table: write {} above the first "
-                                     "header, or as a [{}] table of its own",
-                                     expected, key, header, key, key));
+    const auto misplaced = [&](const auto& self, const toml::table& t,
+                               const std::string& path) -> void {
+      if (!path.empty() && !t.is_inline())
+        if (const toml::node* n = t.get(key))
+          throw InputError(file_, line_of(*n), field(key), "nothing",
+                           fmt::format("{}; the key {} on this line stands below the {} header, "
+                                       "and TOML puts it into that table: {}",
+                                       expected, key, header_of(path), section_advice(key)));
+      for (auto&& [k, v] : t) {
+        const std::string sub = path.empty() ? std::string(k.str()) : path + "." + std::string(k.str());
+        if (const auto* tt = v.as_table()) self(self, *tt, sub);
+        if (const auto* a = v.as_array(); a && a->is_array_of_tables())
+          for (const toml::node& e : *a) self(self, *e.as_table(), sub + "[0]");
+      }
     };
-    for (auto&& [k, v] : *t_) {
-      const std::string name(k.str());
-      if (const auto* t = v.as_table()) misplaced(*t, fmt::format("[{}]", name));
-      if (const auto* a = v.as_array(); a && a->is_array_of_tables())
-        for (const toml::node& e : *a) misplaced(*e.as_table(), fmt::format("[[{}]]", name));
-    }
+    misplaced(misplaced, *t_, "");
   }
   throw InputError(file_, line_, field(key), "nothing", std::string(expected));
 }

@@ -121,12 +121,99 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
   return r;
 }
 
-// The barriers in two tables: the design values (the console's), then what each must reach,
-// the smallest energy class that does, the kit checked against it and the verdict of the
-// barrier's check lines; under them how each class was chosen.
+// The barriers in two tables: the design values (the console's, with the free board), then
+// what each must reach, the smallest energy class that does, the kit checked against it and
+// the verdict of the barrier's check lines (every barrier, those without a design too); under
+// them how each class was chosen.
 Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
-  if (d_.barriers.empty()) return r;
-  r = table_title(ws, r, "barriers");
+  const std::vector<design::BarrierSpec> none;
+  const auto& specs = d_.scenario ? d_.scenario->barriers : none;
+  if (d_.barriers.empty() && specs.empty()) return r;
+  if (!d_.barriers.empty()) r = summary_barrier_values(ws, r);
+
+  r = table_title(ws, r, "barrier_classes");
+  headings(ws, r++, 0, "barriers",
+           {"name", "mel_req", "sel_req", "energy_class", "class_mel", "class_sel", "candidate",
+            "verdict", "verdict_lines"},
+           45);
+  const Row first = r;
+  auto verdict = [&](const std::string& name, const std::string& kit) {
+    std::vector<design::CheckLine> own;
+    for (const auto& l : d_.checks)
+      if (l.subject == name) own.push_back(l);
+    std::string fails, warns;
+    for (const auto& l : own) {
+      if (l.status == design::CheckStatus::fail) fails += (fails.empty() ? "" : ", ") + l.id;
+      if (l.status == design::CheckStatus::warn) warns += (warns.empty() ? "" : ", ") + l.id;
+    }
+    // The worst of its lines; N/A only when none is anything else.
+    using S = design::CheckStatus;
+    const std::size_t judged = own.size() - design::count_status(own, S::not_applicable);
+    std::string word;
+    if (!own.empty())
+      word = design::to_string(!fails.empty() ? S::fail
+                               : !warns.empty() ? S::warn
+                               : judged > 0     ? S::pass
+                                                : S::not_applicable);
+    std::string lines;
+    if (!fails.empty()) lines = "FAIL " + fails;
+    if (!warns.empty()) lines += (lines.empty() ? "WARN " : "; WARN ") + warns;
+    text(ws, r, 6, kit, wrap());
+    text(ws, r, 7, word, centred_bold());
+    text(ws, r, 8, lines, wrap());
+    fit_row(ws, r, {{&name, 16}, {&kit, 26}, {&lines, 44}});
+  };
+  for (const auto& b : d_.barriers) {
+    text(ws, r, 0, b.spec.name, wrap());
+    // A capacity the rule set does not design on is information, not a requirement: a class
+    // whose SEL is below an SEL_req of a MEL design read as a failure.
+    num(ws, r, 1, b.MEL_req_kJ, number(design::needs_mel(b.design_on) ? "energy" : "info_energy", 1));
+    num(ws, r, 2, b.SEL_req_kJ, number(design::needs_sel(b.design_on) ? "energy" : "info_energy", 1));
+    if (b.energy_class) {
+      // An open-ended class ("> 4500 kJ") shows as such: its bounds are not its capacity, the
+      // kit declares its own (the note below says what it must reach).
+      const bool open = b.energy_class->open_ended;
+      num(ws, r, 3, b.energy_class->number, number(open ? "open_class" : "count", 1));
+      num(ws, r, 4, b.energy_class->mel_kJ, number(open ? "open_energy" : "energy", 1));
+      num(ws, r, 5, b.energy_class->sel_kJ, number(open ? "open_energy" : "energy", 1));
+    } else {
+      text(ws, r, 3, t_.get("labels", "none"), centred());
+    }
+    verdict(b.spec.name, candidate_kit(b.spec, b.candidate_mel_kJ, b.candidate_sel_kJ));
+    ++r;
+  }
+  // A barrier its line gave no design (no block reached it): its check lines say why.
+  for (const auto& spec : specs) {
+    if (std::any_of(d_.barriers.begin(), d_.barriers.end(),
+                    [&](const design::BarrierDesign& b) { return b.spec.name == spec.name; }))
+      continue;
+    text(ws, r, 0, spec.name, wrap());
+    merged(ws, r, 1, 5, t_.get("labels", "no_design"), centred());
+    const auto& c = spec.candidate;
+    verdict(spec.name, candidate_kit(spec, c && c->mel_kJ ? *c->mel_kJ : kNaN,
+                                     c && c->sel_kJ ? *c->sel_kJ : kNaN));
+    ++r;
+  }
+  status_colours(ws, first, r - 1, 7);
+  // How each class was chosen: on which capacity, from which table (its source).
+  // Over the print area's width (kNoteWidth).
+  for (const auto& b : d_.barriers)
+    if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
+      paragraph(ws, r++, 0, kNoteLast, kNoteWidth, b.spec.name + ": class " + std::to_string(b.energy_class->number) +
+                           (b.energy_class->open_ended ? "+" : "") + ", " + it->second +
+                           (b.energy_class->open_ended
+                                ? fmt::format("; the class is open-ended: the kit must declare MEL >= "
+                                              "{} kJ and SEL >= {} kJ",
+                                              design::number_text(b.MEL_req_kJ, 4),
+                                              design::number_text(b.SEL_req_kJ, 4))
+                                : std::string()),
+           wrapped_note());
+  return r;
+}
+
+// The design values of each designed barrier, as the console prints them, with the free board.
+Row Report::summary_barrier_values(lxw_worksheet* ws, Row r) {
+  r = table_title(ws, r, "barrier_values");
   headings(ws, r++, 0, "barriers",
            {"name", "line", "rules", "chainage", "v_k", "h_k", "v_d", "e_d", "free_board",
             "interception_height"},
@@ -146,73 +233,21 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
     fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
     ++r;
   }
-
-  r = table_title(ws, r, "barrier_classes");
-  headings(ws, r++, 0, "barriers",
-           {"name", "mel_req", "sel_req", "energy_class", "class_mel", "class_sel", "candidate",
-            "verdict", "verdict_lines"},
-           45);
-  const Row first = r;
-  for (const auto& b : d_.barriers) {
-    text(ws, r, 0, b.spec.name, wrap());
-    // A capacity the rule set does not design on is information, not a requirement: a class
-    // whose SEL is below an SEL_req of a MEL design read as a failure.
-    num(ws, r, 1, b.MEL_req_kJ, number(design::needs_mel(b.design_on) ? "energy" : "info_energy", 1));
-    num(ws, r, 2, b.SEL_req_kJ, number(design::needs_sel(b.design_on) ? "energy" : "info_energy", 1));
-    if (b.energy_class) {
-      // An open-ended class ("> 4500 kJ") shows as such: its bounds are not its capacity, the
-      // kit declares its own (the note below says what it must reach).
-      const bool open = b.energy_class->open_ended;
-      num(ws, r, 3, b.energy_class->number, number(open ? "open_class" : "count", 1));
-      num(ws, r, 4, b.energy_class->mel_kJ, number(open ? "open_energy" : "energy", 1));
-      num(ws, r, 5, b.energy_class->sel_kJ, number(open ? "open_energy" : "energy", 1));
-    } else {
-      text(ws, r, 3, t_.get("labels", "none"), centred());
-    }
-    // The kit the candidate declares, and the barrier's verdict: its worst check line.
-    std::string kit = t_.get("labels", "no_candidate");
-    if (b.spec.candidate) {
-      const design::CandidateBarrier& c = *b.spec.candidate;
-      kit.clear();
-      auto add = [&](const std::string& part) { kit += (kit.empty() ? "" : ", ") + part; };
-      if (c.energy_class) add("class " + std::to_string(*c.energy_class));
-      if (!std::isnan(b.candidate_mel_kJ)) add("MEL " + design::number_text(b.candidate_mel_kJ, 6) + " kJ");
-      if (!std::isnan(b.candidate_sel_kJ)) add("SEL " + design::number_text(b.candidate_sel_kJ, 6) + " kJ");
-      if (c.height) add(fmt::format("height {:.2f} m", *c.height));
-    }
-    std::string fails, warns;
-    for (const auto& l : d_.checks) {
-      if (l.subject != b.spec.name) continue;
-      if (l.status == design::CheckStatus::fail) fails += (fails.empty() ? "" : ", ") + l.id;
-      if (l.status == design::CheckStatus::warn) warns += (warns.empty() ? "" : ", ") + l.id;
-    }
-    const design::CheckStatus worst = !fails.empty()   ? design::CheckStatus::fail
-                                      : !warns.empty() ? design::CheckStatus::warn
-                                                       : design::CheckStatus::pass;
-    std::string lines;
-    if (!fails.empty()) lines = "FAIL " + fails;
-    if (!warns.empty()) lines += (lines.empty() ? "WARN " : "; WARN ") + warns;
-    text(ws, r, 6, kit, wrap());
-    text(ws, r, 7, std::string(design::to_string(worst)), centred_bold());
-    text(ws, r, 8, lines, wrap());
-    fit_row(ws, r, {{&b.spec.name, 16}, {&kit, 26}, {&lines, 44}});
-    ++r;
-  }
-  status_colours(ws, first, r - 1, 7);
-  // How each class was chosen: on which capacity, from which table (its source).
-  // Over the print area's width (kNoteWidth).
-  for (const auto& b : d_.barriers)
-    if (const auto it = b.how.find("energy_class"); b.energy_class && it != b.how.end())
-      paragraph(ws, r++, 0, kNoteLast, kNoteWidth, b.spec.name + ": class " + std::to_string(b.energy_class->number) +
-                           (b.energy_class->open_ended ? "+" : "") + ", " + it->second +
-                           (b.energy_class->open_ended
-                                ? fmt::format("; the class is open-ended: the kit must declare MEL >= "
-                                              "{} kJ and SEL >= {} kJ",
-                                              design::number_text(b.MEL_req_kJ, 4),
-                                              design::number_text(b.SEL_req_kJ, 4))
-                                : std::string()),
-           wrapped_note());
   return r;
+}
+
+// The kit a candidate declares ("class 6, MEL 3000 kJ, SEL 1000 kJ, height 6.00 m"; MEL and SEL
+// as resolved, NaN when not known), or the layout's words for a design without one.
+std::string Report::candidate_kit(const design::BarrierSpec& spec, double mel_kJ, double sel_kJ) {
+  if (!spec.candidate) return t_.get("labels", "no_candidate");
+  const design::CandidateBarrier& c = *spec.candidate;
+  std::string kit;
+  auto add = [&](const std::string& part) { kit += (kit.empty() ? "" : ", ") + part; };
+  if (c.energy_class) add("class " + std::to_string(*c.energy_class));
+  if (!std::isnan(mel_kJ)) add("MEL " + design::number_text(mel_kJ, 6) + " kJ");
+  if (!std::isnan(sel_kJ)) add("SEL " + design::number_text(sel_kJ, 6) + " kJ");
+  if (c.height) add(fmt::format("height {:.2f} m", *c.height));
+  return kit;
 }
 
 // The statistics at the observation lines, as the console prints them: per line its

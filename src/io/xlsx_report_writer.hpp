@@ -252,6 +252,8 @@ class Report {
   void summary(lxw_worksheet* ws);
   Row summary_run(lxw_worksheet* ws, Row r);
   Row summary_barriers(lxw_worksheet* ws, Row r);
+  Row summary_barrier_values(lxw_worksheet* ws, Row r);
+  std::string candidate_kit(const design::BarrierSpec& spec, double mel_kJ, double sel_kJ);
   Row summary_lines(lxw_worksheet* ws, Row r);
   Row summary_stops(lxw_worksheet* ws, Row r);
   Row summary_basis(lxw_worksheet* ws, Row r);

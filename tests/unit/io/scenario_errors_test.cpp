@@ -257,7 +257,8 @@ TEST(ScenarioSyntax, AFileGivenForATableSaysTheTablesForm) {
 
 // A section's key typed below another section's header is in that section for TOML: the
 // message says so, whether the other section rejects it as unknown or the section is then
-// missing from the root.
+// missing from the root (found at any depth). Not for a key that is a slip of one of the
+// table's own keys, nor inside an inline table, where a key stands as written.
 TEST(ScenarioSyntax, ASectionBelowAnotherHeaderIsToldSo) {
   TempDir dir;
   auto error_of = [&](const std::string& text) {
@@ -269,19 +270,34 @@ TEST(ScenarioSyntax, ASectionBelowAnotherHeaderIsToldSo) {
     return std::string("no error");
   };
   const std::string points = "points = [[0.0, 10.0, \"rock\"], [10.0, 0.0, \"rock\"], [20.0, 0.0, \"\"]]";
+  const std::string advice = "write profile above the first header, or under a header of its own";
   // Below [simulation], which reads its keys strictly.
   EXPECT_THAT(error_of(pierre::test::base_with({{7, "profile = { " + points + " }"}, {8, ""}, {9, ""}})),
               HasSubstr("; profile is a section of its own, and TOML puts every key below the "
-                        "[simulation] header into it: write profile above the first header, or "
-                        "as a [profile] table of its own"));
+                        "[simulation] header into it: " + advice));
   // At the end of the file, below the last [[observation_lines]]: the profile is found missing
   // first, and the message points at the line where it stands.
   const std::string at_end =
       pierre::test::base_with({{8, ""}, {9, ""}}) + "profile = { " + points + " }\n";
   EXPECT_EQ(error_of(at_end),
-            "27 profile: a [profile] table with file = \"...\" or points = [...]; the profile on "
-            "this line stands below the [[observation_lines]] header, and TOML puts it into that "
-            "table: write profile above the first header, or as a [profile] table of its own");
+            "27 profile: a [profile] table with file = \"...\" or points = [...]; the key profile "
+            "on this line stands below the [[observation_lines]] header, and TOML puts it into that "
+            "table: " + advice);
+  // Two tables deep: the header as written, without the index of the array entry.
+  const std::string deep = pierre::test::base_with({{8, ""}, {9, ""}}) +
+                           "[[barriers]]\nname = \"B\"\nline = \"L\"\n[barriers.candidate]\n"
+                           "height = 3.0\nprofile = { " + points + " }\n";
+  EXPECT_THAT(error_of(deep), HasSubstr("32 profile: ")) << error_of(deep);
+  EXPECT_THAT(error_of(deep), HasSubstr("below the [barriers.candidate] header"));
+  // Inside an inline table the key stands where it is written: no advice to move it.
+  const std::string in_inline =
+      "sources = [{ x = 1.0, z = 11.0, profile = { " + points + " } }]\n" +
+      pierre::test::base_with({{8, ""}, {9, ""}, {20, ""}, {21, ""}, {22, ""}});
+  EXPECT_EQ(error_of(in_inline),
+            "0 profile: a [profile] table with file = \"...\" or points = [...]");
+  // A slip of the table's own key keeps its hint: materials for materials_file in [scenario].
+  EXPECT_THAT(error_of(pierre::test::base_with(3, "materials = \"m.toml\"")),
+              HasSubstr("; the nearest is materials_file"));
   // A key that is no section gets no such hint.
   EXPECT_THAT(error_of(pierre::test::base_with(7, "seeds = 1")), Not(HasSubstr("section")));
 }

@@ -705,13 +705,22 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
   f->data.barriers.push_back(f->data.barriers.at(0));
   f->data.barriers.back().spec.name = "Screen C";
   f->data.barriers.back().spec.candidate.reset();
+  // Screen D: a barrier of the scenario whose line gave no design, and Screen E one whose lines
+  // are all N/A.
+  f->scenario.barriers.push_back(f->data.barriers.at(0).spec);
+  f->scenario.barriers.back().name = "Screen D";
+  f->scenario.barriers.back().candidate->mel_kJ = 2000;
+  f->data.barriers.push_back(f->data.barriers.at(0));
+  f->data.barriers.back().spec.name = "Screen E";
   f->data.checks = {line("Screen A", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass),
                     line("Screen A", "sample.size", 6.7, 5, "%", design::CheckStatus::warn),
                     line("Screen B", "energy.mel", 3000, 1386.9, "kJ", design::CheckStatus::pass),
                     line("Screen B", "height.interception", 3.5, 4.02, "m", design::CheckStatus::fail),
                     line("Screen B", "elongation", 5, 9, "m", design::CheckStatus::fail),
                     line("Screen B", "sample.size", 6.7, 5, "%", design::CheckStatus::warn),
-                    line("Screen C", "reach", 445, 30, "", design::CheckStatus::pass)};
+                    line("Screen C", "reach", 445, 30, "", design::CheckStatus::pass),
+                    line("Screen D", "reach", 0, 30, "", design::CheckStatus::fail),
+                    line("Screen E", "observed.fit", std::nan(""), std::nan(""), "", design::CheckStatus::not_applicable)};
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   const auto [r, sheets] = export_sheets(xlsx, dir.path(), true);
@@ -734,7 +743,9 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
   for (const Expected& e :
        {Expected{"Screen A", kit, "WARN", "WARN sample.size"},
         Expected{"Screen B", kit, "FAIL", "FAIL height.interception, elongation; WARN sample.size"},
-        Expected{"Screen C", "none given (design only)", "PASS", ""}}) {
+        Expected{"Screen C", "none given (design only)", "PASS", ""},
+        Expected{"Screen D", "class 6, MEL 2000 kJ, height 3.50 m", "FAIL", "FAIL reach"},
+        Expected{"Screen E", kit, "N/A", ""}}) {
     const auto row = find_row(sum, 0, e.name, *classes);
     ASSERT_TRUE(row) << e.name;
     EXPECT_EQ(cell(sum, *row, 6)->text, e.kit) << dump(sum, *row);
@@ -742,6 +753,10 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
     const auto lines = cell(sum, *row, 8);
     EXPECT_EQ(lines ? lines->text : std::string(), e.lines) << dump(sum, *row);
   }
+  // Screen D's design columns say why they are empty.
+  const auto d = find_row(sum, 0, "Screen D", *classes);
+  ASSERT_TRUE(d);
+  EXPECT_EQ(cell(sum, *d, 1)->text, io::load_report_template(kTemplate).get("labels", "no_design"));
 }
 
 // The Summary states what the numbers rest on: the model and what it leaves out, the run's own
