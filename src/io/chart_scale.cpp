@@ -37,6 +37,25 @@ AxisBounds equal_scale_bounds(double xmin, double xmax, double zmin, double zmax
   return b;
 }
 
+double fitting_height(double xmin, double xmax, double zmin, double zmax, double width,
+                      double min_height, double max_height) {
+  if (!valid_extent(xmin, xmax, zmin, zmax) || !(width > 0) || !(min_height <= max_height))
+    return max_height;
+  auto span = [&](double h) {
+    const AxisBounds b = equal_scale_bounds(xmin, xmax, zmin, zmax, width, h);
+    return b.x1 - b.x0;
+  };
+  // The span only shrinks as the height grows (a taller area lets the width set the scale), in
+  // steps, as the bounds move from one tick to the next: the first height of the last step.
+  const double best = span(max_height);
+  constexpr int kSteps = 200;
+  for (int k = 0; k <= kSteps; ++k) {
+    const double h = min_height + (max_height - min_height) * k / kSteps;
+    if (span(h) <= best * (1 + 1e-12)) return h;
+  }
+  return max_height;
+}
+
 AxisRange round_axis(double lo, double hi, int intervals) {
   if (!(std::isfinite(lo) && std::isfinite(hi) && hi > lo && intervals > 0)) return {lo, hi, 0};
   const double decade = std::pow(10.0, std::floor(std::log10((hi - lo) / intervals)));

@@ -3,6 +3,8 @@
 // profiles of their own, drawn on their rows' sheets.
 #include "xlsx_report_writer.hpp"
 
+#include "pierre/io/chart_scale.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -33,7 +35,17 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
     return;
   }
   const Row chart_row = 2;
-  const Row rows_for_chart = static_cast<Row>(std::ceil(1.8 * t_.chart_height / 20.0)) + 2;
+  const Bounds ext = d_.scenario ? bounds(d_.scenario->scenario.profile.vertices()) : Bounds{};
+  // The chart is 1.6 of the layout's width, and as tall as the section needs to fill that width
+  // at one scale: 1.0 to 2.6 of the layout's height (plot area 85 % by 68 %, as equal_scale).
+  const double plot_w = 1.6 * t_.chart_width * 0.85, plot_h = t_.chart_height * 0.68;
+  const double y_scale =
+      valid_extent(ext.xmin, ext.xmax, ext.zmin, ext.zmax)
+          ? fitting_height(ext.xmin, ext.xmax, ext.zmin, ext.zmax, plot_w, plot_h, 2.6 * plot_h) /
+                plot_h
+          : 1.6;
+  // Rows of 20 px, and a little room under the chart.
+  const Row rows_for_chart = static_cast<Row>(std::ceil((y_scale + 0.2) * t_.chart_height / 20.0)) + 2;
   Row r = chart_row + rows_for_chart;
   text(ws, r++, 0, t_.get("titles", "chart_data"), section());
   check(worksheet_print_area(ws, 0, 0, r - 2, 12), "worksheet_print_area");
@@ -55,11 +67,10 @@ void Report::profile(lxw_worksheet* ws, const std::string& sheet) {
   bool any = pr > r0;
   if (any)
     xy_series(chart, sheet, r0, pr - 2, 2, 3, h("profile", "paths"), t_.colour("paths"), 0.75f);
-  const Bounds ext = d_.scenario ? bounds(d_.scenario->scenario.profile.vertices()) : Bounds{};
   if (d_.scenario) any = profile_ground(ws, sheet, chart, r0, ext) || any;
   if (any) {
-    equal_scale(chart, ext.xmin, ext.xmax, ext.zmin, ext.zmax, 1.6, 1.6);
-    insert_chart(ws, {chart_row, 0}, chart, 1.6, 1.6);
+    equal_scale(chart, ext.xmin, ext.xmax, ext.zmin, ext.zmax, 1.6, y_scale);
+    insert_chart(ws, {chart_row, 0}, chart, 1.6, y_scale);
   }
 }
 

@@ -18,6 +18,14 @@ AxisBounds equal_scale_bounds(double xmin, double xmax, double zmin, double zmax
                               double height);
 bool valid_extent(double xmin, double xmax, double zmin, double zmax);
 
+// The plot height, between min_height and max_height px, to give a section drawn at one scale
+// in a plot area `width` px wide: the least at which its width, not its height, sets the scale
+// (the horizontal axis is as short as it gets at max_height). A section of fixed shape drew
+// Vaujany's 486 m slope on a 0–750 m axis: the chart's height bound the scale, and a third of
+// the frame stood empty. Invalid extents give max_height.
+double fitting_height(double xmin, double xmax, double zmin, double zmax, double width,
+                      double min_height, double max_height);
+
 // One axis of values from lo to hi on round numbers: a step of 1, 2, 2.5 or 5 × 10^k that
 // cuts the range into at most `intervals`, and lo and hi moved out to multiples of it. Excel
 // labels the ticks from the minimum on: from a data minimum of 7.962 m/s they read

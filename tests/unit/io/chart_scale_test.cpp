@@ -65,6 +65,30 @@ TEST(ChartScale, EveryExtentIsHeldAtOneScale) {
             expect_drawable(x0, x0 + dx, z0, z0 + dz, s[0], s[1]);
 }
 
+// Vaujany's profile (examples/vaujany-2d: x 0–486 m, z 97.9–349.95 m) in the Profile sheet's
+// plot area, 843 px wide: at 359 px high (the fixed shape of before) its height set the scale
+// and the axis ran to 750 m; at the fitting height the axis ends at 500 m, the first 50 m tick
+// beyond 486 m, and no lower height does that.
+TEST(ChartScale, TheChartIsAsTallAsTheSectionNeeds) {
+  using pierre::io::fitting_height;
+  const double w = 620 * 1.6 * 0.85, h = 330 * 0.68;
+  EXPECT_EQ(equal_scale_bounds(0, 486, 97.9, 349.95, w, 1.6 * h).x1, 750);
+  const double fit = fitting_height(0, 486, 97.9, 349.95, w, h, 2.6 * h);
+  const AxisBounds b = equal_scale_bounds(0, 486, 97.9, 349.95, w, fit);
+  EXPECT_EQ(b.x0, 0);
+  EXPECT_EQ(b.x1, 500);
+  EXPECT_GT(equal_scale_bounds(0, 486, 97.9, 349.95, w, fit - 2.6 * h / 200).x1, 500);
+  expect_drawable(0, 486, 97.9, 349.95, w, fit);
+  // A long flat section needs no more than the least height. A cliff is held by its height
+  // even at the most: its axis is as short as there (round ticks), no shorter.
+  EXPECT_EQ(fitting_height(0, 2000, 0, 40, w, h, 2.6 * h), h);
+  const double cliff = fitting_height(0, 30, 0, 200, w, h, 2.6 * h);
+  EXPECT_GT(cliff, 2 * h);
+  EXPECT_EQ(equal_scale_bounds(0, 30, 0, 200, w, cliff).x1, equal_scale_bounds(0, 30, 0, 200, w, 2.6 * h).x1);
+  EXPECT_GT(equal_scale_bounds(0, 30, 0, 200, w, cliff - 2.6 * h / 200).x1, equal_scale_bounds(0, 30, 0, 200, w, cliff).x1);
+  EXPECT_EQ(fitting_height(0, NAN, 0, 200, w, h, 2.6 * h), 2.6 * h);
+}
+
 TEST(ChartScale, NothingToGoByLeavesTheDefaults) {
   for (const AxisBounds& b : {equal_scale_bounds(5, 5, 0, 1, 100, 100),
                               equal_scale_bounds(0, 1, 2, 1, 100, 100),

@@ -1307,7 +1307,10 @@ TEST(XlsxReport, LongNotesStayInsideThePrintArea) {
 // The profile is drawn at one scale: metres per pixel of the plot area (taken as 85 % of the
 // chart's width and 68 % of its height) equal across and up, up to the round numbers the axis
 // bounds are put on (a half-decade step: at most a factor 1.5 either way), and the axes hold
-// the whole section. (The vertical axis used to fill the height: a 32° slope looked 15°.)
+// the whole section. (The vertical axis used to fill the height: a 32° slope looked 15°.) The
+// chart is as tall as the section needs for its width to set the scale: the horizontal axis
+// ends at the first tick beyond the section. (A chart of fixed shape drew Vaujany's 486 m on
+// 0–750 m.)
 TEST(XlsxReport, TheProfileIsDrawnAtOneScale) {
   PIERRE_NEED_PROGRAM("unzip");
   TempDir dir;
@@ -1315,13 +1318,32 @@ TEST(XlsxReport, TheProfileIsDrawnAtOneScale) {
   const auto tpl = io::load_report_template(kTemplate);
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, tpl);
-  std::string chart;
+  std::string chart, chart_name;
   for (const auto& n : zip_list(xlsx, dir.path()))
     if (n.rfind("xl/charts/chart", 0) == 0) {
       const std::string x = zip_entry(xlsx, n, dir.path());
-      if (x.find(tpl.get("chart.profile", "title")) != std::string::npos) chart = x;
+      if (x.find(tpl.get("chart.profile", "title")) != std::string::npos) {
+        chart = x;
+        chart_name = n.substr(std::string("xl/charts/").size());
+      }
     }
   ASSERT_FALSE(chart.empty());
+  // The chart's height as Excel places it: its anchor, from a row and offset to another, on rows
+  // of 20 px (the Profile sheet sets none of its own there), 9525 EMU a pixel.
+  std::string drawing;
+  for (const auto& n : zip_list(xlsx, dir.path()))
+    if (n.rfind("xl/drawings/_rels/", 0) == 0 &&
+        zip_entry(xlsx, n, dir.path()).find("../charts/" + chart_name + "\"") != std::string::npos)
+      drawing = zip_entry(xlsx, "xl/drawings/" + n.substr(18, n.size() - 18 - 5), dir.path());
+  ASSERT_EQ(drawing.find("<xdr:graphicFrame", drawing.find("<xdr:graphicFrame") + 1), std::string::npos)
+      << "one chart on the Profile sheet";
+  auto anchor = [&](const char* end, const char* what) {
+    const std::size_t at = drawing.find(std::string("<xdr:") + end + ">");
+    const std::size_t k = drawing.find(std::string("<xdr:") + what + ">", at) + std::string(what).size() + 6;
+    return std::stod(drawing.substr(k, drawing.find('<', k) - k));
+  };
+  const double chart_px = (anchor("to", "row") - anchor("from", "row")) * 20 +
+                          (anchor("to", "rowOff") - anchor("from", "rowOff")) / 9525;
   auto bound = [&](const char* pos, const char* which) {  // pos "b" (x) or "l" (z)
     const std::size_t ax = chart.find(std::string("<c:axPos val=\"") + pos + "\"/>");
     const std::size_t start = chart.rfind("<c:valAx>", ax);
@@ -1336,8 +1358,14 @@ TEST(XlsxReport, TheProfileIsDrawnAtOneScale) {
     EXPECT_GE(v.z, z0);
     EXPECT_LE(v.z, z1);
   }
-  const double across = (x1 - x0) / (tpl.chart_width * 0.85), up = (z1 - z0) / (tpl.chart_height * 0.68);
+  const double across = (x1 - x0) / (1.6 * tpl.chart_width * 0.85), up = (z1 - z0) / (chart_px * 0.68);
   EXPECT_LT(std::max(across, up) / std::min(across, up), 1.5) << across << " m/px across, " << up << " m/px up";
+  const auto ext = std::minmax_element(prof.vertices().begin(), prof.vertices().end(),
+                                       [](const auto& a, const auto& b) { return a.x < b.x; });
+  const double xmin = ext.first->x, xmax = ext.second->x;
+  const double tick = std::pow(10.0, std::floor(std::log10(xmax - xmin))) / 2;  // 50 m on 200 m
+  EXPECT_DOUBLE_EQ(x1, std::ceil(xmax / tick) * tick) << "a chart " << chart_px << " px high";
+  EXPECT_DOUBLE_EQ(x0, std::floor(xmin / tick) * tick);
   // The barriers and the observation lines are named on the chart, at their tops: the label of
   // point 1 (a line's top, after its foot) carries the name, the foot's is deleted.
   for (const auto& b : f->data.barriers)
