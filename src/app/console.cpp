@@ -177,7 +177,11 @@ void print_results(std::FILE* out, const design::RunStatistics& s, double second
       quarry_sections > 1 ? fmt::format(", {} sections pooled; RD from the toe below", quarry_sections)
       : quarry_sections == 1 ? "; RD from the toe below"
                              : "";
-  auto metres = [](double v) { return design::number_cell(v, design::NumberKind::length); };
+  // A percentile that reaches the runouts of blocks still moving (off the profile, cut off) is a
+  // lower bound: "≥" before it (the note below says why).
+  auto metres = [&](double v) {
+    return (s.runout.is_lower_bound(v) ? "≥ " : "") + design::number_cell(v, design::NumberKind::length);
+  };
   fmt::print(out, "Horizontal runout from the release point (m{}):   P50 {}   P95 {}   P99 {}   max {}\n",
              pooled, metres(s.runout.p50), metres(s.runout.p95), metres(s.runout.p99),
              metres(s.runout.max));

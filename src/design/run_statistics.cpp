@@ -32,6 +32,8 @@ void keep(LineSamples& l, const sim::Crossing& c) {
 
 void RunSamples::add(const sim::TrajectorySummary& t) {
   runout_.push_back(t.runout());
+  if (t.stop_reason != sim::StopReason::energy && t.stop_reason != sim::StopReason::friction)
+    moving_runout_min_ = std::min(moving_runout_min_, t.runout());
   const auto r = static_cast<std::size_t>(t.stop_reason);
   if (r < stops_.size()) ++stops_[r];
   if (t.steep_stop_tan > 0) {
@@ -108,6 +110,7 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   s.runout.p95 = r[1];
   s.runout.p99 = r[2];
   s.runout.max = r[3];
+  s.runout.lower_bound_from = samples.moving_runout_min();
   for (std::size_t k = 0; k < kStopReasonCount; ++k)
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();

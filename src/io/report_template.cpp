@@ -37,7 +37,7 @@ bool per_item_sheet(std::string_view key) { return key == "barrier" || key == "q
 std::map<std::string, Keys, std::less<>> make_sections() {
   std::map<std::string, Keys, std::less<>> s;
   s["sheets"] = kSheetKeys;
-  s["formats"] = {"count",   "speed",     "length",   "coordinate",  "energy",  "mass",
+  s["formats"] = {"count",   "speed",     "length",   "length_at_least", "coordinate", "energy", "mass",
                   "volume",  "density",   "factor",   "parameter",   "p_value", "scientific", "probability",
                   "percent", "small_percent", "time",      "angle",    "material",    "general", "date",
                   "open_class", "open_energy", "info_energy"};

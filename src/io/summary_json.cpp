@@ -409,6 +409,13 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["lines"] = lines;
   j["runout_m"] = {{"p50", s.runout.p50}, {"p95", s.runout.p95}, {"p99", s.runout.p99},
                    {"max", s.runout.max}};
+  // The statistics at or beyond the runout of a block still moving (it left the profile or was
+  // cut off): lower bounds, not runouts.
+  json bounds = json::array();
+  for (auto [name, v] : {std::pair{"p50", s.runout.p50}, std::pair{"p95", s.runout.p95},
+                         std::pair{"p99", s.runout.p99}, std::pair{"max", s.runout.max}})
+    if (s.runout.is_lower_bound(v)) bounds.push_back(name);
+  j["runout_m"]["lower_bounds"] = bounds;
   if (results.quarry) {
     json rows = json::array();
     for (const auto& r : results.quarry->rows)

@@ -109,7 +109,8 @@ Row Report::summary_run(lxw_worksheet* ws, Row r) {
     for (auto [key, v] : {std::pair{"runout_p50", ro.p50}, std::pair{"runout_p95", ro.p95},
                           std::pair{"runout_p99", ro.p99}, std::pair{"runout_max", ro.max}}) {
       label(key);
-      num(ws, r++, 2, v, number("length", 2));
+      // At or beyond a block still moving (off the profile, cut off): a lower bound, "≥ 85.00".
+      num(ws, r++, 2, v, number(ro.is_lower_bound(v) ? "length_at_least" : "length", 2));
     }
     // What they are measured from; beside the quarry table's RD they read as a danger zone.
     text(ws, r++, 0,

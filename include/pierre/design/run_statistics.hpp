@@ -47,6 +47,9 @@ class RunSamples {
   bool every_crossing() const { return every_crossing_; }
   const std::vector<LineSamples>& every() const { return every_; }  // empty unless asked for
   const std::vector<double>& runout() const { return runout_; }  // m, one per trajectory
+  // The shortest runout of a block still moving where its trajectory ended (it left the
+  // profile, or a limit or a numerical failure cut it off); +inf when none was.
+  double moving_runout_min() const { return moving_runout_min_; }
   const std::array<std::uint64_t, kStopReasonCount>& stop_reasons() const { return stops_; }
   // Energy stops on ground steeper than its friction angle (TrajectorySummary), and the
   // steepest such ground's tan β.
@@ -66,6 +69,7 @@ class RunSamples {
   std::vector<std::uint64_t> last_kept_;  // per line: 1 + trajectory of the last kept crossing
   int main_direction_ = 1;
   std::vector<double> runout_;
+  double moving_runout_min_ = std::numeric_limits<double>::infinity();
   std::array<std::uint64_t, kStopReasonCount> stops_{};
   std::uint64_t steep_energy_stops_ = 0;
   double steepest_tan_ = 0;
@@ -93,6 +97,12 @@ struct LineStatistics {
 struct RunoutStatistics {
   std::uint64_t count = 0;
   double p50 = 0, p95 = 0, p99 = 0, max = 0;  // m; NaN when count is 0
+  // A block that left the profile or was cut off was still moving: its runout is a lower bound
+  // (right-censored), and so is every percentile at or beyond the shortest of theirs (m; +inf
+  // when every block came to rest). User review: P95 = P99 = max = 85.00 m, the profile's end,
+  // read as runouts.
+  double lower_bound_from = std::numeric_limits<double>::infinity();
+  bool is_lower_bound(double v) const { return v >= lower_bound_from; }
 };
 
 struct StopReasonCount {

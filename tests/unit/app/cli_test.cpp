@@ -1010,6 +1010,10 @@ TEST_F(Cli, BlocksCutOffByTheImpactLimitAreReportedAndDrawn) {
   const double tan_b = 0.6, cos_b = 1 / std::sqrt(1 + tan_b * tan_b), sin_b = tan_b * cos_b;
   const double a = 9.81 * (sin_b - cos_b * std::tan(30.0 * std::acos(-1.0) / 180));
   const double runout = 25.0 / (2 * a) * cos_b;  // ≈ 56.26 m
+  // Every block was cut off while moving: each runout statistic is a lower bound, "≥" on the
+  // console and in summary.json.
+  EXPECT_EQ(j["runout_m"]["lower_bounds"], nlohmann::json::array({"p50", "p95", "p99", "max"}));
+  EXPECT_NE(r.out.find("P50 ≥ "), std::string::npos) << r.out;
   for (const char* q : {"p50", "max"}) {
     const double x = j["runout_m"][q].get<double>();
     EXPECT_GE(x, runout - 1e-9) << q;         // it cannot stop before reaching 5 m/s

@@ -58,6 +58,39 @@ TEST(RunStatistics, LinesRunoutAndStops) {
   EXPECT_EQ(st.stop_reasons[1].count, 1u);
 }
 
+// A block still moving where its trajectory ended (off the profile, cut off by a limit) has a
+// runout that is only a lower bound: so is every percentile at or beyond the shortest such
+// runout, and none below it. Blocks at rest (energy, friction) bound nothing.
+TEST(RunStatistics, RunoutPercentilesReachingAMovingBlockAreLowerBounds) {
+  auto stats_of = [](std::initializer_list<std::pair<double, sim::StopReason>> runs) {
+    design::RunSamples s(0, 1);
+    for (auto [runout, why] : runs) {
+      sim::TrajectorySummary t;
+      t.start = {0, 50};
+      t.stop = {runout, 0};
+      t.stop_reason = why;
+      s.add(t);
+    }
+    return design::run_statistics({}, s).runout;
+  };
+  using R = sim::StopReason;
+  // 10, 20, 30 at rest; 40 left the profile: P50 25 and P95 38.5 are runouts, the max is not.
+  auto r = stats_of({{10, R::energy}, {20, R::friction}, {30, R::energy}, {40, R::boundary}});
+  EXPECT_DOUBLE_EQ(r.lower_bound_from, 40.0);
+  EXPECT_FALSE(r.is_lower_bound(r.p50));
+  EXPECT_FALSE(r.is_lower_bound(r.p95));
+  EXPECT_TRUE(r.is_lower_bound(r.max));
+  // One cut off by the time limit at 22 m: P50 = 25 and above reach it.
+  r = stats_of({{10, R::energy}, {22, R::time_limit}, {30, R::energy}, {40, R::friction}});
+  EXPECT_DOUBLE_EQ(r.lower_bound_from, 22.0);
+  EXPECT_TRUE(r.is_lower_bound(r.p50));
+  EXPECT_TRUE(r.is_lower_bound(r.max));
+  // Every block at rest: nothing is a lower bound.
+  r = stats_of({{10, R::energy}, {20, R::friction}});
+  EXPECT_TRUE(std::isinf(r.lower_bound_from));
+  EXPECT_FALSE(r.is_lower_bound(r.max));
+}
+
 // model-2d.md §5: asked for all crossings, the statistics count every crossing in either
 // direction; the first ones in the main direction stay the barrier design's sample, and
 // "not reached" still counts trajectories without one.

@@ -617,6 +617,10 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   // A check line's probability of exceedance in % (unit "%"): 0.00217 %, not "0.00".
   f->data.checks.push_back(
       line("Screen A", "exceedance.energy", 100 * 2.17e-5, 0.1, "%", design::CheckStatus::pass));
+  // Runouts of which the longest ones left the profile at 85 m: P99 and the max are lower bounds,
+  // shown "≥ 85.00" (they read as runouts), P95 below them is a runout.
+  auto& ro = f->data.statistics.runout;
+  ro = {600, 40.25, 84.5, 85, 85, 84.75};
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   // Every sheet, as shown.
@@ -638,6 +642,16 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   // must declare (it showed 8, MEL 4,500.0 and SEL 1,500.0 beside SEL_req 1,066.9 and a larger
   // MEL_req, as if the class fell short of its own requirement).
   const Sheet& sum = sheets.at("Summary");
+  {
+    const auto tpl = io::load_report_template(kTemplate);
+    const std::pair<const char*, const char*> shown[] = {
+        {"runout_p50", "40.25"}, {"runout_p95", "84.50"}, {"runout_p99", "≥ 85.00"}, {"runout_max", "≥ 85.00"}};
+    for (auto [key, text] : shown) {
+      const auto at = find_row(sum, 0, tpl.get("labels", key));
+      ASSERT_TRUE(at) << key;
+      EXPECT_EQ(cell(sum, *at, 2)->text, text) << dump(sum, *at);
+    }
+  }
   const auto classes = find_row(sum, 6, tpl_heading("candidate"));
   ASSERT_TRUE(classes);
   const auto rec = find_row(sum, 0, "Screen A", *classes);
