@@ -14,6 +14,10 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Why few blocks reached the floor: a source off the face, or ground above the toe that held them.
+constexpr const char* kTooFewReachedHint =
+    "check that the source lies over the face, not behind the crest, or whether a ledge or bench "
+    "above the toe held the blocks";
 
 std::string num(double v, int precision = 4) {
   if (std::isinf(v)) return v > 0 ? "beyond the profile" : "-inf";
@@ -292,6 +296,15 @@ void bench_checks(QuarrySectionResult& sr, const QuarryRow& row, const QuarryRul
     const auto [value, limit] = compared_texts(l.value, l.limit, "%");
     l.reason = value + " of " + std::to_string(row.thrown) + " blocks retained " +
                (l.status == CheckStatus::pass ? ">= " : "< ") + limit;
+    // Blocks that never passed the toe are "retained" by a bench they never reached: a full
+    // bench from a section whose blocks stop on the face, or behind the crest, is no evidence.
+    if (l.status == CheckStatus::pass && row.reached_floor < rules.min_reached) {
+      l.status = CheckStatus::warn;
+      l.reason += ", but only " + std::to_string(row.reached_floor) + " of them reached the floor (< " +
+                  std::to_string(rules.min_reached) +
+                  ", the rule set's min_reached): the others stopped above the toe and say "
+                  "nothing of the bench; " + std::string(kTooFewReachedHint);
+    }
   }
   checks.push_back(std::move(l));
 
@@ -392,8 +405,8 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
                       (row.pooled ? "group's " : "") + std::to_string(row.thrown) +
                       " blocks reached the floor (< " +
                       std::to_string(rules.min_reached) +
-                      ", the rule set's min_reached): too few to say where the zone ends; "
-                      "check that the source lies over the face";
+                      ", the rule set's min_reached): too few to say where the zone ends; " +
+                      kTooFewReachedHint;
         }
         if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.

@@ -210,6 +210,27 @@ void note_beyond_floor(const TomlTable& q, const design::QuarrySpec& spec,
   }
 }
 
+// A source behind the crest (on the ground above the face, away from the floor): its blocks
+// reach the floor only if they roll over the crest, and a section whose blocks all stop up
+// there gives a zone of 0 m and a full bench from no evidence (new-user review: x = 3 m behind
+// a crest at 8 m, "valid", and the run's zone read [0, 0.00] m). May be meant (loose blocks on
+// the top bench): a note, not a doubt; the zone and bench lines WARN when too few reach the floor.
+void note_sources_behind_crest(const TomlTable& q, const sim::Scenario& sc,
+                               const design::QuarryGeometry& g, std::vector<InputNote>& notes) {
+  const toml::node* n = q.find("sources");
+  for (std::size_t i = 0; n && i < sc.sources.size(); ++i) {
+    const double behind = (g.crest.x - sc.sources[i].position.x) * g.direction;
+    if (!(behind > 0)) continue;
+    notes.push_back({q.file(), line_of(*n), fmt::format("{}[{}].x", q.field("sources"), i),
+                     fmt::format("the source at x = {:g} m lies {:.2f} m behind the crest (x = "
+                                 "{:.2f} m), above the face, not on it: its blocks reach the floor "
+                                 "only if they roll over the crest; a release from the face lies "
+                                 "between crest and toe (x = {:.2f} m)",
+                                 sc.sources[i].position.x, behind, g.crest.x, g.toe.x),
+                     std::nullopt});
+  }
+}
+
 // ---- numbers ----
 
 double coordinate(const TomlTable& t, const toml::node& c, const std::string& field,
@@ -406,6 +427,7 @@ void read_section_geometry(const TomlTable& q, QuarrySection& s, const fs::path&
   sc.settings.floor_segment = s.geometry.floor_segment;
   note_given_geometry(q, spec.name, sc.profile, spec.geometry, s.geometry, s.notes);
   note_beyond_floor(q, spec, s.geometry, s.notes);
+  note_sources_behind_crest(q, sc, s.geometry, s.notes);
 }
 
 // What the sections say together: a group follows one rule set, gives one kind of observed

@@ -352,16 +352,25 @@ Row Report::quarry_exceedance(lxw_worksheet* ws, Row r, const design::QuarryRow&
     // Say when the fitted columns should not be read as distances: a fit the KS doubts (its
     // fit.* line WARNs), or a distance past the end of the floor that was simulated.
     for (const auto& [what, id, st] : {std::tuple{"RD", "fit.RD", &row.rd}, std::tuple{"ID", "fit.ID", &row.id}}) {
-      const bool doubtful = std::any_of(d_.quarry->checks.begin(), d_.quarry->checks.end(),
-                                        [&](const design::CheckLine& l) {
-                                          return l.subject == row.name && l.id == id &&
-                                                 l.status == design::CheckStatus::warn;
-                                        });
-      if (doubtful && st->ks)
-        text(ws, r++, 0,
-             replace_all(replace_all(t_.get("labels", "fit_doubtful"), "{what}", what), "{p}",
-                         fmt::format("{:.3g}", st->ks->p_value)),
-             note());
+      const auto fit_line = std::find_if(d_.quarry->checks.begin(), d_.quarry->checks.end(),
+                                         [&](const design::CheckLine& l) {
+                                           return l.subject == row.name && l.id == id &&
+                                                  l.status == design::CheckStatus::warn;
+                                         });
+      if (fit_line == d_.quarry->checks.end() || !st->ks) continue;
+      // Why: a p-value below the rule set's, or too few values for a p-value to say anything
+      // ("doubtful (KS p = 0.839)" read as a contradiction; it was n = 5).
+      const std::string p = fmt::format("{:.3g}", st->ks->p_value);
+      const std::string why =
+          st->ks->p_value < fit_line->limit
+              ? fmt::format("KS p = {} < {:g}", p, fit_line->limit)
+              : fmt::format("from only {} values above zero, where KS p = {} says little",
+                            st->ks->observed, p);
+      text(ws, r++, 0,
+           replace_all(replace_all(replace_all(t_.get("labels", "fit_doubtful"), "{what}", what),
+                                   "{why}", why),
+                       "{p}", p),
+           note());
     }
     double floor_end = 0;
     for (const auto* sec : secs) floor_end = std::max(floor_end, sec->geometry.floor_length);

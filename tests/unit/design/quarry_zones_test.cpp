@@ -572,6 +572,33 @@ TEST(QuarryZones, AnAreaOutsideAZoneFromTooFewBlocksWarns) {
       << find(*out.design, "Enough", "zone.road")->reason;
 }
 
+// A bench "retains" blocks that never reached the floor: 700 stopping above the toe and 3 on
+// the floor give 100 % retained of a 5 m bench, which is no evidence of the bench (new-user
+// review: a source behind the crest, bench.retention 100 % PASS, exit 0). It WARNs, naming the
+// count and what to check; with enough blocks on the floor the same share passes.
+TEST(QuarryZones, ABenchFewBlocksReachedWarns) {
+  auto with_bench = [](const std::string& name, std::size_t on_floor) {
+    std::vector<double> v(700, 0.0);
+    v.insert(v.end(), on_floor, 2.0);  // on the floor, within the 5 m bench
+    auto s = section(name, v);
+    s.spec.bench_width = 5;
+    return s;
+  };
+  const auto out = design_quarry({with_bench("Few", 3), with_bench("Enough", 300)}, 1);
+  ASSERT_TRUE(out.design) << out.error;
+  const CheckLine* few = find(*out.design, "Few", "bench.retention");
+  ASSERT_TRUE(few);
+  EXPECT_EQ(few->status, CheckStatus::warn) << few->reason;
+  EXPECT_DOUBLE_EQ(few->value, 100);
+  EXPECT_NE(few->reason.find("100.00 % of 703 blocks retained >= 90.00 %, but only 3 of them "
+                             "reached the floor (< 30, the rule set's min_reached)"),
+            std::string::npos)
+      << few->reason;
+  EXPECT_NE(few->reason.find("not behind the crest"), std::string::npos) << few->reason;
+  EXPECT_EQ(find(*out.design, "Enough", "bench.retention")->status, CheckStatus::pass)
+      << find(*out.design, "Enough", "bench.retention")->reason;
+}
+
 // The field's P95 against the governing distance: a zone drawn shorter than what was seen
 // warns; one that covers it passes; a summary without a P95 has nothing to judge.
 TEST(QuarryZones, ObservedValuesAgainstTheGoverningDistances) {

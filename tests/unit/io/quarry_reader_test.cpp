@@ -132,6 +132,27 @@ TEST(QuarryReader, ReadsASection) {
   EXPECT_EQ(s.observed.source, "Table 6.2, 6.3");
 }
 
+// A source behind the crest is noted at its line (not a doubt: loose blocks on the top bench
+// may be meant): its blocks reach the floor only over the crest. One over the face is not.
+TEST(QuarryReader, ASourceBehindTheCrestIsNoted) {
+  test::TempDir dir;
+  auto behind_crest = [](const QuarrySection& s) {
+    for (const auto& n : s.notes)
+      if (n.text.find("behind the crest") != std::string::npos) return &n;
+    return static_cast<const InputNote*>(nullptr);
+  };
+  EXPECT_FALSE(behind_crest(read(dir, kSection).at(0)));
+  const auto q = read(dir, section_with(21, "x = 6.0"));
+  const InputNote* n = behind_crest(q.at(0));
+  ASSERT_TRUE(n);
+  EXPECT_EQ(n->line, 20);  // the [[quarries.sources]] header
+  EXPECT_EQ(n->field, "quarries[0].sources[0].x");
+  EXPECT_EQ(n->text, "the source at x = 6 m lies 4.00 m behind the crest (x = 10.00 m), above the "
+                     "face, not on it: its blocks reach the floor only if they roll over the "
+                     "crest; a release from the face lies between crest and toe (x = 20.00 m)");
+  EXPECT_FALSE(n->doubt);
+}
+
 // A toe given inside a segment: the floor is the profile past the toe, so the segment is cut
 // there (two collinear pieces, the same physics) and the floor starts at the new vertex. Before,
 // the whole segment was floor and every first contact on it before the toe counted as ID = 0.

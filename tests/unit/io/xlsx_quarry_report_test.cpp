@@ -355,15 +355,20 @@ TEST(XlsxQuarryReport, LibreOfficeReadsTheQuarrySheets) {
       ASSERT_TRUE(own_id) << sec.spec.name;
       expect_number(s, *own_id, 6, sec.id.p95);
     }
-    // A doubtful log-normal fit (its fit.* line WARNs) is said under the exceedance table.
+    // A doubtful log-normal fit (its fit.* line WARNs) is said under the exceedance table, with
+    // why: a p-value below the rule set's, or too few values for one to say anything.
     for (const auto& [what, id, st] : {std::tuple{"RD", "fit.RD", &row.rd}, std::tuple{"ID", "fit.ID", &row.id}}) {
       bool warns = false;
       for (const auto& l : q.checks) warns |= l.subject == row.name && l.id == id && l.status == design::CheckStatus::warn;
       if (!st->ks) continue;
       char p[32];
       std::snprintf(p, sizeof p, "%.3g", st->ks->p_value);
-      const std::string note = std::string(what) + ": the log-normal fit is doubtful (KS p = " + p +
-                               "): its distances extrapolate a poor fit; the empirical ones stand.";
+      const std::string why = st->ks->p_value < 0.05
+                                  ? std::string("KS p = ") + p + " < 0.05"
+                                  : "from only " + std::to_string(st->ks->observed) +
+                                        " values above zero, where KS p = " + p + " says little";
+      const std::string note = std::string(what) + ": the log-normal fit is doubtful (" + why +
+                               "): read the empirical distances, not the fitted ones.";
       EXPECT_EQ(find_row(s, 0, note).has_value(), warns) << note;
     }
     // The governing distances, / H and in m.
