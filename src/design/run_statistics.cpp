@@ -39,6 +39,8 @@ void RunSamples::add(const sim::TrajectorySummary& t) {
   if (t.steep_stop_tan > 0) {
     ++steep_energy_stops_;
     steepest_tan_ = std::max(steepest_tan_, double{t.steep_stop_tan});
+    steep_x_min_ = std::min(steep_x_min_, t.stop.x);
+    steep_x_max_ = std::max(steep_x_max_, t.stop.x);
   }
   if (t.stop_reason == sim::StopReason::energy && t.impacts == 1) {
     ++first_impact_stops_;
@@ -115,6 +117,10 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();
   s.steepest_energy_stop_deg = geometry::degrees(std::atan(samples.steepest_energy_stop_tan()));
+  if (samples.steep_energy_stops() > 0) {
+    s.energy_stop_steep_x_min = samples.steep_energy_stop_x_min();
+    s.energy_stop_steep_x_max = samples.steep_energy_stop_x_max();
+  }
   s.energy_stops_at_first_impact = samples.first_impact_stops();
   s.first_impact_stop_speed_min = samples.first_impact_stop_speed_min();
   s.first_impact_stop_speed_max = samples.first_impact_stop_speed_max();
@@ -160,10 +166,13 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
     // face they would not, and the runouts and reach counts then fall short.
     const std::string steepest = fixed_text(s.steepest_energy_stop_deg, 1);
     const bool one = k == 1;
+    const double x0 = s.energy_stop_steep_x_min, x1 = s.energy_stop_steep_x_max;
+    const std::string where = x0 == x1 ? "at x = " + fixed_text(x0, 1) + " m"
+                                       : "at x = " + fixed_text(x0, 1) + " to " + fixed_text(x1, 1) + " m";
     notes.push_back(std::to_string(k) + (one ? " block was" : " blocks were") +
                     " stopped by the energy criterion (Eq 3.13) on ground steeper than its "
-                    "friction angle (up to " + steepest + "°), where a block at rest would slide "
-                    "on: the model stops a block whose energy head after an impact is below "
+                    "friction angle (up to " + steepest + "°, " + where +
+                    "), where a block at rest would slide on down the slope: the model stops a block whose energy head after an impact is below "
                     "c_stop·R whatever the slope. Check that " + (one ? "it" : "they") +
                     " can rest there (on a talus near its angle of repose, likely; on a rock face, "
                     "not: a smaller stop_head_factor lets blocks go on).");

@@ -396,6 +396,10 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["stop_reasons"] = stops;
   j["energy_stops_on_steep_ground"] = s.energy_stops_on_steep_ground;
   j["steepest_energy_stop_deg"] = s.steepest_energy_stop_deg;
+  j["energy_stops_on_steep_ground_x_m"] =
+      s.energy_stops_on_steep_ground > 0
+          ? json{{"min", s.energy_stop_steep_x_min}, {"max", s.energy_stop_steep_x_max}}
+          : json(nullptr);
   j["energy_stops_at_first_impact"] = s.energy_stops_at_first_impact;
   json lines = json::array();
   for (const auto& l : s.lines)

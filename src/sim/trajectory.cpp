@@ -264,8 +264,10 @@ class Integrator {
     note_speed(v_, omega_);
     switch (res.result) {
       case model::ImpactResult::stopped:
-        // Said in the run's notes: tan β > tan φ, where sliding would not have stopped.
-        if (std::abs(s.d.z) > m_.surface(s.material).tan_phi * std::abs(s.d.x))
+        // Said in the run's notes: tan β > tan φ, where sliding would not have stopped, on
+        // ground falling onwards (not a counter-slope: sliding back ends short of here).
+        if (std::abs(s.d.z) > m_.surface(s.material).tan_phi * std::abs(s.d.x) &&
+            !(s.d.z * s.d.x * profile_.main_direction() > 0))
           out_.steep_stop_tan = static_cast<float>(std::abs(s.d.z) / std::abs(s.d.x));
         return stop(StopReason::energy);
       case model::ImpactResult::sliding:

@@ -55,6 +55,9 @@ class RunSamples {
   // steepest such ground's tan β.
   std::uint64_t steep_energy_stops() const { return steep_energy_stops_; }
   double steepest_energy_stop_tan() const { return steepest_tan_; }
+  // Where they stopped: the least and the largest x (m; +inf and −inf when none did).
+  double steep_energy_stop_x_min() const { return steep_x_min_; }
+  double steep_energy_stop_x_max() const { return steep_x_max_; }
   // Energy stops at the trajectory's first impact, and the range of their largest speeds (m/s;
   // 0 and 0 when there are none).
   std::uint64_t first_impact_stops() const { return first_impact_stops_; }
@@ -73,6 +76,8 @@ class RunSamples {
   std::array<std::uint64_t, kStopReasonCount> stops_{};
   std::uint64_t steep_energy_stops_ = 0;
   double steepest_tan_ = 0;
+  double steep_x_min_ = std::numeric_limits<double>::infinity();
+  double steep_x_max_ = -std::numeric_limits<double>::infinity();
   std::uint64_t first_impact_stops_ = 0;
   double first_stop_speed_min_ = std::numeric_limits<double>::infinity(), first_stop_speed_max_ = 0;
 };
@@ -120,6 +125,7 @@ struct RunStatistics {
   // stops a block whatever the slope).
   std::uint64_t energy_stops_on_steep_ground = 0;
   double steepest_energy_stop_deg = 0;  // the steepest ground of those (°)
+  double energy_stop_steep_x_min = 0, energy_stop_steep_x_max = 0;  // where they stopped (m)
   // Energy stops at the first impact: blocks that never got going, dropped gently (a source a
   // little above the ground) or hard (a fall so long that the impact takes nearly everything:
   // the restitution factors fall as its energy rises, Eq 6.4). Their largest speed, from the

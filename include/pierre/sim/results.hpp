@@ -40,9 +40,11 @@ struct TrajectorySummary {
   StopReason stop_reason = StopReason::numerical;
   bool has_first_impact = false;
   bool has_floor_contact = false;  // reached SimulationSettings::floor_segment or beyond
-  // An energy stop (Eq 3.13) on ground steeper than its friction angle: tan β of that ground
-  // (+inf for a vertical face), else 0. The model stops the block there whatever the slope
-  // (model-2d.md §3 step 8), where a block at rest would slide on. (A float: it fits the padding.)
+  // An energy stop (Eq 3.13) on ground steeper than its friction angle that falls in the travel
+  // direction (or a vertical face): tan β of that ground (+inf for a vertical face), else 0. The
+  // model stops the block there whatever the slope (model-2d.md §3 step 8), where a block at
+  // rest would slide on. Not on a counter-slope, where it would slide back, short of where it
+  // stopped (a ditch's far side). (A float: it fits the padding.)
   float steep_stop_tan = 0;
   double runout() const;         // horizontal distance start → stop, m
 };

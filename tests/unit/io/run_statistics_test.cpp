@@ -183,19 +183,23 @@ TEST(RunStatistics, StopReasonNotesSayWhatTheCountsMean) {
 // ground (atan of the largest tan β: 1 → 45°, √3 → 60°), and said in one note.
 TEST(RunStatistics, EnergyStopsOnSteepGroundAreCountedAndNoted) {
   design::RunSamples s(0, 1);
+  double x = 10;
   for (const float tan_beta : {0.0f, 1.0f, 1.7320508f, 0.0f}) {
     sim::TrajectorySummary t;
     t.stop_reason = sim::StopReason::energy;
     t.steep_stop_tan = tan_beta;
+    t.stop = {x *= 2, 0};  // 20, 40, 80, 160 m: the steep ones at 40 and 80 m
     s.add(t);
   }
   const auto st = design::run_statistics({}, s);
   EXPECT_EQ(st.energy_stops_on_steep_ground, 2u);
   EXPECT_NEAR(st.steepest_energy_stop_deg, 60.0, 1e-5);
+  EXPECT_EQ(st.energy_stop_steep_x_min, 40.0);
+  EXPECT_EQ(st.energy_stop_steep_x_max, 80.0);
   const auto notes = design::stop_reason_notes(st);
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_EQ(notes[0].rfind("2 blocks were stopped by the energy criterion (Eq 3.13) on ground "
-                           "steeper than its friction angle (up to 60.0°)",
+                           "steeper than its friction angle (up to 60.0°, at x = 40.0 to 80.0 m)",
                            0),
             0u)
       << notes[0];
