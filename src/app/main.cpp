@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "run_steps.hpp"
 #include "pierre/io/input_error.hpp"
+#include "pierre/io/nearest_name.hpp"
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/version.hpp"
 
@@ -72,6 +73,30 @@ std::string single_dash_long_option(int argc, char** argv, const std::vector<CLI
           if (l == name) return a;
   }
   return {};
+}
+
+// "; did you mean --rules?" for an option of `c` near `found` ("--rule"), else "".
+std::string nearest_option_hint(const CLI::App& c, const std::string& found) {
+  std::vector<std::string> names;
+  for (const CLI::Option* o : c.get_options())
+    for (const std::string& l : o->get_lnames()) names.push_back(l);
+  const std::string bare = found.substr(found.find_first_not_of('-'), found.find('=') - found.find_first_not_of('-'));
+  const std::string near = pierre::io::detail::nearest_name(bare, names);
+  return near.empty() ? std::string() : "; did you mean --" + near + "?";
+}
+
+// A word (not an option, not the scenario `c` took) that follows another word after the
+// command ("pierre run s.toml out": "out" after the scenario), or nullptr: a value given without
+// its option.
+const char* word_after_word(int argc, char** argv, const CLI::App& c) {
+  std::string scenario;
+  if (const CLI::Option* o = c.get_option_no_throw("scenario"); o && !o->results().empty())
+    scenario = o->results().front();
+  for (int i = 3; i < argc; ++i) {
+    if (std::string_view(argv[i]) == "--") break;
+    if (argv[i][0] != '-' && argv[i - 1][0] != '-' && argv[i] != scenario) return argv[i];
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -157,8 +182,9 @@ int main(int argc, char** argv) {
           for (const auto& w : extra) words += (words.empty() ? "" : " ") + w;
           const char* name = c->get_name().c_str();
           if (!extra.empty() && extra.front().size() > 1 && extra.front()[0] == '-')
-            std::fprintf(stderr, "pierre %s: found %s: %s is not an option of pierre %s (pierre %s --help)\n",
-                         name, words.c_str(), extra.front().c_str(), name, name);
+            std::fprintf(stderr, "pierre %s: found %s: %s is not an option of pierre %s%s (pierre %s --help)\n",
+                         name, words.c_str(), extra.front().c_str(), name,
+                         nearest_option_hint(*c, extra.front()).c_str(), name);
           else
             std::fprintf(stderr, "pierre %s: found %s, expected no more arguments (pierre %s --help)\n",
                          name, words.c_str(), name);
@@ -188,8 +214,13 @@ int main(int argc, char** argv) {
                                    : what == "scenario" ? "the scenario file (TOML) to read"
                                                         : "a " + what;
       const char* name = (*parsed)->get_name().c_str();
-      std::fprintf(stderr, "pierre %s: found no %s, expected %s (pierre %s --help)\n", name,
-                   what.c_str(), expected.c_str(), name);
+      // `pierre run s.toml out`: the folder typed without its option.
+      std::string hint;
+      if (what == "--out")
+        if (const char* w = word_after_word(argc, argv, **parsed))
+          hint = fmt::format("; {} stands alone: did you mean --out {}?", w, w);
+      std::fprintf(stderr, "pierre %s: found no %s, expected %s%s (pierre %s --help)\n", name,
+                   what.c_str(), expected.c_str(), hint.c_str(), name);
       return kExitInput;
     } catch (const CLI::ParseError& e) {
       if (said_misspelt_command(argc, argv, subs)) return kExitInput;

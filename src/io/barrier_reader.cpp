@@ -430,7 +430,7 @@ void read_barriers(const TomlTable& top, const RulesFolder& rules_folder, Loaded
     for (const char* key : {"acceptable_energy_exceedance", "acceptable_height_exceedance"}) {
       const auto p = t.number(key);
       if (!p) continue;
-      t.check(key, *p > 0 && *p < 1, "a probability in (0, 1)");
+      t.check(key, *p > 0 && *p < 1, probability_expected("a probability in (0, 1)", *p));
       if (!b.candidate)
         t.fail(key, "no acceptable probability without a [barriers.candidate] (without one the "
                     "barrier is a design and reports only the advisory lines)");

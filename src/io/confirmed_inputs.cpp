@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "nearest_name.hpp"
+#include "pierre/io/nearest_name.hpp"
 
 namespace pierre::io::detail {
 namespace {

@@ -1,4 +1,4 @@
-#include "nearest_name.hpp"
+#include "pierre/io/nearest_name.hpp"
 
 #include <algorithm>
 #include <cctype>

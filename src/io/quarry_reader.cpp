@@ -375,7 +375,8 @@ void read_exceedance(const TomlTable& q, design::QuarrySpec& spec, const fs::pat
       const toml::node& e = *ex->get(k);
       const std::string field = fmt::format("{}[{}]", q.field("exceedance"), k);
       const double v = coordinate(q, e, field, expected);
-      if (!(v > 0 && v < 1)) throw InputError(file, line_of(e), field, describe(e), expected);
+      if (!(v > 0 && v < 1))
+        throw InputError(file, line_of(e), field, describe(e), detail::probability_expected(expected, v));
       if (std::find(spec.exceedance.begin(), spec.exceedance.end(), v) != spec.exceedance.end())
         throw InputError(file, line_of(e), field, describe(e),
                          "a probability not already in the list (each gives one row)");

@@ -18,7 +18,7 @@
 
 #include "barrier_reader.hpp"
 #include "confirmed_inputs.hpp"
-#include "nearest_name.hpp"
+#include "pierre/io/nearest_name.hpp"
 #include "pierre/io/quarry_reader.hpp"
 #include "section_readers.hpp"
 #include "text_check.hpp"

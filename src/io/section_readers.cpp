@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "csv_table.hpp"
-#include "nearest_name.hpp"
+#include "pierre/io/nearest_name.hpp"
 #include "pierre/io/input_error.hpp"
 #include "pierre/model/model_defaults.hpp"
 #include "pierre/sim/trajectory.hpp"

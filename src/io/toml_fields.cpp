@@ -1,8 +1,9 @@
 #include "toml_fields.hpp"
 
-#include "nearest_name.hpp"
+#include "pierre/io/nearest_name.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -70,6 +71,53 @@ TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::stri
     : TomlTable(std::move(file), t, std::move(prefix), line, allowed, nullptr) {}
 
 namespace {
+
+// Line n (1-based) of text, without its newline; empty past the end.
+std::string_view line_text(std::string_view text, long n) {
+  std::size_t pos = 0;
+  for (long k = 1; k < n && pos != std::string_view::npos; ++k) {
+    pos = text.find('\n', pos);
+    if (pos != std::string_view::npos) ++pos;
+  }
+  if (pos == std::string_view::npos || pos > text.size()) return {};
+  return text.substr(pos, text.find('\n', pos) - pos);
+}
+
+// Text that opens with a number: "2700 kg/m3", "12,5", " 5".
+bool number_in_text(std::string_view t) {
+  const std::size_t i = t.find_first_not_of(" \t+-");
+  return i != std::string_view::npos && std::isdigit(static_cast<unsigned char>(t[i]));
+}
+
+// A key's value that opens with a letter: `name = Preg 1` (true, false, inf and nan are values).
+bool bare_word_value(std::string_view line) {
+  const std::size_t eq = line.find('=');
+  if (eq == std::string_view::npos) return false;
+  const std::size_t i = line.find_first_not_of(" \t", eq + 1);
+  return i != std::string_view::npos && std::isalpha(static_cast<unsigned char>(line[i]));
+}
+
+// A syntax error at a letter (or °, %) right after a number that opens a key's value:
+// `height = 5 m`, `mass = 2700kg`, `angle = 35°`.
+bool unit_after_number(std::string_view line, std::string_view what) {
+  if (what.find("saw '") == std::string_view::npos) return false;
+  const std::size_t eq = line.find('=');
+  if (eq == std::string_view::npos) return false;
+  std::size_t i = line.find_first_not_of(" \t", eq + 1);
+  if (i == std::string_view::npos) return false;
+  if (line[i] == '+' || line[i] == '-') ++i;
+  if (i >= line.size() || !std::isdigit(static_cast<unsigned char>(line[i]))) return false;
+  while (i < line.size() && (std::isdigit(static_cast<unsigned char>(line[i])) || line[i] == '.' || line[i] == '_'))
+    ++i;
+  while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+  if (i >= line.size()) return false;
+  const unsigned char c = static_cast<unsigned char>(line[i]);
+  // Not an exponent (5e3 is a number) unless letters follow it (5em is not).
+  return (std::isalpha(c) && !((c == 'e' || c == 'E') && i + 1 < line.size() &&
+                               (std::isdigit(static_cast<unsigned char>(line[i + 1])) || line[i + 1] == '-' || line[i + 1] == '+'))) ||
+         c == '%' || c >= 0x80;  // ° and other units in UTF-8
+}
+
 
 // The header a table's keys are written under, from its field path: [simulation] for
 // "simulation", [materials.face], [[sources]] for "sources[0]", [barriers.candidate] for
@@ -196,6 +244,13 @@ std::optional<double> TomlTable::number(std::string_view key) const {
     v = static_cast<double>(i->get());
   else if (const auto* f = n->as_floating_point())
     v = f->get();
+  else if (const auto* s = n->as_string(); s && number_in_text(s->get()))
+    // "2700 kg/m3", "12,5": a number written as text, with its unit or a decimal comma.
+    fail(key, fmt::format("a number, written without quotes{}",
+                          s->get().find(',') != std::string::npos
+                              ? " and with a decimal point (12.5, not \"12,5\")"
+                              : " or unit (each value has a fixed unit: m, kg, kg/m³, m/s, °; "
+                                "docs/scenario-format.md)"));
   else
     fail(key, "a number");
   if (!std::isfinite(v)) fail(key, "a finite number");
@@ -321,6 +376,12 @@ std::string syntax_problem(std::string_view description, long column) {
 
 }  // namespace
 
+std::string probability_expected(std::string expected, double found) {
+  if (found >= 1 && found < 100)
+    expected += fmt::format(" (a fraction, not a percentage: {:g} % is {:g})", found, found / 100);
+  return expected;
+}
+
 toml::table parse_toml(const std::filesystem::path& file, const std::string& text) {
   // Text that is not UTF-8, or holds control characters, checked here line by line: toml++
   // names such a byte at the line before when it opens a line, in its own words.
@@ -351,6 +412,14 @@ toml::table parse_toml(const std::filesystem::path& file, const std::string& tex
       // A value cut short by a comma: most often a decimal comma (a European keyboard).
       expected += "; a decimal comma? TOML numbers take a point (0.5, not 0,5); several values "
                   "are an array, [1.0, 2.0]";
+    } else if (const long n = static_cast<long>(e.source().begin.line); unit_after_number(line_text(text, n), what)) {
+      // `height = 5 m`, `density = 2700kg`: the unit typed as a habit.
+      expected += "; a unit after the number? write the number alone (5.0): each value has a "
+                  "fixed unit (m, kg, kg/m³, m/s, °; docs/scenario-format.md)";
+    } else if (what.find("could not determine value type") != std::string_view::npos &&
+               bare_word_value(line_text(text, static_cast<long>(e.source().begin.line)))) {
+      // `name = Preg 1`: text without its quotes.
+      expected += "; text? put it in quotes (name = \"Preg 1\")";
     } else if (what.find("unescaped control characters") != std::string_view::npos) {
       // toml++ reads past a string's missing closing quote to the end of the line.
       expected += "; a string not closed on its line? every \"…\" needs its closing quote";

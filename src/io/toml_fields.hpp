@@ -86,6 +86,10 @@ class TomlTable {
   Sections sections_;
 };
 
+// What a probability in (0, 1) expects, with the fraction meant when `found` reads as a
+// percentage (5 for 5 %: "a fraction: 5 % is 0.05").
+std::string probability_expected(std::string expected, double found);
+
 // TOML text parsed; InputError at the syntax error's line.
 toml::table parse_toml(const std::filesystem::path& file, const std::string& text);
 

@@ -672,6 +672,19 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_NE(pierre("validate " + kScenario + " foo").err.find(
                 "pierre validate: found foo, expected no more arguments"),
             std::string::npos);
+  // A misspelt option is named with the nearest one (new-user review: --rule for --rules), and
+  // an output folder typed without --out is pointed at; an option's value, or the scenario
+  // after options, is not taken for one.
+  EXPECT_NE(pierre(run + " --rule " + q(dir_)).err.find(
+                "--rule is not an option of pierre run; did you mean --rules? (pierre run --help)"),
+            std::string::npos);
+  EXPECT_EQ(pierre("run " + kScenario + " outdir").err,
+            "pierre run: found no --out, expected --out DIR, the folder the results go to; outdir "
+            "stands alone: did you mean --out outdir? (pierre run --help)\n");
+  EXPECT_EQ(pierre("run --seed 3 " + kScenario).err,
+            "pierre run: found no --out, expected --out DIR, the folder the results go to (pierre "
+            "run --help)\n");
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
   // Words after "--" are named too (it said "found , expected ...").
   const Result after_dashes = pierre("run " + kScenario + " --out " + q(dir_ / "x") + " -- foo");
   EXPECT_EQ(after_dashes.code, 2);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "nearest_name.hpp"
+#include "pierre/io/nearest_name.hpp"
 #include "pierre/io/scenario_reader.hpp"
 #include "test_files.hpp"
 

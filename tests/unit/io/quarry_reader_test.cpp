@@ -204,6 +204,15 @@ observed = { file = "observed.csv" }
   EXPECT_EQ(s.observed.rd.metres, (std::vector<double>{10.5, 12.0}));
 }
 
+// A probability typed as a percentage is told the fraction it means (new-user review:
+// exceedance = [5, 1] got only "in (0, 1)").
+TEST(QuarryReader, APercentageForAProbabilityIsToldItsFraction) {
+  EXPECT_EQ(error_of(section_with(5, "exceedance = [0.05, 5]")).expected(),
+            "a probability of exceedance in (0, 1) (a fraction, not a percentage: 5 % is 0.05)");
+  EXPECT_EQ(error_of(section_with(5, "exceedance = [0.05, 250.0]")).expected(),
+            "a probability of exceedance in (0, 1)");
+}
+
 TEST(QuarryReader, NoQuarries) {
   test::TempDir dir;
   EXPECT_TRUE(read(dir, "[scenario]\nname = \"x\"\n").empty());

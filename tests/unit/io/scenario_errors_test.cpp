@@ -312,6 +312,11 @@ TEST(ScenarioSyntax, ADecimalCommaAndAnUnclosedStringAreHinted) {
   const Slip cases[] = {
       {"throws = 2,5", "a decimal comma? TOML numbers take a point (0.5, not 0,5)"},
       {"throws = \"2", "a string not closed on its line? every \"…\" needs its closing quote"},
+      // A unit typed after the number, with or without a space, and text without its quotes.
+      {"throws = 2 m", "a unit after the number? write the number alone (5.0)"},
+      {"throws = 2700kg", "a unit after the number?"},
+      {"throws = 35°", "a unit after the number?"},
+      {"throws = Preg 1", "text? put it in quotes (name = \"Preg 1\")"},
   };
   for (const Slip& c : cases) {
     try {
@@ -332,6 +337,27 @@ TEST(ScenarioSyntax, ADecimalCommaAndAnUnclosedStringAreHinted) {
     EXPECT_EQ(e.expected(), "valid TOML (https://toml.io); this is a CSV file: give the scenario "
                             "(.toml) that names it");
   }
+}
+
+// A number written as text: with its unit, or with a decimal comma, the expectation says which
+// to leave out; other text is only "a number".
+TEST(ScenarioSyntax, ANumberWrittenAsTextIsToldHowToWriteIt) {
+  TempDir dir;
+  auto error_of = [&](const std::string& text) {
+    try {
+      (void)load_scenario(dir.write("s.toml", text), kRules);
+    } catch (const InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "no InputError";
+    return InputError("", 0, "", "", "");
+  };
+  EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"0.5 m\"")).expected(),
+            "a number, written without quotes or unit (each value has a fixed unit: m, kg, kg/m³, "
+            "m/s, °; docs/scenario-format.md)");
+  EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"0,5\"")).expected(),
+            "a number, written without quotes and with a decimal point (12.5, not \"12,5\")");
+  EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"rough\"")).expected(), "a number");
 }
 
 // A syntax error says what is malformed, not toml++'s "Error while parsing …" ("found Error
