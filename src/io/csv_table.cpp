@@ -248,9 +248,15 @@ void name_columns(std::vector<std::string>& cells, const std::filesystem::path& 
                                          ? "; the rows' decimal commas must then become "
                                            "points (10,5 → 10.5)"
                                          : ""));
+      // One cell where several columns belong: a title line above the header, as a spreadsheet
+      // export often has.
+      const bool title = cells.size() == 1 && allowed.size() > 1;
       throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
-                       fmt::format("only the columns {}{}", join(allowed),
-                                   aliases.empty() ? "" : alias_note(aliases)));
+                       fmt::format("only the columns {}{}{}", join(allowed),
+                                   aliases.empty() ? "" : alias_note(aliases),
+                                   title ? "; a title line? delete it, or start it with # (a "
+                                           "comment line)"
+                                         : ""));
     }
     if (std::count(cells.begin(), cells.end(), h) > 1)
       throw InputError(file, line_no, "header", fmt::format("column \"{}\" twice", h),
