@@ -80,7 +80,9 @@ std::string nearest_option_hint(const CLI::App& c, const std::string& found) {
   std::vector<std::string> names;
   for (const CLI::Option* o : c.get_options())
     for (const std::string& l : o->get_lnames()) names.push_back(l);
-  const std::string bare = found.substr(found.find_first_not_of('-'), found.find('=') - found.find_first_not_of('-'));
+  const std::size_t from = found.find_first_not_of('-');
+  if (from == std::string::npos) return {};  // "---": nothing to compare
+  const std::string bare = found.substr(from, found.find('=') - from);
   const std::string near = pierre::io::detail::nearest_name(bare, names);
   return near.empty() ? std::string() : "; did you mean --" + near + "?";
 }

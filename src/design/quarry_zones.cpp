@@ -180,6 +180,7 @@ std::string group_rows(const std::vector<QuarrySectionInput>& in, QuarryDesign& 
       QuarryRow row;
       row.name = s.spec.group.empty() ? s.spec.name : s.spec.group;
       row.rules = s.rules.name;
+      row.min_reached = s.rules.min_reached;
       d.rows.push_back(std::move(row));
       if (!s.spec.group.empty()) group_row[s.spec.group] = r;
     }
@@ -301,9 +302,11 @@ void bench_checks(QuarrySectionResult& sr, const QuarryRow& row, const QuarryRul
     if (l.status == CheckStatus::pass && row.reached_floor < rules.min_reached) {
       l.status = CheckStatus::warn;
       l.reason += ", but only " + std::to_string(row.reached_floor) + " of them reached the floor (< " +
-                  std::to_string(rules.min_reached) +
-                  ", the rule set's min_reached): the others stopped above the toe and say "
-                  "nothing of the bench; " + std::string(kTooFewReachedHint);
+                  std::to_string(rules.min_reached) + ", the rule set's min_reached): " +
+                  (row.reached_floor < row.thrown
+                       ? "the others stopped above the toe and say nothing of the bench; " +
+                             std::string(kTooFewReachedHint)
+                       : std::string("too few blocks thrown: more throws"));
     }
   }
   checks.push_back(std::move(l));
@@ -406,7 +409,7 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
                       " blocks reached the floor (< " +
                       std::to_string(rules.min_reached) +
                       ", the rule set's min_reached): too few to say where the zone ends; " +
-                      kTooFewReachedHint;
+                      (row.reached_floor < row.thrown ? kTooFewReachedHint : "more throws");
         }
         if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.

@@ -32,7 +32,10 @@ void keep(LineSamples& l, const sim::Crossing& c) {
 
 void RunSamples::add(const sim::TrajectorySummary& t) {
   runout_.push_back(t.runout());
-  if (t.stop_reason != sim::StopReason::energy && t.stop_reason != sim::StopReason::friction)
+  // Still moving at its end, onwards: a block that left at the profile's upper end (thrown back)
+  // bounds nothing of the runouts downslope.
+  if (t.stop_reason != sim::StopReason::energy && t.stop_reason != sim::StopReason::friction &&
+      !(t.stop_reason == sim::StopReason::boundary && (t.stop.x - t.start.x) * main_direction_ <= 0))
     moving_runout_min_ = std::min(moving_runout_min_, t.runout());
   const auto r = static_cast<std::size_t>(t.stop_reason);
   if (r < stops_.size()) ++stops_[r];
@@ -112,7 +115,16 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
   s.runout.p95 = r[1];
   s.runout.p99 = r[2];
   s.runout.max = r[3];
-  s.runout.lower_bound_from = samples.moving_runout_min();
+  // A type-7 percentile interpolates towards the order statistic above its rank: it is a lower
+  // bound once that one is a censored runout, i.e. as soon as it exceeds the largest runout
+  // below the shortest censored one.
+  {
+    const double m = samples.moving_runout_min();
+    double below = -std::numeric_limits<double>::infinity();
+    for (double r : samples.runout())
+      if (r < m) below = std::max(below, r);
+    s.runout.lower_bound_from = std::isinf(m) ? m : below;
+  }
   for (std::size_t k = 0; k < kStopReasonCount; ++k)
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();

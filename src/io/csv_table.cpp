@@ -250,7 +250,7 @@ void name_columns(std::vector<std::string>& cells, const std::filesystem::path& 
                                          : ""));
       // One cell where several columns belong: a title line above the header, as a spreadsheet
       // export often has.
-      const bool title = cells.size() == 1 && allowed.size() > 1;
+      const bool title = cells.size() == 1 && allowed.size() > 1 && commas_below;
       throw InputError(file, line_no, "header", fmt::format("column \"{}\"", h),
                        fmt::format("only the columns {}{}{}", join(allowed),
                                    aliases.empty() ? "" : alias_note(aliases),

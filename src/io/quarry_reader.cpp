@@ -221,7 +221,9 @@ void note_sources_behind_crest(const TomlTable& q, const sim::Scenario& sc,
   for (std::size_t i = 0; n && i < sc.sources.size(); ++i) {
     const double behind = (g.crest.x - sc.sources[i].position.x) * g.direction;
     if (!(behind > 0)) continue;
-    notes.push_back({q.file(), line_of(*n), fmt::format("{}[{}].x", q.field("sources"), i),
+    const toml::array* a = n->as_array();
+    const toml::node* at = a && i < a->size() ? a->get(i) : n;
+    notes.push_back({q.file(), line_of(*at), fmt::format("{}[{}].x", q.field("sources"), i),
                      fmt::format("the source at x = {:g} m lies {:.2f} m behind the crest (x = "
                                  "{:.2f} m), above the face, not on it: its blocks reach the floor "
                                  "only if they roll over the crest; a release from the face lies "

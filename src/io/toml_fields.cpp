@@ -83,6 +83,9 @@ std::string_view line_text(std::string_view text, long n) {
   return text.substr(pos, text.find('\n', pos) - pos);
 }
 
+// Said where a unit was typed with a value.
+constexpr const char* kFixedUnits = "fixed unit: m, kg, kg/m³, m/s, °; docs/scenario-format.md";
+
 // Text that opens with a number: "2700 kg/m3", "12,5", " 5".
 bool number_in_text(std::string_view t) {
   const std::size_t i = t.find_first_not_of(" \t+-");
@@ -113,9 +116,17 @@ bool unit_after_number(std::string_view line, std::string_view what) {
   if (i >= line.size()) return false;
   const unsigned char c = static_cast<unsigned char>(line[i]);
   // Not an exponent (5e3 is a number) unless letters follow it (5em is not).
-  return (std::isalpha(c) && !((c == 'e' || c == 'E') && i + 1 < line.size() &&
-                               (std::isdigit(static_cast<unsigned char>(line[i + 1])) || line[i + 1] == '-' || line[i + 1] == '+'))) ||
-         c == '%' || c >= 0x80;  // ° and other units in UTF-8
+  if (!((std::isalpha(c) && !((c == 'e' || c == 'E') && i + 1 < line.size() &&
+                              (std::isdigit(static_cast<unsigned char>(line[i + 1])) || line[i + 1] == '-' ||
+                               line[i + 1] == '+'))) ||
+        c == '%' || c >= 0x80))  // ° and other units in UTF-8
+    return false;
+  // A unit is one short word (m, kg/m3, m/s, °) that ends the line, or a comment follows it:
+  // "2nd road" or "100 blocks of 1.5 Mg" is text without its quotes.
+  std::size_t end = i;
+  while (end < line.size() && line[end] != ' ' && line[end] != '\t' && line[end] != '#') ++end;
+  const std::size_t rest = line.find_first_not_of(" \t", end);
+  return end - i <= 8 && (rest == std::string_view::npos || line[rest] == '#');
 }
 
 
@@ -249,8 +260,7 @@ std::optional<double> TomlTable::number(std::string_view key) const {
     fail(key, fmt::format("a number, written without quotes{}",
                           s->get().find(',') != std::string::npos
                               ? " and with a decimal point (12.5, not \"12,5\")"
-                              : " or unit (each value has a fixed unit: m, kg, kg/m³, m/s, °; "
-                                "docs/scenario-format.md)"));
+                              : fmt::format(" or unit (each value has a {})", kFixedUnits)));
   else
     fail(key, "a number");
   if (!std::isfinite(v)) fail(key, "a finite number");
@@ -414,8 +424,8 @@ toml::table parse_toml(const std::filesystem::path& file, const std::string& tex
                   "are an array, [1.0, 2.0]";
     } else if (const long n = static_cast<long>(e.source().begin.line); unit_after_number(line_text(text, n), what)) {
       // `height = 5 m`, `density = 2700kg`: the unit typed as a habit.
-      expected += "; a unit after the number? write the number alone (5.0): each value has a "
-                  "fixed unit (m, kg, kg/m³, m/s, °; docs/scenario-format.md)";
+      expected += fmt::format("; a unit after the number? write the number alone (5.0): each value "
+                              "has a {}", kFixedUnits);
     } else if (what.find("could not determine value type") != std::string_view::npos &&
                bare_word_value(line_text(text, static_cast<long>(e.source().begin.line)))) {
       // `name = Preg 1`: text without its quotes.

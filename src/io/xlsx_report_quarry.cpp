@@ -359,13 +359,17 @@ Row Report::quarry_exceedance(lxw_worksheet* ws, Row r, const design::QuarryRow&
                                          });
       if (fit_line == d_.quarry->checks.end() || !st->ks) continue;
       // Why: a p-value below the rule set's, or too few values for a p-value to say anything
-      // ("doubtful (KS p = 0.839)" read as a contradiction; it was n = 5).
+      // ("doubtful (KS p = 0.839)" read as a contradiction; it was n = 5). A line that WARNs for
+      // neither (a doubted input turns its PASS into a WARN) says nothing of the fit.
       const std::string p = fmt::format("{:.3g}", st->ks->p_value);
-      const std::string why =
-          st->ks->p_value < fit_line->limit
-              ? fmt::format("KS p = {} < {:g}", p, fit_line->limit)
-              : fmt::format("from only {} values above zero, where KS p = {} says little",
-                            st->ks->observed, p);
+      std::string why;
+      if (st->ks->p_value < fit_line->limit)
+        why = fmt::format("KS p = {} < {:g}", p, fit_line->limit);
+      else if (st->ks->observed < row.min_reached)
+        why = fmt::format("from only {} values above zero, where KS p = {} says little",
+                          st->ks->observed, p);
+      else
+        continue;
       text(ws, r++, 0,
            replace_all(replace_all(replace_all(t_.get("labels", "fit_doubtful"), "{what}", what),
                                    "{why}", why),

@@ -81,6 +81,7 @@ struct QuarryRow {
   std::vector<std::size_t> sections;  // indices into QuarryDesign::sections
   bool pooled = false;
   std::string rules;                 // rule set name
+  std::size_t min_reached = 0;       // its min_reached (the report says why a fit is doubtful)
   std::uint32_t throws = 0;          // per block and source of its sections (0: unknown, or unequal)
   double height = 0;                 // m: the section's H, or the mean H of the group
   std::uint64_t thrown = 0, reached_floor = 0, not_reached_floor = 0, above_toe = 0,

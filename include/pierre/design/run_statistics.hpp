@@ -102,12 +102,13 @@ struct LineStatistics {
 struct RunoutStatistics {
   std::uint64_t count = 0;
   double p50 = 0, p95 = 0, p99 = 0, max = 0;  // m; NaN when count is 0
-  // A block that left the profile or was cut off was still moving: its runout is a lower bound
-  // (right-censored), and so is every percentile at or beyond the shortest of theirs (m; +inf
-  // when every block came to rest). User review: P95 = P99 = max = 85.00 m, the profile's end,
-  // read as runouts.
+  // A block that left the profile onwards or was cut off was still moving: its runout is a
+  // lower bound (right-censored), and so is every percentile that reaches, or interpolates
+  // towards, the shortest of theirs: every one above `lower_bound_from`, the largest runout
+  // below that shortest (m; −inf when none is below it, +inf when every block came to rest).
+  // User review: P95 = P99 = max = 85.00 m, the profile's end, read as runouts.
   double lower_bound_from = std::numeric_limits<double>::infinity();
-  bool is_lower_bound(double v) const { return v >= lower_bound_from; }
+  bool is_lower_bound(double v) const { return v > lower_bound_from; }
 };
 
 struct StopReasonCount {

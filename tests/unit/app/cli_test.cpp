@@ -681,6 +681,9 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(pierre("run " + kScenario + " outdir").err,
             "pierre run: found no --out, expected --out DIR, the folder the results go to; outdir "
             "stands alone: did you mean --out outdir? (pierre run --help)\n");
+  EXPECT_NE(pierre("run --seed 3 " + kScenario + " outdir").err.find("did you mean --out outdir?"),
+            std::string::npos);
+  EXPECT_EQ(pierre(run + " ---").code, 2);  // all dashes: no option to compare (it threw, exit 3)
   EXPECT_EQ(pierre("run --seed 3 " + kScenario).err,
             "pierre run: found no --out, expected --out DIR, the folder the results go to (pierre "
             "run --help)\n");

@@ -597,6 +597,19 @@ TEST(QuarryZones, ABenchFewBlocksReachedWarns) {
   EXPECT_NE(few->reason.find("not behind the crest"), std::string::npos) << few->reason;
   EXPECT_EQ(find(*out.design, "Enough", "bench.retention")->status, CheckStatus::pass)
       << find(*out.design, "Enough", "bench.retention")->reason;
+  // Every block on the floor, but too few thrown: more throws, not the source or a ledge.
+  auto all = section("All", std::vector<double>(10, 2.0));
+  all.spec.bench_width = 5;
+  const auto small = design_quarry({all}, 1);
+  ASSERT_TRUE(small.design) << small.error;
+  const CheckLine* a = find(*small.design, "All", "bench.retention");
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->status, CheckStatus::warn);
+  EXPECT_NE(a->reason.find("only 10 of them reached the floor (< 30, the rule set's min_reached): "
+                           "too few blocks thrown: more throws"),
+            std::string::npos)
+      << a->reason;
+  EXPECT_EQ(a->reason.find("behind the crest"), std::string::npos) << a->reason;
 }
 
 // The field's P95 against the governing distance: a zone drawn shorter than what was seen

@@ -77,7 +77,7 @@ TEST(ChartScale, TheChartIsAsTallAsTheSectionNeeds) {
   const AxisBounds b = equal_scale_bounds(0, 486, 97.9, 349.95, w, fit);
   EXPECT_EQ(b.x0, 0);
   EXPECT_EQ(b.x1, 500);
-  EXPECT_GT(equal_scale_bounds(0, 486, 97.9, 349.95, w, fit - 2.6 * h / 200).x1, 500);
+  EXPECT_GT(equal_scale_bounds(0, 486, 97.9, 349.95, w, fit - 1.6 * h / 200).x1, 500);
   expect_drawable(0, 486, 97.9, 349.95, w, fit);
   // A long flat section needs no more than the least height. A cliff is held by its height
   // even at the most: its axis is as short as there (round ticks), no shorter.
@@ -85,7 +85,7 @@ TEST(ChartScale, TheChartIsAsTallAsTheSectionNeeds) {
   const double cliff = fitting_height(0, 30, 0, 200, w, h, 2.6 * h);
   EXPECT_GT(cliff, 2 * h);
   EXPECT_EQ(equal_scale_bounds(0, 30, 0, 200, w, cliff).x1, equal_scale_bounds(0, 30, 0, 200, w, 2.6 * h).x1);
-  EXPECT_GT(equal_scale_bounds(0, 30, 0, 200, w, cliff - 2.6 * h / 200).x1, equal_scale_bounds(0, 30, 0, 200, w, cliff).x1);
+  EXPECT_GT(equal_scale_bounds(0, 30, 0, 200, w, cliff - 1.6 * h / 200).x1, equal_scale_bounds(0, 30, 0, 200, w, cliff).x1);
   EXPECT_EQ(fitting_height(0, NAN, 0, 200, w, h, 2.6 * h), 2.6 * h);
 }
 

@@ -58,33 +58,44 @@ TEST(RunStatistics, LinesRunoutAndStops) {
   EXPECT_EQ(st.stop_reasons[1].count, 1u);
 }
 
-// A block still moving where its trajectory ended (off the profile, cut off by a limit) has a
-// runout that is only a lower bound: so is every percentile at or beyond the shortest such
-// runout, and none below it. Blocks at rest (energy, friction) bound nothing.
+// A block still moving where its trajectory ended (off the profile onwards, cut off by a limit)
+// has a runout that is only a lower bound: so is every type-7 percentile that reaches or
+// interpolates towards the shortest such runout, i.e. every one above the largest runout below
+// it. Blocks at rest (energy, friction), and blocks that left at the upper end, bound nothing.
 TEST(RunStatistics, RunoutPercentilesReachingAMovingBlockAreLowerBounds) {
   auto stats_of = [](std::initializer_list<std::pair<double, sim::StopReason>> runs) {
     design::RunSamples s(0, 1);
     for (auto [runout, why] : runs) {
       sim::TrajectorySummary t;
       t.start = {0, 50};
-      t.stop = {runout, 0};
+      t.stop = {runout, 0};  // a negative runout: thrown back, off the upper end
       t.stop_reason = why;
       s.add(t);
     }
     return design::run_statistics({}, s).runout;
   };
   using R = sim::StopReason;
-  // 10, 20, 30 at rest; 40 left the profile: P50 25 and P95 38.5 are runouts, the max is not.
+  // 10, 20, 30 at rest; 40 left the profile: P50 = 25 is a runout; P95 = 30 + 0.85·(40 − 30)
+  // = 38.5 leans on the 40 and is a lower bound, as the max is.
   auto r = stats_of({{10, R::energy}, {20, R::friction}, {30, R::energy}, {40, R::boundary}});
-  EXPECT_DOUBLE_EQ(r.lower_bound_from, 40.0);
+  EXPECT_DOUBLE_EQ(r.lower_bound_from, 30.0);
+  EXPECT_DOUBLE_EQ(r.p95, 38.5);
   EXPECT_FALSE(r.is_lower_bound(r.p50));
-  EXPECT_FALSE(r.is_lower_bound(r.p95));
+  EXPECT_TRUE(r.is_lower_bound(r.p95));
   EXPECT_TRUE(r.is_lower_bound(r.max));
-  // One cut off by the time limit at 22 m: P50 = 25 and above reach it.
+  EXPECT_FALSE(r.is_lower_bound(30.0));  // a percentile that lands on the 30 m block is a runout
+  // One cut off by the time limit at 22 m: P50 = 22 + 0.5·(30 − 22) = 26 and above lean on it;
+  // 10, below it, is a runout.
   r = stats_of({{10, R::energy}, {22, R::time_limit}, {30, R::energy}, {40, R::friction}});
-  EXPECT_DOUBLE_EQ(r.lower_bound_from, 22.0);
+  EXPECT_DOUBLE_EQ(r.lower_bound_from, 10.0);
+  EXPECT_DOUBLE_EQ(r.p50, 26.0);
   EXPECT_TRUE(r.is_lower_bound(r.p50));
   EXPECT_TRUE(r.is_lower_bound(r.max));
+  EXPECT_FALSE(r.is_lower_bound(10.0));
+  // A block thrown back off the upper end (1 m behind its release) bounds nothing downslope.
+  r = stats_of({{10, R::energy}, {-1, R::boundary}, {30, R::energy}, {40, R::friction}});
+  EXPECT_TRUE(std::isinf(r.lower_bound_from));
+  EXPECT_FALSE(r.is_lower_bound(r.max));
   // Every block at rest: nothing is a lower bound.
   r = stats_of({{10, R::energy}, {20, R::friction}});
   EXPECT_TRUE(std::isinf(r.lower_bound_from));

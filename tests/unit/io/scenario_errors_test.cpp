@@ -365,6 +365,9 @@ TEST(ScenarioSyntax, ANumberWrittenAsTextIsToldHowToWriteIt) {
   EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"0,5\"")).expected(),
             "a number, written without quotes and with a decimal point (12.5, not \"12,5\")");
   EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"rough\"")).expected(), "a number");
+  // Text that opens with a number is no number with a unit: no unit hint.
+  EXPECT_EQ(error_of(pierre::test::base_with(2, "name = 2nd road")).expected().find("unit"),
+            std::string::npos);
 }
 
 // A syntax error says what is malformed, not toml++'s "Error while parsing …" ("found Error

@@ -617,8 +617,9 @@ TEST(XlsxReport, SmallProbabilitiesOfExceedanceShowAsPercentages) {
   // A check line's probability of exceedance in % (unit "%"): 0.00217 %, not "0.00".
   f->data.checks.push_back(
       line("Screen A", "exceedance.energy", 100 * 2.17e-5, 0.1, "%", design::CheckStatus::pass));
-  // Runouts of which the longest ones left the profile at 85 m: P99 and the max are lower bounds,
-  // shown "≥ 85.00" (they read as runouts), P95 below them is a runout.
+  // Runouts of which the longest ones left the profile at 85 m, the longest at rest 84.75 m: P99
+  // and the max lean on the 85 m and are lower bounds, shown "≥ 85.00" (they read as runouts);
+  // P95 = 84.5 m, below 84.75 m, is a runout.
   auto& ro = f->data.statistics.runout;
   ro = {600, 40.25, 84.5, 85, 85, 84.75};
   const fs::path xlsx = dir.path() / "report.xlsx";
