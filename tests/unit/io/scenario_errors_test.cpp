@@ -22,6 +22,17 @@ using pierre::test::TempDir;
 
 const std::filesystem::path kRules = PIERRE_SOURCE_DIR "/rules";
 
+// The InputError of a scenario written as `text` in `dir` (a failure when there is none).
+InputError scenario_error(TempDir& dir, const std::string& text) {
+  try {
+    (void)load_scenario(dir.write("s.toml", text), kRules);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError for:\n" << text;
+  return InputError("", 0, "", "", "");
+}
+
 struct Case {
   std::string name;
   std::vector<std::pair<int, std::string>> replace;  // base line → new text
@@ -240,12 +251,8 @@ TEST(ScenarioSyntax, RowsAfterAnInlineTableSayToWriteATable) {
 TEST(ScenarioSyntax, AFileGivenForATableSaysTheTablesForm) {
   TempDir dir;
   auto expected_of = [&](const std::string& text) {
-    try {
-      (void)load_scenario(dir.write("s.toml", text), kRules);
-    } catch (const InputError& e) {
-      return e.field() + ": " + e.expected();
-    }
-    return std::string("no error");
+    const InputError e = scenario_error(dir, text);
+    return e.field() + ": " + e.expected();
   };
   EXPECT_EQ(expected_of("profile = \"profile.csv\"\n" + pierre::test::base_with({{8, ""}, {9, ""}})),
             "profile: a table: [profile] with file = \"profile.csv\" on the line below it, or "
@@ -269,12 +276,8 @@ TEST(ScenarioSyntax, AFileGivenForATableSaysTheTablesForm) {
 TEST(ScenarioSyntax, ASectionBelowAnotherHeaderIsToldSo) {
   TempDir dir;
   auto error_of = [&](const std::string& text) {
-    try {
-      (void)load_scenario(dir.write("s.toml", text), kRules);
-    } catch (const InputError& e) {
-      return std::to_string(e.line()) + " " + e.field() + ": " + e.expected();
-    }
-    return std::string("no error");
+    const InputError e = scenario_error(dir, text);
+    return std::to_string(e.line()) + " " + e.field() + ": " + e.expected();
   };
   const std::string points = "points = [[0.0, 10.0, \"rock\"], [10.0, 0.0, \"rock\"], [20.0, 0.0, \"\"]]";
   const std::string advice = "write profile above the first header, or under a header of its own";
@@ -350,15 +353,7 @@ TEST(ScenarioSyntax, ADecimalCommaAndAnUnclosedStringAreHinted) {
 // to leave out; other text is only "a number".
 TEST(ScenarioSyntax, ANumberWrittenAsTextIsToldHowToWriteIt) {
   TempDir dir;
-  auto error_of = [&](const std::string& text) {
-    try {
-      (void)load_scenario(dir.write("s.toml", text), kRules);
-    } catch (const InputError& e) {
-      return e;
-    }
-    ADD_FAILURE() << "no InputError";
-    return InputError("", 0, "", "", "");
-  };
+  auto error_of = [&](const std::string& text) { return scenario_error(dir, text); };
   EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"0.5 m\"")).expected(),
             "a number, written without quotes or unit (each value has a fixed unit: m, kg, kg/m³, "
             "m/s, °; docs/scenario-format.md)");
