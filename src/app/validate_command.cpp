@@ -74,7 +74,7 @@ class ValidateCommand final : public Command {
     }
     const sim::Scenario& s = l.scenario;
     // One item a line: what an engineer checks before a long run, each with its unit.
-    fmt::print("{}: valid.\n  scenario: \"{}\"\n", l.file.string(), s.name);
+    fmt::print("{}: valid{}.\n  scenario: \"{}\"\n", l.file.string(), doubt_text(l), s.name);
     fmt::print("  profile: {} vertices, x from {} to {} m, z from {} to {} m\n",
                s.profile.vertices().size(), design::number_text(s.profile.x_min()),
                design::number_text(s.profile.x_max()), design::number_text(s.profile.z_min()),
@@ -140,6 +140,15 @@ class ValidateCommand final : public Command {
     return t.empty() ? t : t + " from the toe)";
   }
 
+  // ", 2 inputs in doubt (see the notes below)" after "valid" when the readers doubt some: a
+  // reader who stops at "valid." missed them (new-user review: masses in tonnes).
+  static std::string doubt_text(const io::LoadedScenario& l) {
+    const auto n = std::count_if(l.notes.begin(), l.notes.end(),
+                                 [](const io::InputNote& x) { return x.doubt.has_value(); });
+    return n == 0 ? std::string()
+                  : fmt::format(", {} input{} in doubt (see the notes below)", n, n == 1 ? "" : "s");
+  }
+
   // A quarry scenario: one paragraph per section (docs/quarry.md).
   static int print_quarries(const io::LoadedScenario& l) {
     const sim::Scenario& s = l.scenario;
@@ -148,9 +157,9 @@ class ValidateCommand final : public Command {
       mats += fmt::format("{}{} ({})", mats.empty() ? "" : ", ", m.name, m.source);
     std::uint64_t total = 0;
     for (const auto& q : l.quarries) total += q.scenario.trajectory_count();
-    fmt::print("{}: valid. \"{}\": a quarry scenario of {} section{}; {} material{}: {}. {} "
+    fmt::print("{}: valid{}. \"{}\": a quarry scenario of {} section{}; {} material{}: {}. {} "
                "trajector{} to run.\n",
-               l.file.string(), s.name, l.quarries.size(), l.quarries.size() == 1 ? "" : "s",
+               l.file.string(), doubt_text(l), s.name, l.quarries.size(), l.quarries.size() == 1 ? "" : "s",
                s.materials.size(), s.materials.size() == 1 ? "" : "s", mats, total,
                total == 1 ? "y" : "ies");
     for (const auto& q : l.quarries) {

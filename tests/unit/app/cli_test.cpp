@@ -455,8 +455,11 @@ TEST_F(Cli, AProfileListedFromTheToeEndIsNoted) {
   // barrier on such a profile got no design while `check --strict` exited 0).
   EXPECT_EQ(j["input_notes"][0]["in_doubt"], true);
   EXPECT_EQ(pierre("validate --strict " + q(dir_ / "s.toml")).code, 2);
+  // validate's first line says so, for a reader who stops at "valid".
+  EXPECT_NE(v.out.find(": valid, 1 input in doubt (see the notes below).\n"), std::string::npos) << v.out;
   std::ofstream(dir_ / "s.toml", std::ios::app) << "[confirmed]\n\"sources[0].x\" = 199.0\n";
   EXPECT_EQ(pierre("validate --strict " + q(dir_ / "s.toml")).code, 0);
+  EXPECT_NE(pierre("validate " + q(dir_ / "s.toml")).out.find(": valid.\n"), std::string::npos);
 }
 
 // The reader's notes (a profile x out of order read as an overhang, a source far above the
