@@ -100,6 +100,20 @@ bool bare_word_value(std::string_view line) {
   return i != std::string_view::npos && std::isalpha(static_cast<unsigned char>(line[i]));
 }
 
+// What else to leave out of a number written as text: "2,650" a thousands separator (a comma
+// before three digits: read as a decimal comma it is 1000 times too small), "12,5" a decimal
+// comma, "2700 kg/m3" a unit.
+std::string number_text_advice(std::string_view t) {
+  const std::size_t c = t.find(',');
+  if (c != std::string_view::npos) {
+    std::size_t d = c + 1;
+    while (d < t.size() && std::isdigit(static_cast<unsigned char>(t[d]))) ++d;
+    if (d - c - 1 == 3) return " and without a thousands separator (2650, not \"2,650\")";
+    return " and with a decimal point (12.5, not \"12,5\")";
+  }
+  return fmt::format(" or unit (each value has a {})", kFixedUnits);
+}
+
 // A syntax error at a letter (or °, %) right after a number that opens a key's value:
 // `height = 5 m`, `mass = 2700kg`, `angle = 35°`.
 bool unit_after_number(std::string_view line, std::string_view what) {
@@ -256,11 +270,7 @@ std::optional<double> TomlTable::number(std::string_view key) const {
   else if (const auto* f = n->as_floating_point())
     v = f->get();
   else if (const auto* s = n->as_string(); s && number_in_text(s->get()))
-    // "2700 kg/m3", "12,5": a number written as text, with its unit or a decimal comma.
-    fail(key, fmt::format("a number, written without quotes{}",
-                          s->get().find(',') != std::string::npos
-                              ? " and with a decimal point (12.5, not \"12,5\")"
-                              : fmt::format(" or unit (each value has a {})", kFixedUnits)));
+    fail(key, "a number, written without quotes" + number_text_advice(s->get()));
   else
     fail(key, "a number");
   if (!std::isfinite(v)) fail(key, "a finite number");
@@ -281,6 +291,8 @@ std::optional<std::int64_t> TomlTable::integer(std::string_view key) const {
   const toml::node* n = find(key);
   if (!n) return std::nullopt;
   const auto* i = n->as_integer();
+  if (const auto* s = n->as_string(); !i && s && number_in_text(s->get()))
+    fail(key, "an integer, written without quotes" + number_text_advice(s->get()));
   if (!i) fail(key, "an integer");
   return i->get();
 }

@@ -360,6 +360,14 @@ TEST(ScenarioSyntax, ANumberWrittenAsTextIsToldHowToWriteIt) {
   EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"0,5\"")).expected(),
             "a number, written without quotes and with a decimal point (12.5, not \"12,5\")");
   EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"rough\"")).expected(), "a number");
+  // A comma before three digits is a thousands separator: a decimal point there would make the
+  // value 1000 times too small.
+  EXPECT_EQ(error_of(pierre::test::base_with(14, "roughness = \"2,650\"")).expected(),
+            "a number, written without quotes and without a thousands separator (2650, not \"2,650\")");
+  // An integer written as text, likewise.
+  EXPECT_EQ(error_of(pierre::test::base_with(6, "throws = \"5\"")).expected(),
+            "an integer, written without quotes or unit (each value has a fixed unit: m, kg, kg/m³, "
+            "m/s, °; docs/scenario-format.md)");
   // Text that opens with a number is no number with a unit: no unit hint.
   EXPECT_EQ(error_of(pierre::test::base_with(2, "name = 2nd road")).expected().find("unit"),
             std::string::npos);
