@@ -14,10 +14,15 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Why few blocks reached the floor: a source off the face, or ground above the toe that held them.
-constexpr const char* kTooFewReachedHint =
-    "check that the source lies over the face, not behind the crest, or whether a ledge or bench "
-    "above the toe held the blocks";
+
+// What to do when fewer blocks than min_reached reached the floor: with some stopped above the
+// toe, look at the source and the face; with every one on the floor, too few were thrown.
+std::string few_reached_advice(const QuarryRow& row) {
+  return row.reached_floor < row.thrown
+             ? "check that the source lies over the face, not behind the crest, or whether a "
+               "ledge or bench above the toe held the blocks"
+             : "more throws";
+}
 
 std::string num(double v, int precision = 4) {
   if (std::isinf(v)) return v > 0 ? "beyond the profile" : "-inf";
@@ -304,9 +309,9 @@ void bench_checks(QuarrySectionResult& sr, const QuarryRow& row, const QuarryRul
       l.reason += ", but only " + std::to_string(row.reached_floor) + " of them reached the floor (< " +
                   std::to_string(rules.min_reached) + ", the rule set's min_reached): " +
                   (row.reached_floor < row.thrown
-                       ? "the others stopped above the toe and say nothing of the bench; " +
-                             std::string(kTooFewReachedHint)
-                       : std::string("too few blocks thrown: more throws"));
+                       ? "the others stopped above the toe and say nothing of the bench; "
+                       : "too few blocks thrown: ") +
+                  few_reached_advice(row);
     }
   }
   checks.push_back(std::move(l));
@@ -409,7 +414,7 @@ void section_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet& 
                       " blocks reached the floor (< " +
                       std::to_string(rules.min_reached) +
                       ", the rule set's min_reached): too few to say where the zone ends; " +
-                      (row.reached_floor < row.thrown ? kTooFewReachedHint : "more throws");
+                      few_reached_advice(row);
         }
         if (work_area) l.reason += share_beyond(value);
         // An area past the modelled floor: no block was simulated over the ground there.

@@ -184,8 +184,9 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
     notes.push_back(std::to_string(k) + (one ? " block was" : " blocks were") +
                     " stopped by the energy criterion (Eq 3.13) on ground steeper than its "
                     "friction angle (up to " + steepest + "°, " + where +
-                    "), where a block at rest would slide on down the slope: the model stops a block whose energy head after an impact is below "
-                    "c_stop·R whatever the slope. Check that " + (one ? "it" : "they") +
+                    "), where a block at rest would slide on down the slope: the model stops a "
+                    "block whose energy head after an impact is below c_stop·R whatever the "
+                    "slope. Check that " + (one ? "it" : "they") +
                     " can rest there (on a talus near its angle of repose, likely; on a rock face, "
                     "not: a smaller stop_head_factor lets blocks go on).");
   }

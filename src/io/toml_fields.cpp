@@ -92,11 +92,15 @@ bool number_in_text(std::string_view t) {
   return i != std::string_view::npos && std::isdigit(static_cast<unsigned char>(t[i]));
 }
 
+// Where a `key = value` line's value starts, or npos.
+std::size_t value_start(std::string_view line) {
+  const std::size_t eq = line.find('=');
+  return eq == std::string_view::npos ? eq : line.find_first_not_of(" \t", eq + 1);
+}
+
 // A key's value that opens with a letter: `name = Preg 1` (true, false, inf and nan are values).
 bool bare_word_value(std::string_view line) {
-  const std::size_t eq = line.find('=');
-  if (eq == std::string_view::npos) return false;
-  const std::size_t i = line.find_first_not_of(" \t", eq + 1);
+  const std::size_t i = value_start(line);
   return i != std::string_view::npos && std::isalpha(static_cast<unsigned char>(line[i]));
 }
 
@@ -118,9 +122,7 @@ std::string number_text_advice(std::string_view t) {
 // `height = 5 m`, `mass = 2700kg`, `angle = 35°`.
 bool unit_after_number(std::string_view line, std::string_view what) {
   if (what.find("saw '") == std::string_view::npos) return false;
-  const std::size_t eq = line.find('=');
-  if (eq == std::string_view::npos) return false;
-  std::size_t i = line.find_first_not_of(" \t", eq + 1);
+  std::size_t i = value_start(line);
   if (i == std::string_view::npos) return false;
   if (line[i] == '+' || line[i] == '-') ++i;
   if (i >= line.size() || !std::isdigit(static_cast<unsigned char>(line[i]))) return false;
@@ -142,7 +144,6 @@ bool unit_after_number(std::string_view line, std::string_view what) {
   const std::size_t rest = line.find_first_not_of(" \t", end);
   return end - i <= 8 && (rest == std::string_view::npos || line[rest] == '#');
 }
-
 
 // The header a table's keys are written under, from its field path: [simulation] for
 // "simulation", [materials.face], [[sources]] for "sources[0]", [barriers.candidate] for
@@ -424,6 +425,7 @@ toml::table parse_toml(const std::filesystem::path& file, const std::string& tex
     // The one syntax error a reader of our docs is led into: rows ([[a.b.rows]]) or a sub-table
     // added to a table written inline (`b = { … }`), which TOML closes where it ends.
     const std::string_view what = e.description();
+    const std::string_view at_line = line_text(text, static_cast<long>(e.source().begin.line));
     if (what.find("existing inline table") != std::string_view::npos)
       expected += "; an inline table `name = { … }` cannot take rows or sub-tables later: write it "
                   "as a table, `[name]` with its keys on the lines below";
@@ -434,12 +436,12 @@ toml::table parse_toml(const std::filesystem::path& file, const std::string& tex
       // A value cut short by a comma: most often a decimal comma (a European keyboard).
       expected += "; a decimal comma? TOML numbers take a point (0.5, not 0,5); several values "
                   "are an array, [1.0, 2.0]";
-    } else if (const long n = static_cast<long>(e.source().begin.line); unit_after_number(line_text(text, n), what)) {
+    } else if (unit_after_number(at_line, what)) {
       // `height = 5 m`, `density = 2700kg`: the unit typed as a habit.
       expected += fmt::format("; a unit after the number? write the number alone (5.0): each value "
                               "has a {}", kFixedUnits);
     } else if (what.find("could not determine value type") != std::string_view::npos &&
-               bare_word_value(line_text(text, static_cast<long>(e.source().begin.line)))) {
+               bare_word_value(at_line)) {
       // `name = Preg 1`: text without its quotes.
       expected += "; text? put it in quotes (name = \"Preg 1\")";
     } else if (what.find("unescaped control characters") != std::string_view::npos) {
