@@ -68,7 +68,7 @@ std::map<std::string, Keys, std::less<>> make_sections() {
                  "translational_energy_note", "blocks_sheet"};
   s["basis"] = {"model", "not_modelled", "statistics", "barriers", "quarries"};
   s["headings.barriers"] = {"name",      "line",      "chainage", "v_k",          "h_k",
-                            "v_d",       "e_d",       "free_board", "interception_height",
+                            "v_d",       "m_d",       "e_d",        "free_board", "interception_height",
                             "rules",     "mel_req",   "sel_req",  "energy_class", "class_mel",
                             "class_sel", "candidate", "verdict",  "verdict_lines"};
   s["headings.lines"] = {"name", "chainage", "count", "not_reached", "quantity", "mean", "p50",

@@ -91,7 +91,7 @@ void Report::barrier(lxw_worksheet* ws, const std::string& sheet, const design::
   page_setup(ws);
   width(ws, 0, 0, 34);
   width(ws, 1, 12, 14);
-  text(ws, 0, 0, replace_all(t_.get("titles", "barrier"), "{name}", b.spec.name), title());
+  text(ws, 0, 0, with_name(t_.get("titles", "barrier"), b.spec.name), title());
   check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
   Row r = barrier_overview(ws, 2, b);
   const BarrierSample sample = barrier_sample(b);

@@ -41,6 +41,19 @@ std::string lower(std::string s) {
   return s;
 }
 
+// "Barrier {name}" with a barrier named "Barrier 3" reads "Barrier 3", not "Barrier Barrier 3":
+// the words before {name} are left out when the name already starts with them.
+std::string with_name(const std::string& pattern, const std::string& name) {
+  const std::size_t at = pattern.find("{name}");
+  if (at == std::string::npos) return pattern;
+  std::string before = pattern.substr(0, at);
+  while (!before.empty() && before.back() == ' ') before.pop_back();
+  const bool repeats = !before.empty() && name.size() >= before.size() &&
+                       lower(name.substr(0, before.size())) == lower(before) &&
+                       (name.size() == before.size() || name[before.size()] == ' ');
+  return replace_all(repeats ? pattern.substr(at) : pattern, "{name}", name);
+}
+
 std::string format_number(double v) {
   if (!std::isfinite(v)) return "—";
   return fmt::format("{:.4g}", v);
@@ -346,7 +359,7 @@ std::optional<std::uint32_t> Report::line_index(const std::string& name) const {
 std::string Report::item_sheet_name(std::string_view key, const std::string& item,
                                     std::vector<std::string>& used) {
   const std::string fallback = key == "quarry" ? "Quarry" : "Barrier";
-  std::string base = replace_all(t_.get("sheets", key), "{name}", item);
+  std::string base = with_name(t_.get("sheets", key), item);
   for (char& c : base)
     if (std::string_view("[]:*?/\\'").find(c) != std::string_view::npos) c = '_';
   if (base.empty()) base = fallback;

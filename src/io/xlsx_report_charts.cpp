@@ -47,7 +47,7 @@ lxw_chart* Report::scatter_chart(std::string_view chart_key, const std::string& 
   lxw_chart_font title_font{};
   title_font.size = 11;
   title_font.bold = LXW_EXPLICIT_FALSE;
-  return scatter_chart(chart_key, replace_all(t_.get(section, "title"), "{name}", name),
+  return scatter_chart(chart_key, with_name(t_.get(section, "title"), name),
                        title_font);
 }
 

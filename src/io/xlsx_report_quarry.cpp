@@ -139,7 +139,7 @@ void Report::quarry(lxw_worksheet* ws, const std::string& sheet, std::size_t ri)
   page_setup(ws);
   width(ws, 0, 0, 38);  // "ID, first-impact distance from the toe" whole
   width(ws, 1, 13, 14);  // as a barrier sheet: the check table's merged columns fit its text
-  text(ws, 0, 0, replace_all(t_.get("titles", "quarry"), "{name}", row.name), title());
+  text(ws, 0, 0, with_name(t_.get("titles", "quarry"), row.name), title());
   check(worksheet_set_row(ws, 0, 24, nullptr), "worksheet_set_row");
   Row r = quarry_overview(ws, 2, row, secs);
   r = quarry_geometry(ws, r, secs);

@@ -216,8 +216,8 @@ Row Report::summary_barriers(lxw_worksheet* ws, Row r) {
 Row Report::summary_barrier_values(lxw_worksheet* ws, Row r) {
   r = table_title(ws, r, "barrier_values");
   headings(ws, r++, 0, "barriers",
-           {"name", "line", "rules", "chainage", "v_k", "h_k", "v_d", "e_d", "free_board",
-            "interception_height"},
+           {"name", "line", "rules", "chainage", "v_k", "h_k", "v_d", "m_d", "e_d",
+            "free_board", "interception_height"},
            60);  // h_i's heading takes four lines in a column 12 wide
   for (const auto& b : d_.barriers) {
     const std::string rules = b.rules_name.empty() ? b.spec.rules : b.rules_name;
@@ -228,9 +228,10 @@ Row Report::summary_barrier_values(lxw_worksheet* ws, Row r) {
     num(ws, r, 4, b.v_k.value, number("speed", 1));
     num(ws, r, 5, b.h_k.value, number("length", 1));
     num(ws, r, 6, b.v_d, number("speed", 1));
-    num(ws, r, 7, b.E_d_kJ, number("energy", 1));
-    num(ws, r, 8, b.free_board, number("length", 1));
-    num(ws, r, 9, b.h_i, number("length", 1));
+    num(ws, r, 7, b.m_d, number("mass", 1));
+    num(ws, r, 8, b.E_d_kJ, number("energy", 1));
+    num(ws, r, 9, b.free_board, number("length", 1));
+    num(ws, r, 10, b.h_i, number("length", 1));
     fit_row(ws, r, {{&b.spec.name, 16}, {&b.spec.line, 20}, {&rules, 34}});
     ++r;
   }

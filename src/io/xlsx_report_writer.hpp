@@ -53,6 +53,7 @@ T* check_ptr(T* p, std::string_view what) {
 
 std::string replace_all(std::string s, std::string_view key, std::string_view value);
 std::string lower(std::string s);
+std::string with_name(const std::string& pattern, const std::string& name);
 // An ISO date "YYYY-MM-DD" (anything after the tenth character is ignored).
 std::chrono::year_month_day parse_date(const std::string& s);
 // Four significant digits, "—" for a NaN or an infinity (numbers inside a text).

@@ -446,7 +446,7 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   EXPECT_EQ(number(sum, *sl, 6), 31.0);
   EXPECT_EQ(number(sum, *sl, 7), 400.0);
   EXPECT_EQ(number(sum, *sl, 8), 200.0);
-  EXPECT_EQ(cell(sum, *sl + 1, 2)->text, "Passing height (m)");
+  EXPECT_EQ(cell(sum, *sl + 1, 2)->text, "Passing height of the block centre (m)");
   EXPECT_EQ(number(sum, *sl + 1, 4), 1.2);
   EXPECT_EQ(number(sum, *sl + 1, 6), 6.9);
   EXPECT_EQ(cell(sum, *sl + 2, 2)->text, "Translational energy (kJ)");
@@ -479,8 +479,9 @@ TEST(XlsxReport, LibreOfficeReadsEverySheet) {
   const auto rec = find_row(sum, 0, "Screen A");
   ASSERT_TRUE(rec);
   EXPECT_EQ(number(sum, *rec, 3), 60.0);
-  EXPECT_EQ(number(sum, *rec, 7), 1066.9);
-  EXPECT_EQ(number(sum, *rec, 9), 4.02);
+  EXPECT_EQ(number(sum, *rec, 7), 3704.4);
+  EXPECT_EQ(number(sum, *rec, 8), 1066.9);
+  EXPECT_EQ(number(sum, *rec, 10), 4.02);
   const auto req = find_row(sum, 0, "Screen A", *rec + 1);
   ASSERT_TRUE(req);
   EXPECT_EQ(number(sum, *req, 1), 1386.9);
@@ -742,12 +743,16 @@ TEST(XlsxReport, TheSummaryNamesEachCandidateAndItsVerdict) {
   ASSERT_EQ(r.status, 0) << r.output;
   const Sheet& sum = sheets.at("Summary");
   // The design values: E_d and h_i as the fixture's barrier has them.
-  const auto values = find_row(sum, 7, tpl_heading("e_d"));
+  // The design mass m_d stands beside them: E_d = ½ m_d v_d² is checkable by hand.
+  const auto values = find_row(sum, 8, tpl_heading("e_d"));
   ASSERT_TRUE(values);
+  EXPECT_EQ(cell(sum, *values, 7)->text, tpl_heading("m_d"));
   const auto a_values = find_row(sum, 0, "Screen A", *values);
   ASSERT_TRUE(a_values);
-  EXPECT_EQ(cell(sum, *a_values, 7)->text, "1,066.9") << dump(sum, *a_values);  // E_d_kJ = 1066.9
-  EXPECT_EQ(cell(sum, *a_values, 9)->text, "4.02") << dump(sum, *a_values);      // h_i = 4.02
+  EXPECT_EQ(cell(sum, *a_values, 6)->text, "24.00") << dump(sum, *a_values);     // v_d = 24.0
+  EXPECT_EQ(cell(sum, *a_values, 7)->text, "3,704") << dump(sum, *a_values);     // m_d = 3704.4
+  EXPECT_EQ(cell(sum, *a_values, 8)->text, "1,066.9") << dump(sum, *a_values);  // E_d_kJ = 1066.9
+  EXPECT_EQ(cell(sum, *a_values, 10)->text, "4.02") << dump(sum, *a_values);     // h_i = 4.02
   // The class table: the kit, the verdict and the lines behind it.
   const auto classes = find_row(sum, 6, tpl_heading("candidate"));
   ASSERT_TRUE(classes);
@@ -1409,9 +1414,16 @@ TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
     b.spec.name = name;
     f->data.barriers.push_back(b);
   }
+  // The sheet's heading "Barrier {name}" would repeat the word: "Barrier barrier North".
+  b.spec.name = "barrier North";
+  f->data.barriers.push_back(b);
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, tpl);
   const std::string wb = zip_entry(xlsx, "xl/workbook.xml", dir.path());
+  const std::string strings = zip_entry(xlsx, "xl/sharedStrings.xml", dir.path());
+  EXPECT_EQ(strings.find("Barrier barrier North"), std::string::npos);
+  EXPECT_NE(strings.find(">barrier North<"), std::string::npos);
+  EXPECT_NE(strings.find(">Barrier C<"), std::string::npos);  // a name without the word keeps it
   EXPECT_NE(wb.find("<sheet name=\"summary (2)\""), std::string::npos) << wb;
   EXPECT_NE(wb.find("<sheet name=\"History (2)\""), std::string::npos) << wb;
   EXPECT_NE(wb.find("<sheet name=\"A very long barrier name_ with\""), std::string::npos) << wb;
@@ -1438,7 +1450,7 @@ TEST(XlsxReport, BarrierSheetNamesAreValidAndDistinct) {
     if (sheet.front() == '\'') continue;  // quoted
     EXPECT_FALSE(io::sheet_name_reads_as_reference(sheet)) << f;
   }
-  EXPECT_EQ(charts, 9u * 6u + 1u);
+  EXPECT_EQ(charts, 10u * 6u + 1u);
 }
 
 }  // namespace
