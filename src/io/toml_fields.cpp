@@ -167,6 +167,28 @@ std::string section_advice(std::string_view key) {
   return fmt::format("write {} above the first header, or under a header of its own", key);
 }
 
+// A table at the top level written after a [[list]] item (`[candidate]` below [[barriers]]):
+// TOML reads a header as a full path, so an item's own table is [barriers.candidate].
+std::string item_table_hint(const toml::table& top, std::string_view key, toml::source_index line) {
+  const toml::array* after = nullptr;
+  std::string name;
+  toml::source_index latest = 0;
+  for (auto&& [k, v] : top) {
+    const toml::array* a = v.as_array();
+    if (!a || a->empty() || !a->is_array_of_tables()) continue;
+    const toml::source_index at = a->back().source().begin.line;
+    if (at < line && at > latest) {
+      latest = at;
+      after = a;
+      name = std::string(k.str());
+    }
+  }
+  if (!after) return {};
+  return fmt::format("; a table of the [[{0}]] item above is written [{0}.{1}] (a TOML header is a "
+                     "full path: [{1}] opens a section at the top level)",
+                     name, key);
+}
+
 }  // namespace
 
 TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::string prefix,
@@ -197,6 +219,8 @@ TomlTable::TomlTable(std::filesystem::path file, const toml::table& t, std::stri
       hint = fmt::format("; {} is a section of its own, and TOML puts every key below the {} "
                          "header into it: {}",
                          key, header_of(prefix_), section_advice(key));
+    if (prefix_.empty() && hint.empty() && value.is_table())
+      hint = item_table_hint(t, key, worst->source().begin.line);
     throw InputError(file_, static_cast<long>(worst->source().begin.line), field(written_key(key)),
                      "an unknown key", fmt::format("one of {}{}", names, hint));
   }

@@ -310,6 +310,19 @@ TEST(ScenarioSyntax, ASectionBelowAnotherHeaderIsToldSo) {
               HasSubstr("; the nearest is materials_file"));
   // A key that is no section gets no such hint.
   EXPECT_THAT(error_of(pierre::test::base_with(7, "seeds = 1")), Not(HasSubstr("section")));
+  // A barrier's own table written as [candidate], below its [[barriers]] header: TOML reads it
+  // as a top-level section, and the message gives the header that belongs to the barrier.
+  const std::string root_candidate = pierre::test::base_with({{8, ""}, {9, ""}}) +
+                                     "[[barriers]]\nname = \"B\"\nline = \"L\"\n[candidate]\n"
+                                     "height = 3.0\n";
+  EXPECT_THAT(error_of(root_candidate),
+              HasSubstr("30 candidate: one of scenario, simulation, profile, materials, blocks, "
+                        "sources, observation_lines, barriers, quarries, confirmed; a table of the "
+                        "[[barriers]] item above is written [barriers.candidate]"))
+      << error_of(root_candidate);
+  // Above every [[list]] item there is no item to point to.
+  EXPECT_THAT(error_of("[candidate]\nheight = 3.0\n" + pierre::test::base_with({{8, ""}, {9, ""}})),
+              Not(HasSubstr("item above")));
 }
 
 // The two slips toml++ describes in its own terms get a hint in ours: a decimal comma cuts a
