@@ -61,7 +61,9 @@ SampleNeeded sample_needed(double trajectories, std::uint32_t throws, double rel
 
 std::string throws_needed_text(const SampleNeeded& needed) {
   if (!(needed.throws > 0)) return {};
-  return ", i.e. throws = " + number_text(needed.throws, 9) + " per block and source";
+  return ", i.e. throws = " + number_text(needed.throws, 9) +
+         " per block and source (an estimate that moves with this run's interval; throws = " +
+         number_text(std::ceil(kSampleMargin * needed.throws), 9) + " leaves a margin)";
 }
 
 std::string within_interval_text(std::string_view whose, double confidence, const std::string& bound) {

@@ -66,8 +66,11 @@ struct SampleNeeded {
 };
 SampleNeeded sample_needed(double trajectories, std::uint32_t throws, double relative,
                            double tolerance);
-// ", i.e. throws = 17 per block and source", the end of a sample.size reason; empty when the
-// throws are not known.
+// ", i.e. throws = 17 per block and source (… 22 leaves a margin)", the end of a sample.size
+// reason; empty when the throws are not known. The estimate moves with the run's own interval
+// (a half-width squared: 653 trajectories in one run, 834 in another), so a quarter more is
+// offered as a margin.
+inline constexpr double kSampleMargin = 1.25;
 std::string throws_needed_text(const SampleNeeded& needed);
 
 // A PASS whose margin lies inside the bootstrap interval of what it is judged against, barriers'
