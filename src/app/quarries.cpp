@@ -309,8 +309,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
       print_design(stdout, results);
     }
   });
-  if (o.check && design::any_failure(results.checks)) return kExitCheckFailed;
-  return kExitOk;
+  return check_exit_code(o.check, o.fail_on_warn, results.checks);
 }
 
 }  // namespace pierre::app

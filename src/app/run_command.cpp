@@ -91,6 +91,10 @@ class RunCommand final : public Command {
                 "[confirmed] does not confirm; without it, such an input only keeps the lines "
                 "resting on it from a PASS");
     if (check_)
+      c->add_flag("--fail-on-warn", fail_on_warn_,
+                  "Exit 1 when a check line WARNs too (a gate that takes no advisory line: too few "
+                  "crossings, a doubtful fit, a sample too small)");
+    if (check_)
       c->footer(
           "Example:\n"
           "  pierre check examples/vaujany-2d/scenario.toml --out results/vaujany\n"
@@ -98,7 +102,8 @@ class RunCommand final : public Command {
           "summary.json with \"barriers\" and \"checks\" and report.xlsx, prints the check lines.\n"
           "A quarry scenario ([[quarries]], docs/quarry.md): every section's danger zone and its\n"
           "checks (zone.<work area>, bench.*), summary.json \"quarries\" and \"checks\".\n"
-          "Exit code 0 when every check passes (WARN does not count), 1 when one FAILs, 2 on bad input\n"
+          "Exit code 0 when every check passes (WARN does not count), 1 when one FAILs (or WARNs, with\n"
+          "--fail-on-warn), 2 on bad input\n"
           "or results that cannot be written in DIR (a full disk), 3 on an internal error or when the standard output\n"
           "cannot be written, 130 when interrupted (nothing written).");
     else
@@ -160,6 +165,7 @@ class RunCommand final : public Command {
       q.quiet = quiet_;
       q.log_seconds = log_seconds;
       q.check = check_;
+      q.fail_on_warn = fail_on_warn_;
       q.committed = &committed_;
       return run_quarries(loaded, layout, q);
     }
@@ -221,8 +227,7 @@ class RunCommand final : public Command {
         fmt::print("{}Nothing to check: the scenario has no [[barriers]] or [[quarries]] (exit 0).\n",
                    quiet_ ? "" : "\n");
     });
-    if (check_ && design::any_failure(design_results.checks)) return kExitCheckFailed;
-    return kExitOk;
+    return check_exit_code(check_, fail_on_warn_, design_results.checks);
   }
 
  private:
@@ -232,6 +237,7 @@ class RunCommand final : public Command {
   unsigned threads_ = 0;
   bool check_ = false;
   bool quiet_ = false, impacts_ = false, all_crossings_ = false, strict_ = false;
+  bool fail_on_warn_ = false;
   bool committed_ = false;  // the results are in place in DIR
   CLI::Option* seed_opt_ = nullptr;
   CLI::Option* throws_opt_ = nullptr;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "commands.hpp"
 #include "pierre/io/xlsx_report.hpp"
 
 namespace pierre::app {
@@ -98,6 +99,16 @@ std::vector<std::filesystem::path> commit_results(io::OutputFolder& folder) {
                "with pierre's header), and this run wrote no file of that name.\n",
                f.string());
   return written;
+}
+
+int check_exit_code(bool check, bool fail_on_warn, const std::vector<design::CheckLine>& lines) {
+  if (!check) return kExitOk;
+  if (design::any_failure(lines)) return kExitCheckFailed;
+  if (!design::any_failure(lines, fail_on_warn)) return kExitOk;
+  fmt::print(stderr, "Exit code 1 (--fail-on-warn): {} check line{} WARN.\n",
+             design::count_status(lines, design::CheckStatus::warn),
+             design::count_status(lines, design::CheckStatus::warn) == 1 ? "" : "s");
+  return kExitCheckFailed;
 }
 
 io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectories,

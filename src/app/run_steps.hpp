@@ -10,6 +10,7 @@
 #include "pierre/io/output_folder.hpp"
 #include "pierre/io/report_template.hpp"
 #include "pierre/io/result_writer.hpp"
+#include "pierre/design/check_line.hpp"
 #include "pierre/io/scenario_reader.hpp"
 
 namespace pierre::app {
@@ -27,6 +28,10 @@ std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out,
 // Commits the run's files (io::OutputFolder::commit, a stale impacts.csv removed when pierre
 // wrote it) and says on stderr which file by a result's name was left alone, not being pierre's.
 std::vector<std::filesystem::path> commit_results(io::OutputFolder& folder);
+
+// The exit code once the results are in place: `run` 0; `check` 1 when a line FAILs, or WARNs
+// with --fail-on-warn (then said on stderr, as the verdict's lines say only WARN), else 0.
+int check_exit_code(bool check, bool fail_on_warn, const std::vector<design::CheckLine>& lines);
 
 // summary.json's account of the run: the scenario as loaded (seed and throws after --seed and
 // --throws), what was run, and the report layout among the inputs.

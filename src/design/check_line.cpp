@@ -16,9 +16,10 @@ std::string_view to_string(CheckStatus s) {
   return "N/A";
 }
 
-bool any_failure(const std::vector<CheckLine>& lines) {
-  return std::any_of(lines.begin(), lines.end(),
-                     [](const CheckLine& l) { return l.status == CheckStatus::fail; });
+bool any_failure(const std::vector<CheckLine>& lines, bool warn_fails) {
+  return std::any_of(lines.begin(), lines.end(), [warn_fails](const CheckLine& l) {
+    return l.status == CheckStatus::fail || (warn_fails && l.status == CheckStatus::warn);
+  });
 }
 
 std::size_t count_status(const std::vector<CheckLine>& lines, CheckStatus status) {

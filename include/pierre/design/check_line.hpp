@@ -38,8 +38,9 @@ inline bool at_least(double value, double limit) {
 // value <= limit, up to rounding (as at_least).
 inline bool at_most(double value, double limit) { return at_least(limit, value); }
 
-// True when any line FAILs: the exit code of `pierre check`.
-bool any_failure(const std::vector<CheckLine>& lines);
+// True when any line FAILs (or, with `warn_fails`, WARNs): the exit code of `pierre check`
+// (--fail-on-warn for a gate that takes no advisory line either).
+bool any_failure(const std::vector<CheckLine>& lines, bool warn_fails = false);
 // How many lines have `status`: the verdict's counts (console, summary.json, report).
 std::size_t count_status(const std::vector<CheckLine>& lines, CheckStatus status);
 

@@ -297,6 +297,30 @@ TEST_F(Check, FailingCandidateExitsOneAndStillWritesTheResults) {
   EXPECT_TRUE(fs::exists(out / "crossings.csv"));
 }
 
+// --fail-on-warn: a pipeline that takes no advisory line gets exit 1 for a WARN, said on stderr
+// (the check lines themselves say only WARN); a FAIL is a FAIL with or without it.
+TEST_F(Check, FailOnWarnTurnsAWarningIntoExitOne) {
+  const Result plain = pierre("check " + kData + "pass.toml --out '" + (dir_ / "a").string() + "' -q");
+  ASSERT_EQ(plain.code, 0) << plain.err << plain.out;
+  const auto checks = summary(dir_ / "a")["checks"];
+  const auto warns = std::count_if(checks.begin(), checks.end(),
+                                   [](const auto& c) { return c["status"] == "WARN"; });
+  ASSERT_GT(warns, 0) << "the test needs a WARN in pass.toml";
+  const Result gate =
+      pierre("check " + kData + "pass.toml --out '" + (dir_ / "b").string() + "' -q --fail-on-warn");
+  EXPECT_EQ(gate.code, 1) << gate.err << gate.out;
+  EXPECT_NE(gate.err.find(fmt::format("Exit code 1 (--fail-on-warn): {} check line{} WARN.", warns,
+                                      warns == 1 ? "" : "s")),
+            std::string::npos)
+      << gate.err;
+  const Result fail =
+      pierre("check " + kData + "fail.toml --out '" + (dir_ / "c").string() + "' -q --fail-on-warn");
+  EXPECT_EQ(fail.code, 1) << fail.err;
+  EXPECT_EQ(fail.err.find("--fail-on-warn"), std::string::npos) << fail.err;  // failed anyway
+  // `run` has no such option: it exits 0 whatever the checks say.
+  EXPECT_EQ(pierre("run " + kData + "pass.toml --out '" + (dir_ / "d").string() + "' --fail-on-warn").code, 2);
+}
+
 // A FAIL whose table could not be printed (a full disk, here /dev/full; a closed pipe) still
 // exits 1, with the failed write said on stderr: a pipeline must see the verdict, not an alert.
 TEST_F(Check, AFailStaysOneWhenStdoutCannotBeWritten) {

@@ -180,6 +180,16 @@ TEST_F(QuarryCli, WorkAreaInsideTheZoneExitsOneAndStillWritesTheResults) {
   EXPECT_EQ(check(summary(out2), "North", "zone.crusher")["status"], "FAIL");
 }
 
+// --fail-on-warn gates a quarry's WARNs as a barrier's (pass.toml's rows WARN, none FAILs).
+TEST_F(QuarryCli, FailOnWarnTurnsAWarningIntoExitOne) {
+  const Result r = pierre("check " + kData + "pass.toml --out '" + (dir_ / "out").string() +
+                          "' -q --fail-on-warn");
+  EXPECT_EQ(r.code, 1) << r.err << r.out;
+  const auto j = summary(dir_ / "out");
+  EXPECT_EQ(j["checks_failed"], false);
+  EXPECT_NE(r.err.find("Exit code 1 (--fail-on-warn): "), std::string::npos) << r.err;
+}
+
 // `check --quiet` prints the quarry table and the check lines only, starting with the table (it
 // started with an empty line, meant to follow the run's table).
 TEST_F(QuarryCli, QuietOutputStartsWithContent) {

@@ -118,6 +118,7 @@ TEST(BarrierCheckLines, APassOnADoubtedUnitIsAWarning) {
                          "relying on this line");
   EXPECT_EQ(line(lines, "energy.sel").status, CheckStatus::pass);  // another barrier's SEL
   EXPECT_FALSE(design::any_failure(lines));
+  EXPECT_TRUE(design::any_failure(lines, true));  // a gate that takes no WARN (--fail-on-warn)
   d.candidate_mel_kJ = 1499;
   lines = design::barrier_check_lines(d, rules());
   design::doubt_passes(lines, doubts);
