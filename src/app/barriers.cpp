@@ -41,9 +41,9 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
     } else {
       design::CheckLine l;
       l.subject = spec.name;
-      l.id = o.failed_check;
+      l.id = o.check_line;
       l.rule = design::rule_reference(loaded.barrier_rules[i], l.id);
-      if (o.failed_check == "reach") {
+      if (o.check_line == "reach") {
         // Too few crossings is the advisory `reach` line (design-checks.md §1: "WARN if
         // fewer"), however few: no block to design for is not a failed design.
         l.what = "crossings of the line (first in the main direction)";
@@ -62,7 +62,7 @@ io::DesignResults compute_barriers(const io::LoadedScenario& loaded,
                                              rules.source, rules.file,
                                              it == sc.lines.end() ? 0.0 : it->x,
                                              static_cast<std::uint64_t>(s.speed.size()),
-                                             o.failed_check, o.error});
+                                             o.check_line, o.error});
       out.checks.push_back(std::move(l));
       // A candidate with nothing to be checked against has not passed: `pierre check` must not
       // exit 0 for it, as a pipeline gating on the exit code would take it for checked.

@@ -329,7 +329,7 @@ BarrierOutcome design_barrier(const BarrierSpec& spec, const BarrierRuleSet& rul
   if (d.crossings < 2) {
     out.error = "fewer than two trajectories crossed the line (" + std::to_string(d.crossings) +
                 "): nothing to fit, no design";
-    out.failed_check = "reach";
+    out.check_line = "reach";
     return out;
   }
   const std::vector<double> energy_kJ = scaled(sample.energy, 1e-3);

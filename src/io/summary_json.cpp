@@ -442,7 +442,7 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
         none.push_back({{"name", b.name}, {"line", b.line}, {"chainage_m", b.chainage},
                         {"rules", rules_json(b.rules_name, b.rules_title, b.rules_source, b.rules_file)},
                         {"crossings", b.crossings},
-                        {"failed_check", b.failed_check}, {"reason", b.reason}});
+                        {"check_line", b.check_line}, {"reason", b.reason}});
       j["barriers_without_design"] = none;
     }
   }

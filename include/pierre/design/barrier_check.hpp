@@ -201,7 +201,7 @@ struct BarrierOutcome {
   // Without a design, the check line that FAILs in its place: "reach" when fewer than two
   // blocks crossed the line, "design" when the crossings gave no design (e.g. no fit of
   // identical values, a design value out of the rule set's tables).
-  std::string failed_check = "design";
+  std::string check_line = "design";
 };
 // threads: the bootstraps of step 8 (most of the time) share their resamples out over this
 // many threads; the results are the same for any count (each resample has its own stream).

@@ -134,7 +134,7 @@ struct BarrierWithoutDesign {
   std::string rules_name, rules_title, rules_source, rules_file;
   double chainage = 0;          // m
   std::uint64_t crossings = 0;  // first crossings of the line
-  std::string failed_check;     // "reach" or "design"
+  std::string check_line;     // "reach" or "design"
   std::string reason;
 };
 

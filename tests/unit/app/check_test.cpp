@@ -512,7 +512,7 @@ TEST_F(Check, BarrierWithoutDesignIsListedInTheSummary) {
       << b["rules"];
   EXPECT_NE(b["rules"]["source"].get<std::string>().find("Peila"), std::string::npos) << b["rules"];
   EXPECT_EQ(b["crossings"].get<std::uint64_t>(), reached);
-  EXPECT_EQ(b["failed_check"], "reach");
+  EXPECT_EQ(b["check_line"], "reach");
   EXPECT_NE(b["reason"].get<std::string>().find("fewer than two"), std::string::npos) << b["reason"];
 
   // The console's barrier table has its row too, with why there are no values.

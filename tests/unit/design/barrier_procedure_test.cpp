@@ -429,11 +429,11 @@ TEST(BarrierProcedure, NoDesignWithoutCrossingsOrWithAMissingAnswer) {
   auto out = design::design_barrier(spec(), test::thesis_2015(), test::etag027(), s, std::nullopt, 0, 1);
   EXPECT_FALSE(out.design);
   EXPECT_NE(out.error.find("fewer than two"), std::string::npos) << out.error;
-  EXPECT_EQ(out.failed_check, "reach");
+  EXPECT_EQ(out.check_line, "reach");
   out = design::design_barrier(spec(), test::peila_ronco_2009(), test::etag027(), sample(), std::nullopt, 0, 1);
   EXPECT_FALSE(out.design);
   EXPECT_NE(out.error.find("trajectory"), std::string::npos) << out.error;
-  EXPECT_EQ(out.failed_check, "design");  // enough crossings: the design itself failed
+  EXPECT_EQ(out.check_line, "design");  // enough crossings: the design itself failed
 }
 
 // Every block crossing alike (one speed, one height), or every block sliding across the line
