@@ -198,9 +198,9 @@ std::uint64_t barrier_bootstrap_seed(std::uint64_t scenario_seed, std::size_t in
 struct BarrierOutcome {
   std::optional<BarrierDesign> design;
   std::string error;
-  // Without a design, the check line that FAILs in its place: "reach" when fewer than two
-  // blocks crossed the line, "design" when the crossings gave no design (e.g. no fit of
-  // identical values, a design value out of the rule set's tables).
+  // Without a design, the check line that says so in its place: "reach" (a WARN) when fewer
+  // than two blocks crossed the line, "design" (a FAIL) when the crossings gave no design (e.g.
+  // no fit of identical values, a design value out of the rule set's tables).
   std::string check_line = "design";
 };
 // threads: the bootstraps of step 8 (most of the time) share their resamples out over this
