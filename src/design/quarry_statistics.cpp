@@ -159,8 +159,11 @@ ObservedComparison compare_observed(const DistanceSample& simulated, const Obser
     out.raw = true;
     out.count = obs.metres.size();
     std::vector<double> norm(obs.metres.size());
-    for (std::size_t i = 0; i < norm.size(); ++i)
-      norm[i] = obs.metres[i] / (i < obs.heights.size() ? obs.heights[i] : height);
+    for (std::size_t i = 0; i < norm.size(); ++i) {
+      const double h = i < obs.heights.size() ? obs.heights[i] : height;
+      out.at_row_height = out.at_row_height && h == height;
+      norm[i] = obs.metres[i] / h;
+    }
     const double ps[] = {50, 95, 100};
     const auto m = stats::percentiles(obs.metres, ps);
     const auto h = stats::percentiles(norm, ps);

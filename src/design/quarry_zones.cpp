@@ -534,7 +534,7 @@ void observed_checks(QuarryDesign& d, const QuarryRow& row, const QuarryRuleSet&
     const std::string n = o.count > 0 ? " (n = " + std::to_string(o.count) + ")" : "";
     // Judged in /H, where each observation carries its own face's H, and shown in metres at the
     // row's H: for observations at this face, the observed P95 itself.
-    l.value = o.p95_h * row.height;
+    l.value = o.at_row_height ? o.p95 : o.p95_h * row.height;
     l.limit = gov.value_h * row.height;
     if (std::isnan(o.p95_h) || std::isnan(gov.value_h)) {
       l.status = CheckStatus::not_applicable;

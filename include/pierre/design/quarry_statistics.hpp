@@ -99,6 +99,9 @@ struct ObservedComparison {
   std::size_t count = 0;  // observations (0 when unknown)
   double p50 = 0, p95 = 0, max = 0;          // m (NaN when unknown)
   double p50_h = 0, p95_h = 0, max_h = 0;    // / H
+  // Every observation at the row's own H (one face, or summary values): the values in metres
+  // are the row's as given, not p95_h · H back again (13.6, not 13.599999999999998).
+  bool at_row_height = true;
   // Eq 4.1: the CDFs at the observed break points (/H): with raw observations their distinct
   // values; with summary values the printed P50, P95 and max, whose observed CDF is 0.50,
   // 0.95 and 1.

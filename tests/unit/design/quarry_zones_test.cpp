@@ -642,6 +642,14 @@ TEST(QuarryZones, ObservedValuesAgainstTheGoverningDistances) {
   EXPECT_EQ(id->reason, "observed P95 9.55 m (n = 10) <= ID_gov 19.01 m (P95 0.95 H)");
   // A WARN, never a FAIL: the exit code stays with the zones.
   EXPECT_FALSE(any_failure(out.design->checks));
+  // The value is the one given, to the last bit: 13.6 m at H = 20 m is not 13.6 / 20 · 20, which
+  // is 13.599999999999998 (a script comparing it with its input saw a mismatch).
+  s.observed.rd.p95 = 13.6;
+  s.observed.id.metres = {13.6, 13.6};
+  const auto exact = design_quarry({s}, 1);
+  ASSERT_TRUE(exact.design) << exact.error;
+  EXPECT_EQ(find(*exact.design, "Face A", "observed.RD")->value, 13.6);
+  EXPECT_EQ(find(*exact.design, "Face A", "observed.ID")->value, 13.6);
 
   // A group of a 20 m and a 10 m face (row H 15 m) is judged in /H, each observation over its
   // own face's H. Pooled /H runouts k/20 and k/10 (k = 1..100): P95 = 9.0 + 0.05 · 0.1 =
