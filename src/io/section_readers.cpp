@@ -454,6 +454,32 @@ void note_unlikely_blocks(const TomlTable& b, double shared, const std::vector<B
          doubts_every_line(where[i].size_field, groups[i].mass)});
     break;  // the first such row: the others are likely the same slip
   }
+  // One row of masses in tonnes among masses in kg (V003,1.69 among blocks of 1500 to 3500 kg):
+  // a hundredth of the median block, and of the blocks' size once read in kg. The median, not
+  // the lightest, so that two such rows do not hide each other; a real small block of a varied
+  // set (0.14 to 8.13 Mg at Preg) is not a thousandth of the others.
+  if (notes.size() == before && groups.size() >= 3) {
+    std::vector<double> masses;
+    for (const auto& g : groups) masses.push_back(g.mass);
+    std::nth_element(masses.begin(), masses.begin() + masses.size() / 2, masses.end());
+    const double median = masses[masses.size() / 2];
+    std::size_t slips = 0, first_slip = 0;
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+      const double m = groups[i].mass;
+      if (by_mass(i) && m < median / 100 && m * 1000 > median / 10 && m * 1000 < median * 10 &&
+          slips++ == 0)
+        first_slip = i;
+    }
+    if (slips > 0)
+      notes.push_back(
+          {where[first_slip].file, where[first_slip].size_line, where[first_slip].size_field,
+           fmt::format("block \"{}\" weighs {:g} kg{}, where the median block weighs {:.0f} kg: a "
+                       "mass is in kg; if it is in tonnes, it is {:.0f} kg",
+                       groups[first_slip].id, groups[first_slip].mass,
+                       slips > 1 ? fmt::format(" (and {} more row{} like it)", slips - 1, slips > 2 ? "s" : "") : "",
+                       median, groups[first_slip].mass * 1000),
+           doubts_every_line(where[first_slip].size_field, groups[first_slip].mass)});
+  }
   if (!groups.empty() && groups[heaviest].mass > kHeaviestPlausibleBlock)
     notes.push_back(
         {where[heaviest].file, where[heaviest].size_line, where[heaviest].size_field,

@@ -3,6 +3,7 @@
 // valid, but one x typed out of order makes one), a source far above the ground under it (a z
 // in absolute elevations over a profile in local ones). Each names the file, the line, the
 // field, and says why it matters; valid input of the usual kind gets none.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -267,6 +268,28 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   EXPECT_TRUE(notes_of(dir, base_with(18, "volume = 0.5\n[[blocks.table]]\nmass = 0.01\n"
                                           "[[blocks.table]]\nvolume = 2.0"))
                   .empty());
+  // One row in tonnes among rows in kg (1.69 among 1500 to 3500 kg): a hundredth of the
+  // median block, and of its size read in kg.
+  auto masses = [](std::initializer_list<const char*> ms) {
+    std::string t;
+    for (const char* m : ms) t += std::string(t.empty() ? "" : "[[blocks.table]]\n") + "mass = " + m + "\n";
+    return t;
+  };
+  const auto kg = notes_of(dir, base_with(18, masses({"1500.0", "2500.0", "1.69", "3500.0"})));
+  ASSERT_EQ(kg.size(), 1u);
+  EXPECT_EQ(kg[0].field, "blocks.table[2].mass");
+  EXPECT_EQ(kg[0].line, 22);
+  EXPECT_THAT(kg[0].text, testing::StartsWith("block \"B3\" weighs 1.69 kg, where the median block "
+                                              "weighs 2500 kg: a mass is in kg; if it is in "
+                                              "tonnes, it is 1690 kg"));
+  // Two such rows do not hide each other.
+  const auto two = notes_of(dir, base_with(18, masses({"1500.0", "2.5", "2500.0", "1.69", "3500.0"})));
+  ASSERT_EQ(two.size(), 1u);
+  EXPECT_THAT(two[0].text, testing::HasSubstr("weighs 2.5 kg (and 1 more row like it)"));
+  // A varied set (Preg's 0.14 to 8.13 Mg) is valid, and so is a stone too small to be a
+  // block in tonnes (0.01 kg: 10 kg against a median of 2500).
+  EXPECT_TRUE(notes_of(dir, base_with(18, masses({"140.0", "1500.0", "8130.0"}))).empty());
+  EXPECT_TRUE(notes_of(dir, base_with(18, masses({"1500.0", "2500.0", "0.01", "3500.0"}))).empty());
 }
 
 // The roughness is a tangent scale, the one input that is not in degrees: an angle (35) or a
