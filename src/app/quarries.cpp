@@ -196,8 +196,8 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
                  const QuarryRunOptions& o) {
   sim::RunOptions opt;
   opt.threads = o.threads;
-  opt.record_impacts = o.impacts;
-  opt.all_crossings = o.all_crossings;
+  opt.record_impacts = o.flags.impacts;
+  opt.all_crossings = o.flags.all_crossings;
   std::uint64_t total = 0, blocks = 0, sources = 0, chunks = 0;
   for (const io::QuarrySection& s : loaded.quarries) {
     const std::uint64_t n = s.scenario.trajectory_count();
@@ -214,7 +214,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   opt.stop = interrupt.flag();
   const std::unique_ptr<io::OutputFolder> folder = open_output_folder(o.out, loaded.inputs);
   if (!folder) return kExitInput;
-  io::ResultFiles files(folder->staging(), o.impacts);
+  io::ResultFiles files(folder->staging(), o.flags.impacts);
   design::RunSamples all(0, 1);
   std::vector<design::QuarrySectionInput> inputs;
   std::vector<std::uint64_t> seeds;
@@ -283,8 +283,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   results.quarry = std::move(*outcome.design);
 
   const design::RunStatistics stats = design::run_statistics({}, all);
-  const io::RunInfo info = run_info(loaded, total, blocks, sources, used, o.all_crossings, o.impacts,
-                                    layout);
+  const io::RunInfo info = run_info(loaded, total, blocks, sources, used, o.flags, layout);
   io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, results);
   io::ReportData report = report_data(loaded, stats);
   report.samples = &all;
@@ -304,12 +303,12 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   if (o.quiet) print_run_notes(stderr, stats);
   print_to_stdout([&] {
     if (!o.quiet) print_results(stdout, stats, seconds, written, loaded.quarries.size());
-    if (!o.quiet || o.check) {
+    if (!o.quiet || o.flags.check) {
       print_quarries(stdout, *results.quarry, !o.quiet);
       print_design(stdout, results);
     }
   });
-  return check_exit_code(o.check, o.fail_on_warn, results.checks);
+  return check_exit_code(o.flags, results.checks);
 }
 
 }  // namespace pierre::app

@@ -16,14 +16,15 @@
 #include "pierre/io/report_data.hpp"
 #include "pierre/io/report_template.hpp"
 #include "pierre/io/scenario_reader.hpp"
+#include "run_steps.hpp"
 
 namespace pierre::app {
 
 struct QuarryRunOptions {
   std::string out;                       // output folder
   unsigned threads = 0;
-  bool impacts = false, all_crossings = false, quiet = false, check = false;
-  bool fail_on_warn = false;  // check: exit 1 when a line WARNs too
+  RunFlags flags;
+  bool quiet = false;
   double log_seconds = 60;  // progress lines when stderr is not a terminal (progress_log_seconds)
   bool* committed = nullptr;  // set once the results are in place (a failure after it wrote them)
 };

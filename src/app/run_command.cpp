@@ -160,12 +160,9 @@ class RunCommand final : public Command {
       QuarryRunOptions q;
       q.out = out_;
       q.threads = threads_;
-      q.impacts = impacts_;
-      q.all_crossings = all_crossings_;
+      q.flags = flags();
       q.quiet = quiet_;
       q.log_seconds = log_seconds;
-      q.check = check_;
-      q.fail_on_warn = fail_on_warn_;
       q.committed = &committed_;
       return run_quarries(loaded, layout, q);
     }
@@ -210,7 +207,7 @@ class RunCommand final : public Command {
     }
     bar.stage("writing summary.json and report.xlsx");
     const io::RunInfo info = run_info(loaded, total, sc.blocks.size(), sc.sources.size(), used,
-                                      all_crossings_, impacts_, layout);
+                                      flags(), layout);
     io::write_summary_json(folder->staged(io::kSummaryJson), info, stats, design_results);
     write_run_report(folder->staged(io::kReportXlsx), layout, loaded, stats, files.samples(),
                      design_results, std::move(first));
@@ -227,10 +224,12 @@ class RunCommand final : public Command {
         fmt::print("{}Nothing to check: the scenario has no [[barriers]] or [[quarries]] (exit 0).\n",
                    quiet_ ? "" : "\n");
     });
-    return check_exit_code(check_, fail_on_warn_, design_results.checks);
+    return check_exit_code(flags(), design_results.checks);
   }
 
  private:
+  RunFlags flags() const { return {check_, strict_, fail_on_warn_, all_crossings_, impacts_}; }
+
   std::string scenario_, out_, rules_;
   std::int64_t seed_ = 0;  // signed, so that a negative seed is refused, not wrapped
   std::uint32_t throws_ = 1;

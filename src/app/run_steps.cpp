@@ -101,10 +101,10 @@ std::vector<std::filesystem::path> commit_results(io::OutputFolder& folder) {
   return written;
 }
 
-int check_exit_code(bool check, bool fail_on_warn, const std::vector<design::CheckLine>& lines) {
-  if (!check) return kExitOk;
+int check_exit_code(const RunFlags& flags, const std::vector<design::CheckLine>& lines) {
+  if (!flags.check) return kExitOk;
   if (design::any_failure(lines)) return kExitCheckFailed;
-  if (!design::any_failure(lines, fail_on_warn)) return kExitOk;
+  if (!design::any_failure(lines, flags.fail_on_warn)) return kExitOk;
   fmt::print(stderr, "Exit code 1 (--fail-on-warn): {} check line{} WARN.\n",
              design::count_status(lines, design::CheckStatus::warn),
              design::count_status(lines, design::CheckStatus::warn) == 1 ? "" : "s");
@@ -113,7 +113,7 @@ int check_exit_code(bool check, bool fail_on_warn, const std::vector<design::Che
 
 io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectories,
                      std::uint64_t blocks, std::uint64_t sources, unsigned threads,
-                     bool all_crossings, bool impacts, const io::ReportTemplate& layout) {
+                     const RunFlags& flags, const io::ReportTemplate& layout) {
   io::RunInfo info;
   info.scenario_name = loaded.scenario.name;
   info.document = loaded.document;
@@ -125,8 +125,11 @@ io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectorie
   info.blocks = blocks;
   info.sources = sources;
   info.threads = threads;
-  info.all_crossings = all_crossings;
-  info.impacts = impacts;
+  info.command = flags.check ? "check" : "run";
+  info.strict = flags.strict;
+  info.fail_on_warn = flags.fail_on_warn;
+  info.all_crossings = flags.all_crossings;
+  info.impacts = flags.impacts;
   info.settings = loaded.scenario.settings;
   info.materials = loaded.scenario.materials;
   info.overrides = loaded.overrides;

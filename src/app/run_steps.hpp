@@ -29,15 +29,25 @@ std::unique_ptr<io::OutputFolder> open_output_folder(const std::string& out,
 // wrote it) and says on stderr which file by a result's name was left alone, not being pierre's.
 std::vector<std::filesystem::path> commit_results(io::OutputFolder& folder);
 
+// The command and the flags that shape what it writes and how it exits (summary.json records
+// them: a pipeline's gate must be readable from the results).
+struct RunFlags {
+  bool check = false;         // `pierre check` (else `run`)
+  bool strict = false;        // --strict
+  bool fail_on_warn = false;  // --fail-on-warn (check)
+  bool all_crossings = false;  // --all-crossings
+  bool impacts = false;        // --impacts
+};
+
 // The exit code once the results are in place: `run` 0; `check` 1 when a line FAILs, or WARNs
 // with --fail-on-warn (then said on stderr, as the verdict's lines say only WARN), else 0.
-int check_exit_code(bool check, bool fail_on_warn, const std::vector<design::CheckLine>& lines);
+int check_exit_code(const RunFlags& flags, const std::vector<design::CheckLine>& lines);
 
 // summary.json's account of the run: the scenario as loaded (seed and throws after --seed and
 // --throws), what was run, and the report layout among the inputs.
 io::RunInfo run_info(const io::LoadedScenario& loaded, std::uint64_t trajectories,
                      std::uint64_t blocks, std::uint64_t sources, unsigned threads,
-                     bool all_crossings, bool impacts, const io::ReportTemplate& layout);
+                     const RunFlags& flags, const io::ReportTemplate& layout);
 
 // LoadedScenario::overrides for --seed and --throws, worded with the file's values: call it
 // before they are applied.

@@ -325,8 +325,13 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                 {"max", v.max * scale}};
   };
   json j;
+  // Raised when a key is renamed or removed, or its meaning changes; not for keys added.
+  j["schema_version"] = kSummarySchemaVersion;
   j["pierre_version"] = version();
   j["pierre_build"] = build_id();  // the commit built, for two builds of one version
+  // The command and the flags that decide its exit code (`check --fail-on-warn`) and what
+  // could pass (`--strict`): a gate is judged from this file without the command line.
+  j["command"] = {{"name", info.command}, {"strict", info.strict}, {"fail_on_warn", info.fail_on_warn}};
   j["scenario"] = {{"name", info.scenario_name},
                    {"file", info.scenario_file.string()},
                    {"materials_file", info.materials_file.string()}};

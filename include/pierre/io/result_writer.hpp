@@ -55,6 +55,9 @@ inline constexpr const char* kTrajectoriesCsv = "trajectories.csv";
 inline constexpr const char* kCrossingsCsv = "crossings.csv";
 inline constexpr const char* kImpactsCsv = "impacts.csv";
 inline constexpr const char* kSummaryJson = "summary.json";
+// summary.json's "schema_version" (docs/summary-json.md): raised when a key is renamed or
+// removed, or its meaning changes; keys added leave it.
+inline constexpr int kSummarySchemaVersion = 1;
 
 // The first line of impacts.csv: plain, or led by the quarry section's column.
 std::string impacts_csv_header(bool sectioned);
@@ -113,6 +116,9 @@ struct RunInfo {
   std::uint64_t trajectories = 0;
   std::uint64_t blocks = 0, sources = 0;
   unsigned threads = 0;  // worker threads used
+  std::string command = "run";  // "run" or "check"
+  bool strict = false;          // --strict: inputs in doubt were refused, so none is left
+  bool fail_on_warn = false;    // --fail-on-warn: check's exit code takes WARN as FAIL
   bool all_crossings = false;
   bool impacts = false;  // impacts.csv written (--impacts)
   // The model as it ran: the [simulation] settings and the materials with their presets and

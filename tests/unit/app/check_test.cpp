@@ -319,6 +319,16 @@ TEST_F(Check, FailOnWarnTurnsAWarningIntoExitOne) {
   EXPECT_EQ(fail.err.find("--fail-on-warn"), std::string::npos) << fail.err;  // failed anyway
   // `run` has no such option: it exits 0 whatever the checks say.
   EXPECT_EQ(pierre("run " + kData + "pass.toml --out '" + (dir_ / "d").string() + "' --fail-on-warn").code, 2);
+  // summary.json says which gate made the exit code, for a pipeline that reads only the file.
+  using nlohmann::json;
+  EXPECT_EQ(summary(dir_ / "a")["command"],
+            json({{"name", "check"}, {"strict", false}, {"fail_on_warn", false}}));
+  EXPECT_EQ(summary(dir_ / "b")["command"],
+            json({{"name", "check"}, {"strict", false}, {"fail_on_warn", true}}));
+  ASSERT_EQ(pierre("run " + kData + "pass.toml --out '" + (dir_ / "e").string() + "' -q --strict").code, 0);
+  EXPECT_EQ(summary(dir_ / "e")["command"],
+            json({{"name", "run"}, {"strict", true}, {"fail_on_warn", false}}));
+  EXPECT_EQ(summary(dir_ / "e")["schema_version"], 1);
 }
 
 // A FAIL whose table could not be printed (a full disk, here /dev/full; a closed pipe) still
