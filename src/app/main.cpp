@@ -94,9 +94,16 @@ const char* word_after_word(int argc, char** argv, const CLI::App& c) {
   std::string scenario;
   if (const CLI::Option* o = c.get_option_no_throw("scenario"); o && !o->results().empty())
     scenario = o->results().front();
+  // After a flag (--strict, -q) or an option with its value attached (--throws=3), a word is
+  // no option's value either.
+  auto takes_next = [&c](std::string_view prev) {
+    if (prev.empty() || prev[0] != '-' || prev.find('=') != std::string_view::npos) return false;
+    const CLI::Option* o = c.get_option_no_throw(std::string(prev));
+    return !o || o->get_items_expected_min() > 0;
+  };
   for (int i = 3; i < argc; ++i) {
     if (std::string_view(argv[i]) == "--") break;
-    if (argv[i][0] != '-' && argv[i - 1][0] != '-' && argv[i] != scenario) return argv[i];
+    if (argv[i][0] != '-' && !takes_next(argv[i - 1]) && argv[i] != scenario) return argv[i];
   }
   return nullptr;
 }

@@ -686,6 +686,12 @@ TEST_F(Cli, UsageErrorsExitTwo) {
             "stands alone: did you mean --out outdir? (pierre run --help)\n");
   EXPECT_NE(pierre("run --seed 3 " + kScenario + " outdir").err.find("did you mean --out outdir?"),
             std::string::npos);
+  // After a flag, or an option with its value attached, a word is no option's value either.
+  for (const char* before : {"--strict", "-q", "--throws=3"})
+    EXPECT_NE(pierre("run " + kScenario + " " + before + " outdir").err.find("did you mean --out outdir?"),
+              std::string::npos)
+        << before;
+  EXPECT_EQ(pierre("run " + kScenario + " --throws 3").err.find("did you mean"), std::string::npos);
   EXPECT_EQ(pierre(run + " ---").code, 2);  // all dashes: no option to compare (it threw, exit 3)
   EXPECT_EQ(pierre("run --seed 3 " + kScenario).err,
             "pierre run: found no --out, expected --out DIR, the folder the results go to (pierre "
