@@ -160,11 +160,16 @@ bool weibull_below_own(const Characteristic& c) {
 
 // A Weibull fit its own fit line rejects (KS p below the rule set's): its tail is no basis to
 // pass either. Empty when the fit stands.
+// "a Weibull fit that fit.E rejects (p = 0.01)": the words every line uses for such a fit.
+std::string rejected_weibull(const QuantityFit& q, const char* fit_id) {
+  return std::string("a Weibull fit that ") + fit_id + " rejects (p = " +
+         num(q.weibull_ks->p_value_stephens, 3) + ")";
+}
+
 std::string rejected_fit(const Builder& b, const QuantityFit& q, const char* fit_id, double empirical) {
   if (!fit_rejected(b, q)) return {};
-  return std::string("a Weibull fit that ") + fit_id + " rejects (p = " +
-         num(q.weibull_ks->p_value_stephens, 3) + "); of the simulated values themselves " +
-         pct(empirical) + " exceed";
+  return rejected_weibull(q, fit_id) + "; of the simulated values themselves " + pct(empirical) +
+         " exceed";
 }
 
 // A characteristic value (v_k, h_k) taken from a Weibull fit that its own fit line rejects and
@@ -181,8 +186,7 @@ void below_own_percentile(const Builder& b, CheckLine& l, const Characteristic& 
     return;
   l.status = CheckStatus::warn;
   l.reason += std::string(", but ") + what + " " + quantity_text(c.value, unit) +
-              " comes from a Weibull fit that " + fit_id + " rejects (p = " +
-              num(q.weibull_ks->p_value_stephens, 3) + "), below the simulated values' own P" +
+              " comes from " + rejected_weibull(q, fit_id) + ", below the simulated values' own P" +
               num(b.r.percentile) + " " + quantity_text(c.empirical, unit) +
               ", with which the requirement would be " + quantity_text(alt_required, l.unit);
 }
@@ -237,9 +241,8 @@ void exceedance_line(Builder& b, const char* id, const std::string& what, const 
                                   own.raised_by + "); of the simulated values themselves " +
                                   pct(row->simulated_empirical) + " exceed it");
     if (!rejected.empty())
-      l.reason += std::string("; ") + fit_id + " rejects that fit (p = " +
-                  num(fit.weibull_ks->p_value_stephens, 3) +
-                  "): the line judges its tail all the same, as the rule is written; compare "
+      l.reason += "; it is " + rejected_weibull(fit, fit_id) +
+                  ": the line judges its tail all the same, as the rule is written; compare "
                   "the simulated share";
     if (!few.empty()) l.reason += "; the Weibull fit is " + few + ": more throws";
   }

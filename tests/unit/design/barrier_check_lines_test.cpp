@@ -422,8 +422,8 @@ TEST(BarrierCheckLines, AnExceedanceFromARejectedFitWarnsInsteadOfPassing) {
   // FAIL the values themselves do not bear out is not read as a fact about them.
   EXPECT_EQ(line(lines, "exceedance.height").status, CheckStatus::fail);
   EXPECT_NE(line(lines, "exceedance.height").reason.find(
-                "of the simulated values themselves 1 % exceed it; fit.h rejects that fit (p = "
-                "0.01): the line judges its tail all the same, as the rule is written; compare the "
+                "of the simulated values themselves 1 % exceed it; it is a Weibull fit that fit.h "
+                "rejects (p = 0.01): the line judges its tail all the same, as the rule is written; compare the "
                 "simulated share"),
             std::string::npos)
       << line(lines, "exceedance.height").reason;
