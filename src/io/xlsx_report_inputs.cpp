@@ -247,8 +247,13 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
   if (d_.barriers.empty()) return r;
   r = table_title(ws, r, "barrier_inputs");
   text(ws, r, 0, h("barrier_inputs", "field"), heading());
-  for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i)
-    text(ws, r, static_cast<Col>(1 + i), d_.barriers[i].spec.name, heading());
+  const std::string* longest = nullptr;  // its heading row as tall as the longest name needs
+  for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i) {
+    const std::string& name = d_.barriers[i].spec.name;
+    text(ws, r, static_cast<Col>(1 + i), name, heading());
+    if (!longest || name.size() > longest->size()) longest = &name;
+  }
+  if (longest) fit_row(ws, r, {{longest, 14}});  // bold: narrower than the column's 16
   ++r;
   auto row = [&](std::string_view key) {
     text(ws, r, 0, h("barrier_inputs", key), bold());

@@ -1141,6 +1141,31 @@ TEST(XlsxReport, ColumnWidthEntriesDoNotOverlap) {
   EXPECT_GE(sheets, 5);
 }
 
+// The height set on the row of the sheet `sheet` that holds the shared string `text` (its first
+// cell holding it), 0 when the row has the default height; fails the test when there is none.
+double row_height_of(const fs::path& xlsx, const std::string& sheet, const std::string& text,
+                     const fs::path& tmp) {
+  const std::string strings = zip_entry(xlsx, "xl/sharedStrings.xml", tmp);
+  long index = 0, found = -1;
+  for (std::size_t k = strings.find("<si>"); k != std::string::npos; k = strings.find("<si>", k + 1), ++index)
+    if (found < 0 && strings.compare(k + 4, 4 + text.size(), "<t>" + text + "<") == 0) found = index;
+  EXPECT_GE(found, 0) << text;
+  const std::string wb = zip_entry(xlsx, "xl/workbook.xml", tmp);
+  int number = 0, at = 0;
+  for (auto p = wb.find("<sheet name=\""); p != std::string::npos; p = wb.find("<sheet name=\"", p + 1)) {
+    ++number;
+    if (wb.compare(p + 13, sheet.size() + 1, sheet + "\"") == 0) at = number;
+  }
+  EXPECT_GT(at, 0) << sheet;
+  const std::string x = zip_entry(xlsx, "xl/worksheets/sheet" + std::to_string(at) + ".xml", tmp);
+  const std::size_t v = x.find("<v>" + std::to_string(found) + "</v>");
+  EXPECT_NE(v, std::string::npos) << text;
+  if (found < 0 || v == std::string::npos) return 0;
+  const std::size_t row = x.rfind("<row ", v);
+  const std::size_t ht = x.find("ht=\"", row);
+  return ht < x.find('>', row) ? std::stod(x.substr(ht + 4)) : 0;
+}
+
 // A long note stays inside the printed page: merged over the print area's columns (Summary A:J;
 // a barrier sheet's "how it was obtained" D:I), wrapped, its row as high as its lines. In one
 // cell, the energy class's note and the partial factors' derivations ran off the page.
@@ -1159,18 +1184,20 @@ TEST(XlsxReport, AWrappedRowIsAsTallAsItsWordsWrap) {
   f->data.checks = {l};
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
-  const std::string strings = zip_entry(xlsx, "xl/sharedStrings.xml", dir.path());
-  long index = 0, found = -1;
-  for (std::size_t k = strings.find("<si>"); k != std::string::npos; k = strings.find("<si>", k + 1), ++index)
-    if (strings.compare(k + 4, 4 + l.rule.size(), "<t>" + l.rule + "<") == 0) found = index;
-  ASSERT_GE(found, 0);
-  const std::string x = zip_entry(xlsx, "xl/worksheets/sheet1.xml", dir.path());
-  const std::size_t v = x.find("<v>" + std::to_string(found) + "</v>");
-  ASSERT_NE(v, std::string::npos);
-  const std::size_t row = x.rfind("<row ", v);
-  const std::size_t ht = x.find("ht=\"", row);
-  ASSERT_LT(ht, x.find('>', row)) << "no height of its own";
-  EXPECT_GE(std::stod(x.substr(ht + 4)), 3 * 15.0);
+  EXPECT_GE(row_height_of(xlsx, "Summary", l.rule, dir.path()), 3 * 15.0);
+}
+
+// The Inputs sheet heads each barrier's column with its name: a long one wraps in a row as
+// tall as it needs (the row kept its default height and clipped it: new-user review).
+TEST(XlsxReport, ALongBarrierNameIsNotClippedOnInputs) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture();
+  const std::string name = "Rockfall barrier above the north portal";  // 40 characters, 3 lines
+  f->data.barriers.at(0).spec.name = name;
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  EXPECT_GE(row_height_of(xlsx, "Inputs", name, dir.path()), 3 * 15.0);
 }
 
 // A run without barriers or quarries: the Summary says there are no checks, without a check
