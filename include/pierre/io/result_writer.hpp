@@ -152,16 +152,10 @@ struct DesignResults {
   std::vector<design::CheckLine> checks;
 };
 
-// summary.json's text (pretty-printed, NaN as null): pierre version, scenario, seed, throws,
-// the model settings and materials as resolved ("simulation", "materials"), trajectories,
-// threads, stop-reason counts, per-line statistics (energies in kJ), runout;
-// with design results also "barriers" (the design values of each) and, when a barrier got
-// none, "barriers_without_design" (name, line, chainage, rules as "barriers" give them, crossings, reason), for a quarry scenario
-// "quarries" (one entry per row of Tables 6.2/6.3 — a lone section or a pooled group — with
-// its statistics, governing distances and its sections' geometry and zones; distances in m and
-// /H, null where beyond the profile or undefined, with "beyond_profile" flags) and
-// "quarry_average", and "checks" (every check line: subject, id, what, value, limit, unit,
-// rule, status, reason).
+// summary.json's text (pretty-printed, NaN and infinity as null): the run, its inputs and model,
+// its statistics, the design results and every check line. Every key is documented in
+// docs/summary-json.md (a test holds the two together); kSummarySchemaVersion says when a
+// parser must look again.
 std::string summary_json(const RunInfo& info, const design::RunStatistics& stats,
                          const DesignResults& design = {});
 void write_summary_json(const std::filesystem::path& file, const RunInfo& info,
