@@ -231,6 +231,7 @@ int run_quarries(io::LoadedScenario& loaded, const io::ReportTemplate& layout,
   try {
     for (io::QuarrySection& s : loaded.quarries) {
       files.begin_section(s.scenario, s.spec.name, s.geometry);
+      all.begin_section(s.spec.name, s.scenario.profile.main_direction());
       QuarrySink sink(files, s.geometry, all);
       FirstRows first(sink, layout.trajectory_rows - first_trajectories.size(),
                       layout.crossing_rows - first_crossings.size());

@@ -30,6 +30,11 @@ void keep(LineSamples& l, const sim::Crossing& c) {
 }
 }  // namespace
 
+void RunSamples::begin_section(std::string name, int main_direction) {
+  steep_sections_.push_back({std::move(name)});
+  main_direction_ = main_direction;
+}
+
 void RunSamples::add(const sim::TrajectorySummary& t) {
   runout_.push_back(t.runout());
   // Still moving at its end, onwards: a block that left at the profile's upper end (thrown back)
@@ -44,6 +49,12 @@ void RunSamples::add(const sim::TrajectorySummary& t) {
     steepest_tan_ = std::max(steepest_tan_, double{t.steep_stop_tan});
     steep_x_min_ = std::min(steep_x_min_, t.stop.x);
     steep_x_max_ = std::max(steep_x_max_, t.stop.x);
+    if (!steep_sections_.empty()) {
+      SectionSteepStops& s = steep_sections_.back();
+      ++s.count;
+      s.x_min = std::min(s.x_min, t.stop.x);
+      s.x_max = std::max(s.x_max, t.stop.x);
+    }
   }
   if (t.stop_reason == sim::StopReason::energy && t.impacts == 1) {
     ++first_impact_stops_;
@@ -129,7 +140,9 @@ RunStatistics run_statistics(const std::vector<sim::ObservationLine>& lines,
     s.stop_reasons.push_back({static_cast<sim::StopReason>(k), samples.stop_reasons()[k]});
   s.energy_stops_on_steep_ground = samples.steep_energy_stops();
   s.steepest_energy_stop_deg = geometry::degrees(std::atan(samples.steepest_energy_stop_tan()));
-  if (samples.steep_energy_stops() > 0) {
+  for (const auto& section : samples.steep_energy_stops_by_section())
+    if (section.count > 0) s.energy_stops_on_steep_ground_by_section.push_back(section);
+  if (samples.steep_energy_stops() > 0 && samples.steep_energy_stops_by_section().empty()) {
     s.energy_stop_steep_x_min = samples.steep_energy_stop_x_min();
     s.energy_stop_steep_x_max = samples.steep_energy_stop_x_max();
   }
@@ -178,9 +191,16 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
     // face they would not, and the runouts and reach counts then fall short.
     const std::string steepest = fixed_text(s.steepest_energy_stop_deg, 1);
     const bool one = k == 1;
-    const double x0 = s.energy_stop_steep_x_min, x1 = s.energy_stop_steep_x_max;
-    const std::string where = x0 == x1 ? "at x = " + fixed_text(x0, 1) + " m"
-                                       : "at x = " + fixed_text(x0, 1) + " to " + fixed_text(x1, 1) + " m";
+    auto at = [](double x0, double x1) {
+      return x0 == x1 ? "at x = " + fixed_text(x0, 1) + " m"
+                      : "at x = " + fixed_text(x0, 1) + " to " + fixed_text(x1, 1) + " m";
+    };
+    std::string where;
+    const bool several = s.energy_stops_on_steep_ground_by_section.size() > 1;
+    for (const auto& sec : s.energy_stops_on_steep_ground_by_section)  // "14 in section Kloech at …"
+      where += (where.empty() ? "" : "; ") + (several ? std::to_string(sec.count) + " " : "") +
+               "in section " + sec.section + " " + at(sec.x_min, sec.x_max);
+    if (where.empty()) where = at(s.energy_stop_steep_x_min, s.energy_stop_steep_x_max);
     notes.push_back(std::to_string(k) + (one ? " block was" : " blocks were") +
                     " stopped by the energy criterion (Eq 3.13) on ground steeper than its "
                     "friction angle (up to " + steepest + "°, " + where +

@@ -401,10 +401,15 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
   j["stop_reasons"] = stops;
   j["energy_stops_on_steep_ground"] = s.energy_stops_on_steep_ground;
   j["steepest_energy_stop_deg"] = s.steepest_energy_stop_deg;
+  // In a quarry scenario each section's own x (its own profile): the pooled range is null.
   j["energy_stops_on_steep_ground_x_m"] =
-      s.energy_stops_on_steep_ground > 0
+      s.energy_stops_on_steep_ground > 0 && s.energy_stops_on_steep_ground_by_section.empty()
           ? json{{"min", s.energy_stop_steep_x_min}, {"max", s.energy_stop_steep_x_max}}
           : json(nullptr);
+  j["energy_stops_on_steep_ground_by_section"] = json::array();
+  for (const auto& sec : s.energy_stops_on_steep_ground_by_section)
+    j["energy_stops_on_steep_ground_by_section"].push_back(
+        {{"section", sec.section}, {"count", sec.count}, {"x_m", {{"min", sec.x_min}, {"max", sec.x_max}}}});
   j["energy_stops_at_first_impact"] = s.energy_stops_at_first_impact;
   json lines = json::array();
   for (const auto& l : s.lines)

@@ -36,6 +36,11 @@ class RunSamples {
   // asks for all crossings); the first ones are kept beside them for the barrier design.
   RunSamples(std::size_t line_count, int main_direction, bool every_crossing = false);
 
+  // A quarry scenario's sections, run one after the other into one RunSamples: each has its own
+  // profile, so where energy stops fell is kept per section (an x range over two profiles
+  // means nothing), and the trajectories that follow run in `main_direction`.
+  void begin_section(std::string name, int main_direction);
+
   void add(const sim::TrajectorySummary& t);
   // Keeps the crossing in lines() when it is its trajectory's first on that line in the main
   // direction, and in every() when every crossing is asked for. Crossings must arrive in
@@ -58,6 +63,14 @@ class RunSamples {
   // Where they stopped: the least and the largest x (m; +inf and −inf when none did).
   double steep_energy_stop_x_min() const { return steep_x_min_; }
   double steep_energy_stop_x_max() const { return steep_x_max_; }
+  // The same per section (begin_section), in the order they ran; empty without sections.
+  struct SectionSteepStops {
+    std::string section;
+    std::uint64_t count = 0;
+    double x_min = std::numeric_limits<double>::infinity();
+    double x_max = -std::numeric_limits<double>::infinity();
+  };
+  const std::vector<SectionSteepStops>& steep_energy_stops_by_section() const { return steep_sections_; }
   // Energy stops at the trajectory's first impact, and the range of their largest speeds (m/s;
   // 0 and 0 when there are none).
   std::uint64_t first_impact_stops() const { return first_impact_stops_; }
@@ -78,6 +91,7 @@ class RunSamples {
   double steepest_tan_ = 0;
   double steep_x_min_ = std::numeric_limits<double>::infinity();
   double steep_x_max_ = -std::numeric_limits<double>::infinity();
+  std::vector<SectionSteepStops> steep_sections_;
   std::uint64_t first_impact_stops_ = 0;
   double first_stop_speed_min_ = std::numeric_limits<double>::infinity(), first_stop_speed_max_ = 0;
 };
@@ -127,6 +141,9 @@ struct RunStatistics {
   std::uint64_t energy_stops_on_steep_ground = 0;
   double steepest_energy_stop_deg = 0;  // the steepest ground of those (°)
   double energy_stop_steep_x_min = 0, energy_stop_steep_x_max = 0;  // where they stopped (m)
+  // In a quarry scenario, per section with such stops (each its own profile's x); the pooled
+  // range above is then not given (0, 0).
+  std::vector<RunSamples::SectionSteepStops> energy_stops_on_steep_ground_by_section;
   // Energy stops at the first impact: blocks that never got going, dropped gently (a source a
   // little above the ground) or hard (a fall so long that the impact takes nearly everything:
   // the restitution factors fall as its energy rises, Eq 6.4). Their largest speed, from the

@@ -6,7 +6,10 @@
 #include <cmath>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "pierre/design/run_statistics.hpp"
+#include "pierre/io/result_writer.hpp"
 
 namespace {
 
@@ -217,6 +220,48 @@ TEST(RunStatistics, EnergyStopsOnSteepGroundAreCountedAndNoted) {
   design::RunStatistics none = st;
   none.energy_stops_on_steep_ground = 0;
   EXPECT_TRUE(design::stop_reason_notes(none).empty());
+}
+
+// A quarry scenario's sections run into one RunSamples, each on its own profile: where the steep
+// energy stops fell is said per section (an x range over two profiles meant nothing), and a
+// section without any is left out.
+TEST(RunStatistics, SteepEnergyStopsAreLocatedPerQuarrySection) {
+  design::RunSamples s(0, 1);
+  auto stop = [&s](double x, float tan_beta) {
+    sim::TrajectorySummary t;
+    t.stop_reason = sim::StopReason::energy;
+    t.steep_stop_tan = tan_beta;
+    t.stop = {x, 0};
+    s.add(t);
+  };
+  s.begin_section("North", 1);
+  stop(16.1, 1.0f);
+  stop(16.3, 1.0f);
+  stop(40.0, 0.0f);  // not steep: no place
+  s.begin_section("Middle", 1);
+  stop(12.0, 0.0f);
+  s.begin_section("South", -1);
+  stop(10.6, 2.0f);
+  const auto st = design::run_statistics({}, s);
+  EXPECT_EQ(st.energy_stops_on_steep_ground, 3u);
+  ASSERT_EQ(st.energy_stops_on_steep_ground_by_section.size(), 2u);
+  EXPECT_EQ(st.energy_stops_on_steep_ground_by_section[0].section, "North");
+  EXPECT_EQ(st.energy_stops_on_steep_ground_by_section[0].count, 2u);
+  EXPECT_EQ(st.energy_stops_on_steep_ground_by_section[0].x_min, 16.1);
+  EXPECT_EQ(st.energy_stops_on_steep_ground_by_section[0].x_max, 16.3);
+  EXPECT_EQ(st.energy_stops_on_steep_ground_by_section[1].section, "South");
+  const auto notes = design::stop_reason_notes(st);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("(up to 63.4°, 2 in section North at x = 16.1 to 16.3 m; 1 in section "
+                          "South at x = 10.6 m)"),
+            std::string::npos)
+      << notes[0];
+  // summary.json gives them per section, and no pooled range.
+  const auto j = nlohmann::json::parse(io::summary_json(io::RunInfo{}, st));
+  EXPECT_TRUE(j["energy_stops_on_steep_ground_x_m"].is_null());
+  ASSERT_EQ(j["energy_stops_on_steep_ground_by_section"].size(), 2u);
+  EXPECT_EQ(j["energy_stops_on_steep_ground_by_section"][1]["section"], "South");
+  EXPECT_EQ(j["energy_stops_on_steep_ground_by_section"][1]["x_m"]["min"], 10.6);
 }
 
 // Energy stops at the first impact (one impact, stopped by energy) are counted, and noted from
