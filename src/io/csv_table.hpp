@@ -34,6 +34,17 @@ struct CsvTable {
 // knows the column by its name.
 using ColumnAliases = std::vector<std::pair<std::string, std::string>>;
 
+// A field record of observations (a barrier's observed crossings, a quarry's observed
+// distances) may say which block each row is and add a remark: columns read and left alone.
+inline const std::vector<std::string> kRecordColumns = {"id", "note"};
+inline const ColumnAliases kRecordColumnAliases = {
+    {"block_id", "id"}, {"block", "id"}, {"comment", "note"}, {"remark", "note"}};
+// `values` with the record columns, as read_csv's `allowed` and `may_be_empty` take them.
+inline std::vector<std::string> with_record_columns(std::vector<std::string> values) {
+  values.insert(values.end(), kRecordColumns.begin(), kRecordColumns.end());
+  return values;
+}
+
 // Digits only, with an optional leading minus ("16", "-0"): the halves of a number split by a
 // decimal comma ("16,5").
 bool whole_number_text(std::string_view s);

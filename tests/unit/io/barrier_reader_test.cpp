@@ -106,6 +106,26 @@ TEST(BarrierReader, ObservedColumnsMayGoWithoutUnitOrCase) {
   EXPECT_EQ(l.barrier_observed[0]->energy, (std::vector<double>{300e3, 410.5e3}));  // J
 }
 
+// A field record names its blocks and adds remarks: an id and a note column are read and left
+// alone (they were refused as unknown columns: new-user review). They alone are no record.
+TEST(BarrierReader, ObservedRecordsMayNameTheirBlocks) {
+  TempDir dir;
+  dir.write("obs.csv", "Block_ID,speed,height_m,Comment\nB1,10.5,1.2,\"rolled, then flew\"\nB2,12.0,2.0,\n");
+  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(kFull)), kRules);
+  ASSERT_TRUE(l.barrier_observed[0]);
+  EXPECT_EQ(l.barrier_observed[0]->speed, (std::vector<double>{10.5, 12.0}));
+  EXPECT_EQ(l.barrier_observed[0]->height, (std::vector<double>{1.2, 2.0}));
+  EXPECT_TRUE(l.barrier_observed[0]->energy.empty());
+  dir.write("obs.csv", "id,note\nB1,seen\n");
+  try {
+    (void)io::load_scenario(dir.path() / "s.toml", kRules);
+    ADD_FAILURE() << "a record without values was read";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.field(), "header");
+    EXPECT_NE(e.expected().find("speed_m_s, height_m and/or energy_kJ"), std::string::npos) << e.what();
+  }
+}
+
 TEST(BarrierReader, DefaultRuleSetIsPeilaRonco) {
   TempDir dir;
   const auto l = io::load_scenario(dir.write("s.toml", with_barrier(R"([[barriers]]

@@ -176,7 +176,8 @@ TEST(QuarryReader, GivenGeometryCsvFilesAndSeed) {
   test::TempDir dir;
   dir.write("face.csv", "x,z,material\n0,20,floor\n10,20,face\n20,0,floor\n90,0,\n");
   dir.write("blocks.csv", "id,mass\nA,140\nB,500\n");
-  dir.write("observed.csv", "first_impact,runout\n1.0,10.5\n,12.0\n2.5,\n");
+  // A field record with the block of each row and a remark, read and left alone.
+  dir.write("observed.csv", "block,first_impact,runout,remark\nA,1.0,10.5,\nB,,12.0,\"fell short, then rolled\"\nC,2.5,,\n");
   const std::string text = R"([[quarries]]
 name = "Pauliberg"
 rules = "quarry-conservative"
