@@ -30,7 +30,7 @@ std::size_t count_status(const std::vector<CheckLine>& lines, CheckStatus status
 void doubt_passes(std::vector<CheckLine>& lines, const std::vector<DoubtedInput>& doubts) {
   auto bears_on = [](const DoubtedInput& d, const CheckLine& l) {
     if (!d.subject.empty() && d.subject != l.subject) return false;
-    if (d.ids.empty()) return true;
+    if (d.ids.empty()) return l.id != "elongation";
     return std::any_of(d.ids.begin(), d.ids.end(), [&](const std::string& id) {
       return id == l.id || (id.ends_with('.') && l.id.starts_with(id));
     });

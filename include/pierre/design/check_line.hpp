@@ -49,7 +49,9 @@ std::size_t count_status(const std::vector<CheckLine>& lines, CheckStatus status
 struct DoubtedInput {
   std::string field;    // as the note names it: "blocks.density"
   std::string subject;  // the lines' subject (a barrier, a quarry section); empty: every subject
-  std::vector<std::string> ids;  // check ids, a prefix where one ends in '.'; empty: every line
+  // Check ids, a prefix where one ends in '.'; empty: every line that rests on the simulation
+  // (all but `elongation`, which compares two declared values: a distance and an elongation).
+  std::vector<std::string> ids;
   double value = std::numeric_limits<double>::quiet_NaN();  // as noted: what [confirmed] restates
 };
 // Each PASS among the lines a doubted input bears on is a WARN, its reason saying which input

@@ -247,6 +247,15 @@ TEST(BarrierCheckLines, ElongationPassFailAndNotApplicable) {
   auto lines = design::barrier_check_lines(d, r);
   EXPECT_EQ(line(lines, "elongation").status, CheckStatus::pass);
   EXPECT_DOUBLE_EQ(line(lines, "elongation").limit, 1.3 * 5.0);
+  // A doubted block mass (every line resting on the simulation) leaves it a PASS: the distance
+  // and the declared elongation owe nothing to the blocks (it WARNed: noted in a review).
+  {
+    auto doubted = lines;
+    ASSERT_EQ(line(doubted, "energy.mel").status, CheckStatus::pass);
+    design::doubt_passes(doubted, {{"blocks.table[0].mass", "", {}, 2.5}});
+    EXPECT_EQ(line(doubted, "elongation").status, CheckStatus::pass);
+    EXPECT_EQ(line(doubted, "energy.mel").status, CheckStatus::warn);  // rests on the blocks
+  }
   d.spec.candidate->distance_to_object = 6.4;
   EXPECT_EQ(status(d, r, "elongation"), CheckStatus::fail);
   // A SEL design uses γd,SEL = 1.5 with the SEL test's elongation.
