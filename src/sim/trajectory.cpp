@@ -16,6 +16,9 @@ using geometry::VertexTurn;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // A contact this close to a segment end is at the vertex: its neighbour is departed from too.
 constexpr double kVertexSlack = 1e-9;
+// A stop this close (m) to a segment's end vertex is at the vertex, for the steep-stop note only:
+// the ground it rests on is the next segment's.
+constexpr double kAtVertex = 1e-3;
 // Points drawn along one flight arc at most (see advance_flight).
 constexpr double kMaxPathPointsPerArc = 1000;
 
@@ -263,13 +266,19 @@ class Integrator {
     // arc after it may end slower: the rebound is one of the trajectory's speeds too.
     note_speed(v_, omega_);
     switch (res.result) {
-      case model::ImpactResult::stopped:
+      case model::ImpactResult::stopped: {
         // Said in the run's notes: tan β > tan φ, where sliding would not have stopped, on
-        // ground falling onwards (not a counter-slope: sliding back ends short of here).
-        if (std::abs(s.d.z) > m_.surface(s.material).tan_phi * std::abs(s.d.x) &&
-            !(s.d.z * s.d.x * profile_.main_direction() > 0))
-          out_.steep_stop_tan = static_cast<float>(std::abs(s.d.z) / std::abs(s.d.x));
+        // ground falling onwards (not a counter-slope: sliding back ends short of here). At a
+        // segment's end vertex the ground onward is the next segment's (a block at the toe
+        // rests on the floor's start).
+        const bool at_end =
+            along > s.length - kAtVertex && j + 1 < static_cast<int>(profile_.segment_count());
+        const Segment& on = at_end ? profile_.segment(j + 1) : s;
+        if (std::abs(on.d.z) > m_.surface(on.material).tan_phi * std::abs(on.d.x) &&
+            !(on.d.z * on.d.x * profile_.main_direction() > 0))
+          out_.steep_stop_tan = static_cast<float>(std::abs(on.d.z) / std::abs(on.d.x));
         return stop(StopReason::energy);
+      }
       case model::ImpactResult::sliding:
         return enter_ground(j, v_);
       case model::ImpactResult::rebound:

@@ -185,6 +185,31 @@ TEST(Trajectory, AnEnergyStopOnGroundSteeperThanItsFrictionAngleIsMarked) {
   EXPECT_GT(energy, 0u);
 }
 
+// A block stopped at the toe, the vertex between a 45° face and a level floor, rests on the
+// floor's start: the ground onward is level, and the stop is not one on steep ground (a checking
+// engineer found "steep" stops at x = 16.16 m, the toe vertex of a quarry face to 9 digits). A
+// drop a hundredth of a micrometre short of the vertex strikes the face's last point.
+TEST(Trajectory, AnEnergyStopAtTheToeVertexIsNotOnSteepGround) {
+  for (const double x : {10 - 1e-8, 10.0}) {
+    Scenario toe = test::make_scenario(test::make_profile({{0, 10}, {10, 0}, {30, 0}}),
+                                       test::make_material(15, 50, 0.5, 30), {test::make_block(1000)},
+                                       {x, 0.3}, 20);
+    toe.settings.stop_head_factor = 10;  // every block stops at its first impact
+    for (const auto& t : run(toe, 1).trajectories) {
+      ASSERT_EQ(t.stop_reason, StopReason::energy);
+      ASSERT_EQ(t.impacts, 1u);
+      EXPECT_NEAR(t.stop.x, 10, 1e-7);
+      EXPECT_EQ(t.steep_stop_tan, 0.0f) << x;
+    }
+  }
+  // A drop 1.4 mm up the face (1 mm in x) stops on it: steep ground.
+  Scenario face = test::make_scenario(test::make_profile({{0, 10}, {10, 0}, {30, 0}}),
+                                      test::make_material(15, 50, 0.5, 30), {test::make_block(1000)},
+                                      {9.999, 0.3}, 5);
+  face.settings.stop_head_factor = 10;
+  for (const auto& t : run(face, 1).trajectories) EXPECT_NEAR(t.steep_stop_tan, 1.0, 1e-6);
+}
+
 // Placed on the ground (source below it) with φ = 30° on a 45° slope: a = g (sin 45 − cos 45
 // tan 30) > 0. The first impact is the launch at the maximum sliding speed (5 m/s), after sliding
 // s = v²/2a along the slope: exactly where the closed form puts it. The same in the mirror image,
