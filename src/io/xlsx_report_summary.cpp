@@ -367,7 +367,9 @@ void Report::summary_checks(lxw_worksheet* ws, Row r) {
         return l.rule.find("(verify)") != std::string::npos;
       }))
     paragraph(ws, r++, 0, kNoteLast, kNoteWidth, t_.get("labels", "verify_note"), wrapped_note());
-  check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : 9),
+  // A:J, and as far as the widest table reaches: the barriers' design values to K (h_i), the
+  // quarry table to L.
+  check(worksheet_print_area(ws, 0, 0, r > 0 ? r - 1 : 0, d_.quarry ? 11 : !d_.barriers.empty() ? 10 : 9),
         "worksheet_print_area");
   if (!lines.empty()) check(worksheet_repeat_rows(ws, head, head), "worksheet_repeat_rows");
 }

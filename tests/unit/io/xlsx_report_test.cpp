@@ -1187,6 +1187,20 @@ TEST(XlsxReport, AWrappedRowIsAsTallAsItsWordsWrap) {
   EXPECT_GE(row_height_of(xlsx, "Summary", l.rule, dir.path()), 3 * 15.0);
 }
 
+// The Summary prints every column of its tables: the barriers' design values reach K (h_i, after
+// m_d was added), and the print area with them (it stopped at J, and h_i was not printed).
+TEST(XlsxReport, TheSummaryPrintsEveryColumnOfItsTables) {
+  PIERRE_NEED_PROGRAM("unzip");
+  TempDir dir;
+  auto f = make_fixture();
+  const fs::path xlsx = dir.path() / "report.xlsx";
+  io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
+  const std::string wb = zip_entry(xlsx, "xl/workbook.xml", dir.path());
+  const std::size_t area = wb.find(">Summary!$A$1:$");
+  ASSERT_NE(area, std::string::npos) << wb;
+  EXPECT_EQ(wb.substr(area + 15, 2), "K$") << wb.substr(area, 40);
+}
+
 // The Inputs sheet heads each barrier's column with its name: a long one wraps in a row as
 // tall as it needs (the row kept its default height and clipped it: new-user review).
 TEST(XlsxReport, ALongBarrierNameIsNotClippedOnInputs) {
