@@ -168,25 +168,29 @@ std::string section_advice(std::string_view key) {
 }
 
 // A table at the top level written after a [[list]] item (`[candidate]` below [[barriers]]):
-// TOML reads a header as a full path, so an item's own table is [barriers.candidate].
+// TOML reads a header as a full path, so an item's own table is [barriers.candidate]. The item
+// is the one whose [[header]] stands last above the table, whichever list it is of (items
+// written inline, `x = [{ … }]`, have no header to follow). Said as a condition: the table may
+// be meant for the top level and misspelt.
 std::string item_table_hint(const toml::table& top, std::string_view key, toml::source_index line) {
-  const toml::array* after = nullptr;
-  std::string name;
+  std::string list;
   toml::source_index latest = 0;
   for (auto&& [k, v] : top) {
     const toml::array* a = v.as_array();
-    if (!a || a->empty() || !a->is_array_of_tables()) continue;
-    const toml::source_index at = a->back().source().begin.line;
-    if (at < line && at > latest) {
-      latest = at;
-      after = a;
-      name = std::string(k.str());
+    if (!a || !a->is_array_of_tables()) continue;
+    for (const toml::node& item : *a) {
+      const toml::table* t = item.as_table();
+      const toml::source_index at = item.source().begin.line;
+      if (t && !t->is_inline() && at < line && at > latest) {
+        latest = at;
+        list = std::string(k.str());
+      }
     }
   }
-  if (!after) return {};
-  return fmt::format("; a table of the [[{0}]] item above is written [{0}.{1}] (a TOML header is a "
-                     "full path: [{1}] opens a section at the top level)",
-                     name, key);
+  if (list.empty()) return {};
+  return fmt::format("; if it belongs to the [[{0}]] item above, write [{0}.{1}] (a TOML header is "
+                     "a full path: [{1}] opens a section at the top level)",
+                     list, key);
 }
 
 }  // namespace

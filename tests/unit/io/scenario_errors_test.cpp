@@ -317,12 +317,28 @@ TEST(ScenarioSyntax, ASectionBelowAnotherHeaderIsToldSo) {
                                      "height = 3.0\n";
   EXPECT_THAT(error_of(root_candidate),
               HasSubstr("30 candidate: one of scenario, simulation, profile, materials, blocks, "
-                        "sources, observation_lines, barriers, quarries, confirmed; a table of the "
-                        "[[barriers]] item above is written [barriers.candidate]"))
+                        "sources, observation_lines, barriers, quarries, confirmed; if it belongs to "
+                        "the [[barriers]] item above, write [barriers.candidate]"))
       << error_of(root_candidate);
   // Above every [[list]] item there is no item to point to.
   EXPECT_THAT(error_of("[candidate]\nheight = 3.0\n" + pierre::test::base_with({{8, ""}, {9, ""}})),
-              Not(HasSubstr("item above")));
+              AllOf(HasSubstr("candidate: one of"), Not(HasSubstr("item above"))));
+  // Below the first of two barriers, after which another list's item stands: the barrier is the
+  // item above it, not the last item of any list (the first version took each list's last item).
+  const std::string first_of_two =
+      pierre::test::base_with({{8, ""}, {9, ""}}) +
+      "[[barriers]]\nname = \"A\"\nline = \"L\"\n[candidate]\nheight = 3.0\n"
+      "[[barriers]]\nname = \"B\"\nline = \"L\"\n";
+  EXPECT_THAT(error_of(first_of_two), HasSubstr("the [[barriers]] item above, write [barriers.candidate]"))
+      << error_of(first_of_two);
+  // Items written inline have no header to follow.
+  const std::string inline_only = "observation_lines = [{ name = \"L\", x = 15.0 }]\n"
+                                  "sources = [{ x = 1.0, z = 11.0 }]\n" +
+                                  pierre::test::base_with({{8, ""}, {9, ""}, {20, ""}, {21, ""}, {22, ""},
+                                                           {24, ""}, {25, ""}, {26, ""}}) +
+                                  "[candidate]\nheight = 3.0\n";
+  EXPECT_THAT(error_of(inline_only), AllOf(HasSubstr("candidate: one of"), Not(HasSubstr("item above"))))
+      << error_of(inline_only);
 }
 
 // The two slips toml++ describes in its own terms get a hint in ours: a decimal comma cuts a
