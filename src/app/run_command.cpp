@@ -1,7 +1,7 @@
 // pierre run SCENARIO --out DIR: validate, simulate, compute the barriers, write the results
 // atomically, print the tables; exit 0 whatever the checks say.
-// pierre check SCENARIO --out DIR: the same, then exit 1 when a check line FAILs (WARN never
-// changes the exit code). Bad input is found before anything is created in DIR.
+// pierre check SCENARIO --out DIR: the same, then exit 1 when a check line FAILs (or WARNs, with
+// --fail-on-warn). Bad input is found before anything is created in DIR.
 #include <unistd.h>
 
 #include <algorithm>
