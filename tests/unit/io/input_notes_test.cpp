@@ -290,6 +290,8 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   // block in tonnes (0.01 kg: 10 kg against a median of 2500).
   EXPECT_TRUE(notes_of(dir, base_with(18, masses({"140.0", "1500.0", "8130.0"}))).empty());
   EXPECT_TRUE(notes_of(dir, base_with(18, masses({"1500.0", "2500.0", "0.01", "3500.0"}))).empty());
+  // A wide field inventory: 8 kg read as tonnes would be 8000 kg, far beyond the heaviest.
+  EXPECT_TRUE(notes_of(dir, base_with(18, masses({"8.0", "400.0", "1200.0", "2500.0", "3000.0"}))).empty());
 }
 
 // The roughness is a tangent scale, the one input that is not in degrees: an angle (35) or a
