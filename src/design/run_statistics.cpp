@@ -191,9 +191,9 @@ std::vector<std::string> stop_reason_notes(const RunStatistics& s) {
     // face they would not, and the runouts and reach counts then fall short.
     const std::string steepest = fixed_text(s.steepest_energy_stop_deg, 1);
     const bool one = k == 1;
-    auto at = [](double x0, double x1) {
-      return x0 == x1 ? "at x = " + fixed_text(x0, 1) + " m"
-                      : "at x = " + fixed_text(x0, 1) + " to " + fixed_text(x1, 1) + " m";
+    auto at = [](double x0, double x1) {  // as printed: not "16.1 to 16.1 m"
+      const std::string a = fixed_text(x0, 1), b = fixed_text(x1, 1);
+      return a == b ? "at x = " + a + " m" : "at x = " + a + " to " + b + " m";
     };
     std::string where;
     const bool several = s.energy_stops_on_steep_ground_by_section.size() > 1;
