@@ -226,12 +226,11 @@ design::ObservedSample read_observed(const fs::path& file, std::vector<InputNote
   const std::vector<std::string> columns = {"speed_m_s", "height_m", "energy_kJ"};
   // Speed and height may go without their unit (m/s, m, as the profile's x and z do); an energy
   // may not: J or kJ is the slip that matters.
-  detail::ColumnAliases aliases = {{"speed", "speed_m_s"}, {"height", "height_m"}};
-  aliases.insert(aliases.end(), detail::kRecordColumnAliases.begin(), detail::kRecordColumnAliases.end());
   const auto allowed = detail::with_record_columns(columns);
   const CsvTable t = detail::read_csv(file, allowed,
                                       "speed_m_s, height_m and/or energy_kJ (and id, note if wanted)",
-                                      aliases, allowed);  // a value not measured for a block: empty
+                                      {{"speed", "speed_m_s"}, {"height", "height_m"}},
+                                      allowed);  // a value not measured for a block: empty
   design::ObservedSample o;
   o.file = file.string();
   struct Col {

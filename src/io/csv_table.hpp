@@ -35,10 +35,10 @@ struct CsvTable {
 using ColumnAliases = std::vector<std::pair<std::string, std::string>>;
 
 // A field record of observations (a barrier's observed crossings, a quarry's observed
-// distances) may say which block each row is and add a remark: columns read and left alone.
-inline const std::vector<std::string> kRecordColumns = {"id", "note"};
-inline const ColumnAliases kRecordColumnAliases = {
-    {"block_id", "id"}, {"block", "id"}, {"comment", "note"}, {"remark", "note"}};
+// distances) may say which block each row is and add a remark: columns read and left alone,
+// each under its own name (as aliases, `id` beside `block` was refused as "id" twice).
+inline const std::vector<std::string> kRecordColumns = {"id",   "block_id", "block",
+                                                        "note", "comment",  "remark"};
 // `values` with the record columns, as read_csv's `allowed` and `may_be_empty` take them.
 inline std::vector<std::string> with_record_columns(std::vector<std::string> values) {
   values.insert(values.end(), kRecordColumns.begin(), kRecordColumns.end());

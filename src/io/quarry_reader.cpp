@@ -284,11 +284,10 @@ void read_summary(const TomlTable& obs, std::string_view key, design::ObservedDi
 
 void read_observed_csv(const fs::path& file, design::QuarryObserved& o) {
   const std::vector<std::string> columns = {"first_impact", "runout"};
-  detail::ColumnAliases aliases = {{"first_impact_m", "first_impact"}, {"runout_m", "runout"}};
-  aliases.insert(aliases.end(), detail::kRecordColumnAliases.begin(), detail::kRecordColumnAliases.end());
   const auto allowed = detail::with_record_columns(columns);
   const CsvTable t = detail::read_csv(file, allowed, "first_impact and/or runout (m) (and id, note if wanted)",
-                                      aliases, allowed);  // a distance not measured for a block: empty
+                                      {{"first_impact_m", "first_impact"}, {"runout_m", "runout"}},
+                                      allowed);  // a distance not measured for a block: empty
   const auto c_id = t.column("first_impact"), c_rd = t.column("runout");
   if (!c_id && !c_rd)
     throw InputError(file, t.header_line, "header", "neither first_impact nor runout",

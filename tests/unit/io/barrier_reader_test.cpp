@@ -110,7 +110,7 @@ TEST(BarrierReader, ObservedColumnsMayGoWithoutUnitOrCase) {
 // alone (they were refused as unknown columns: new-user review). They alone are no record.
 TEST(BarrierReader, ObservedRecordsMayNameTheirBlocks) {
   TempDir dir;
-  dir.write("obs.csv", "Block_ID,speed,height_m,Comment\nB1,10.5,1.2,\"rolled, then flew\"\nB2,12.0,2.0,\n");
+  dir.write("obs.csv", "id,Block_ID,speed,height_m,Comment\n1,B1,10.5,1.2,\"rolled, then flew\"\n2,B2,12.0,2.0,\n");
   const auto l = io::load_scenario(dir.write("s.toml", with_barrier(kFull)), kRules);
   ASSERT_TRUE(l.barrier_observed[0]);
   EXPECT_EQ(l.barrier_observed[0]->speed, (std::vector<double>{10.5, 12.0}));
