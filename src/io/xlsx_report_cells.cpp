@@ -41,8 +41,9 @@ std::string lower(std::string s) {
   return s;
 }
 
-// "Barrier {name}" with a barrier named "Barrier 3" reads "Barrier 3", not "Barrier Barrier 3":
-// the words before {name} are left out when the name already starts with them.
+// "Barrier {name}" with a barrier named "barrier 3" reads "Barrier 3", not "Barrier barrier 3":
+// a name that starts with the words before {name} (ASCII case aside) gives up that start, and
+// the template's words and case stand.
 std::string with_name(const std::string& pattern, const std::string& name) {
   const std::size_t at = pattern.find("{name}");
   if (at == std::string::npos) return pattern;
@@ -51,7 +52,10 @@ std::string with_name(const std::string& pattern, const std::string& name) {
   const bool repeats = !before.empty() && name.size() >= before.size() &&
                        lower(name.substr(0, before.size())) == lower(before) &&
                        (name.size() == before.size() || name[before.size()] == ' ');
-  return replace_all(repeats ? pattern.substr(at) : pattern, "{name}", name);
+  if (!repeats) return replace_all(pattern, "{name}", name);
+  std::string text = replace_all(pattern, "{name}", name.substr(std::min(name.size(), before.size() + 1)));
+  while (!text.empty() && text.back() == ' ') text.pop_back();  // a name that is the word alone
+  return text;
 }
 
 std::string format_number(double v) {
