@@ -233,46 +233,48 @@ void Report::headings(lxw_worksheet* ws, Row r, Col c0, std::string_view table,
   check(worksheet_set_row(ws, r, height, nullptr), "worksheet_set_row");
 }
 
+double wrapped_lines(const std::string& text, double width) {
+  // An average character of text is narrower than Excel's width unit (the digit 0).
+  const double room = width * 1.15;
+  double n = 0;
+  std::size_t p = 0;
+  while (p <= text.size()) {  // each line of the text wraps on its own
+    std::size_t e = text.find('\n', p);
+    if (e == std::string::npos) e = text.size();
+    // Word by word, as the spreadsheet wraps (at a space, or after a hyphen): a word that
+    // does not fit on the line begins the next (counting characters alone left a rule's
+    // "(catch-bench retention)" clipped).
+    double used = 0, k = 1;
+    std::size_t i = p;
+    while (i < e) {
+      std::size_t j = i;  // the word: up to a space (left out) or a hyphen (kept)
+      double word = 0;
+      while (j < e && text[j] != ' ') {
+        if ((static_cast<unsigned char>(text[j]) & 0xC0) != 0x80) ++word;
+        if (text[j++] == '-') break;
+      }
+      const bool spaced = used > 0 && i > p && text[i - 1] == ' ';
+      if (used > 0 && used + (spaced ? 1 : 0) + word > room) {
+        ++k;
+        used = 0;
+      }
+      used += (used > 0 && spaced ? 1 : 0) + word;
+      while (used > room) {  // a word longer than the line runs on over the next
+        ++k;
+        used -= room;
+      }
+      i = j < e && text[j] == ' ' ? j + 1 : j;
+    }
+    n += k;
+    p = e + 1;
+  }
+  return n;
+}
+
 void Report::fit_row(lxw_worksheet* ws, Row r,
                      std::initializer_list<std::pair<const std::string*, double>> cells) {
   double lines = 1;
-  for (const auto& [text, w] : cells) {
-    // An average character of text is narrower than Excel's width unit (the digit 0).
-    const double room = w * 1.15;
-    double n = 0;
-    std::size_t p = 0;
-    while (p <= text->size()) {  // each line of the text wraps on its own
-      std::size_t e = text->find('\n', p);
-      if (e == std::string::npos) e = text->size();
-      // Word by word, as the spreadsheet wraps (at a space, or after a hyphen): a word that
-      // does not fit on the line begins the next (counting characters alone left a rule's
-      // "(catch-bench retention)" clipped).
-      double used = 0, k = 1;
-      std::size_t i = p;
-      while (i < e) {
-        std::size_t j = i;  // the word: up to a space (left out) or a hyphen (kept)
-        double word = 0;
-        while (j < e && (*text)[j] != ' ') {
-          if ((static_cast<unsigned char>((*text)[j]) & 0xC0) != 0x80) ++word;
-          if ((*text)[j++] == '-') break;
-        }
-        const bool spaced = used > 0 && i > p && (*text)[i - 1] == ' ';
-        if (used > 0 && used + (spaced ? 1 : 0) + word > room) {
-          ++k;
-          used = 0;
-        }
-        used += (used > 0 && spaced ? 1 : 0) + word;
-        while (used > room) {  // a word longer than the line runs on over the next
-          ++k;
-          used -= room;
-        }
-        i = j < e && (*text)[j] == ' ' ? j + 1 : j;
-      }
-      n += k;
-      p = e + 1;
-    }
-    lines = std::max(lines, n);
-  }
+  for (const auto& [text, w] : cells) lines = std::max(lines, wrapped_lines(*text, w));
   if (lines > 1)
     check(worksheet_set_row(ws, r, 15.0 * lines, nullptr), "worksheet_set_row");
 }

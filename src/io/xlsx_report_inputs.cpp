@@ -247,13 +247,15 @@ Row Report::inputs_barriers(lxw_worksheet* ws, Row r) {
   if (d_.barriers.empty()) return r;
   r = table_title(ws, r, "barrier_inputs");
   text(ws, r, 0, h("barrier_inputs", "field"), heading());
-  const std::string* longest = nullptr;  // its heading row as tall as the longest name needs
+  // The heading row as tall as the name that wraps to most lines (bold: narrower than the
+  // column's 16 characters).
+  const std::string* tallest = nullptr;
   for (std::size_t i = 0; i < d_.barriers.size() && i < 200; ++i) {
     const std::string& name = d_.barriers[i].spec.name;
     text(ws, r, static_cast<Col>(1 + i), name, heading());
-    if (!longest || name.size() > longest->size()) longest = &name;
+    if (!tallest || wrapped_lines(name, 14) > wrapped_lines(*tallest, 14)) tallest = &name;
   }
-  if (longest) fit_row(ws, r, {{longest, 14}});  // bold: narrower than the column's 16
+  if (tallest) fit_row(ws, r, {{tallest, 14}});
   ++r;
   auto row = [&](std::string_view key) {
     text(ws, r, 0, h("barrier_inputs", key), bold());

@@ -54,6 +54,9 @@ T* check_ptr(T* p, std::string_view what) {
 std::string replace_all(std::string s, std::string_view key, std::string_view value);
 std::string lower(std::string s);
 std::string with_name(const std::string& pattern, const std::string& name);
+// The lines `text` takes wrapped in cells `width` characters wide, word by word as the
+// spreadsheet wraps (Report::fit_row sets a row's height from it).
+double wrapped_lines(const std::string& text, double width);
 // An ISO date "YYYY-MM-DD" (anything after the tenth character is ignored).
 std::chrono::year_month_day parse_date(const std::string& s);
 // Four significant digits, "—" for a NaN or an infinity (numbers inside a text).

@@ -1209,6 +1209,10 @@ TEST(XlsxReport, ALongBarrierNameIsNotClippedOnInputs) {
   auto f = make_fixture();
   const std::string name = "Rockfall barrier above the north portal";  // 40 characters, 3 lines
   f->data.barriers.at(0).spec.name = name;
+  // A name longer in bytes (two-byte letters: 49 bytes) that wraps to fewer lines (2) does not
+  // decide the height.
+  f->data.barriers.push_back(f->data.barriers.at(0));
+  f->data.barriers.back().spec.name = "ÄÖÜÄÖÜÄÖÜÄÖÜ ÄÖÜÄÖÜÄÖÜÄÖÜ";
   const fs::path xlsx = dir.path() / "report.xlsx";
   io::write_report(xlsx, f->data, io::load_report_template(kTemplate));
   EXPECT_GE(row_height_of(xlsx, "Inputs", name, dir.path()), 3 * 15.0);
