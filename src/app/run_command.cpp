@@ -228,7 +228,10 @@ class RunCommand final : public Command {
   }
 
  private:
-  RunFlags flags() const { return {check_, strict_, fail_on_warn_, all_crossings_, impacts_}; }
+  RunFlags flags() const {
+    return {.check = check_, .strict = strict_, .fail_on_warn = fail_on_warn_,
+            .all_crossings = all_crossings_, .impacts = impacts_};
+  }
 
   std::string scenario_, out_, rules_;
   std::int64_t seed_ = 0;  // signed, so that a negative seed is refused, not wrapped

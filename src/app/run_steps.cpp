@@ -105,6 +105,7 @@ int check_exit_code(const RunFlags& flags, const std::vector<design::CheckLine>&
   if (!flags.check) return kExitOk;
   if (design::any_failure(lines)) return kExitCheckFailed;
   if (!design::any_failure(lines, flags.fail_on_warn)) return kExitOk;
+  std::fflush(stdout);  // after the check lines it explains, in a log that takes both streams
   fmt::print(stderr, "Exit code 1 (--fail-on-warn): {} check line{} WARN.\n",
              design::count_status(lines, design::CheckStatus::warn),
              design::count_status(lines, design::CheckStatus::warn) == 1 ? "" : "s");
