@@ -2,6 +2,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 #include "commands.hpp"
 #include "console.hpp"
@@ -10,6 +12,7 @@
 #include "run_steps.hpp"
 #include "pierre/design/design_block.hpp"
 #include "pierre/design/number_text.hpp"
+#include "pierre/io/result_writer.hpp"
 #include "pierre/io/scenario_reader.hpp"
 
 namespace pierre::app {
@@ -46,15 +49,42 @@ class ValidateCommand final : public Command {
                 "An input noted as a likely slip that [confirmed] does not confirm is an error "
                 "(exit 2), as `run --strict` and `check --strict` make it; so is a run too large "
                 "for this machine's memory, which `run` refuses");
+    c->add_flag("--json", json_,
+                "Print the verdict as JSON on stdout, for a script: valid, the error's file, line, "
+                "field, found and expected, the input notes (docs/summary-json.md)");
     c->footer(
         "Example:\n"
         "  pierre validate examples/vaujany-2d/scenario.toml\n"
         "prints a summary and exits 0 when the scenario is valid; else names the file, line and\n"
-        "field at fault and exits 2.");
+        "field at fault and exits 2. With --json the same verdict and exit code, as JSON.");
     return c;
   }
 
-  int run() override {
+  int run() override { return json_ ? run_json() : run_text(); }
+
+ private:
+  // --json: every check of the text form, the verdict as one JSON object on stdout; an input
+  // error is part of it (exit 2 all the same), and nothing else goes to stdout.
+  int run_json() {
+    std::optional<io::LoadedScenario> l;
+    try {
+      l = io::load_scenario(scenario_, rules_folder(rules_));
+      note_shared_section_seeds(*l);
+      if (strict_ && any_in_doubt(*l)) refuse_doubted_inputs(*l);
+      if (strict_) (void)check_run_memory(*l, std::nullopt);
+      load_report_layout(stderr);
+      (void)report_date();
+    } catch (const io::InputError& e) {
+      fmt::print("{}", io::validation_json(scenario_, &e, l ? l->notes : std::vector<io::InputNote>{},
+                                           0, std::nullopt));
+      return kExitInput;
+    }
+    fmt::print("{}", io::validation_json(scenario_, nullptr, l->notes, total_trajectories(*l),
+                                         memory_note(*l)));
+    return kExitOk;
+  }
+
+  int run_text() {
     io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
     note_shared_section_seeds(l);
     if (strict_ && any_in_doubt(l)) {
@@ -119,17 +149,17 @@ class ValidateCommand final : public Command {
     return kExitOk;
   }
 
- private:
   // A count this machine cannot run is no fault of the file (another machine may run it): said
   // as a note, where `run` refuses it (and `validate --strict`, above).
-  static void print_memory_note(const io::LoadedScenario& l) {
-    std::string note;
+  static std::optional<std::string> memory_note(const io::LoadedScenario& l) {
     try {
-      if (const auto n = check_run_memory(l, std::nullopt)) note = *n;
+      return check_run_memory(l, std::nullopt);
     } catch (const io::InputError& e) {
-      note = std::string(e.what()) + " (pierre run refuses it on this machine)";
+      return std::string(e.what()) + " (pierre run refuses it on this machine)";
     }
-    if (!note.empty()) fmt::print("Note: {}\n", note);
+  }
+  static void print_memory_note(const io::LoadedScenario& l) {
+    if (const auto note = memory_note(l)) fmt::print("Note: {}\n", *note);
   }
 
   // " (haul road 12 m, crusher 30 m)": each work area with its distance from the toe.
@@ -190,7 +220,7 @@ class ValidateCommand final : public Command {
   }
 
   std::string scenario_, rules_;
-  bool strict_ = false;
+  bool strict_ = false, json_ = false;
 };
 
 }  // namespace

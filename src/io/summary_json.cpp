@@ -317,6 +317,47 @@ ojson quarry_average_json(const design::QuarryAverage& a) {
 
 }  // namespace
 
+static nlohmann::ordered_json input_notes_json(const std::vector<InputNote>& notes) {
+  auto a = nlohmann::ordered_json::array();
+  for (const auto& n : notes)
+    a.push_back({{"file", n.file.string()},
+                 {"line", n.line},
+                 {"field", n.field},
+                 {"note", n.text},
+                 // a likely slip [confirmed] does not confirm: the check lines resting on it
+                 // cannot PASS (`check --strict` refuses it)
+                 {"in_doubt", n.doubt.has_value()}});
+  return a;
+}
+
+std::string validation_json(const std::filesystem::path& scenario, const InputError* error,
+                            const std::vector<InputNote>& notes, std::uint64_t trajectories,
+                            const std::optional<std::string>& memory_note) {
+  nlohmann::ordered_json j;
+  j["schema_version"] = kSummarySchemaVersion;
+  j["pierre_version"] = version();
+  j["pierre_build"] = build_id();
+  j["scenario_file"] = scenario.string();
+  j["valid"] = error == nullptr;
+  j["error"] = error ? nlohmann::ordered_json{{"file", error->file().string()},
+                                              {"line", error->line()},
+                                              {"field", error->field()},
+                                              {"found", error->found()},
+                                              {"expected", error->expected()},
+                                              {"message", error->what()}}
+                     : nlohmann::ordered_json(nullptr);
+  j["input_notes"] = input_notes_json(notes);
+  j["in_doubt"] = std::count_if(notes.begin(), notes.end(),
+                                [](const InputNote& n) { return n.doubt.has_value(); });
+  if (error) {
+    j["trajectories"] = nullptr;
+  } else {
+    j["trajectories"] = trajectories;
+  }
+  j["memory_note"] = memory_note ? nlohmann::ordered_json(*memory_note) : nlohmann::ordered_json(nullptr);
+  return j.dump(2) + "\n";
+}
+
 std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                          const DesignResults& results) {
   using json = nlohmann::ordered_json;
@@ -378,15 +419,7 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
                               {"friction_angle_deg", m.friction_angle_deg}});
   // The readers' notes (a profile running back in x, a source far above the ground): what the
   // console said, kept for a pipeline that reads only this file. [] when there were none.
-  j["input_notes"] = json::array();
-  for (const auto& n : info.input_notes)
-    j["input_notes"].push_back({{"file", n.file.string()},
-                                {"line", n.line},
-                                {"field", n.field},
-                                {"note", n.text},
-                                // a likely slip [confirmed] does not confirm: the check lines
-                                // resting on it cannot PASS (`check --strict` refuses it)
-                                {"in_doubt", n.doubt.has_value()}});
+  j["input_notes"] = input_notes_json(info.input_notes);
   j["blocks"] = info.blocks;
   j["sources"] = info.sources;
   j["trajectories"] = info.trajectories;

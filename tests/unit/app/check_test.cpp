@@ -138,6 +138,47 @@ std::string density_in_tonnes() {
   return text;
 }
 
+// `validate --json`: the verdict as one JSON object on stdout and nothing else there, for a script
+// (a pre-commit hook annotating file:line): valid with its notes; an input error with its file,
+// line, field, found and expected, exit 2 as without --json; --strict refusing a doubted input.
+TEST_F(Check, ValidateJsonGivesTheVerdictToAScript) {
+  const Result ok = pierre("validate " + kData + "pass.toml --json");
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  const auto v = nlohmann::json::parse(ok.out);  // throws on anything but one JSON object
+  EXPECT_EQ(v["valid"], true);
+  EXPECT_TRUE(v["error"].is_null());
+  EXPECT_EQ(v["in_doubt"], 0);
+  EXPECT_GT(v["trajectories"].get<std::uint64_t>(), 0u);
+
+  std::ofstream(dir_ / "bad.toml") << "[scenario]\nname = \"x\"\n[simulation]\nseed = 1\nthrows = 2.5\n";
+  const Result bad = pierre("validate " + q(dir_ / "bad.toml") + " --json");
+  EXPECT_EQ(bad.code, 2);
+  const auto e = nlohmann::json::parse(bad.out);
+  EXPECT_EQ(e["valid"], false);
+  EXPECT_EQ(e["error"]["file"], (dir_ / "bad.toml").string());
+  EXPECT_EQ(e["error"]["line"], 5);
+  EXPECT_EQ(e["error"]["field"], "simulation.throws");
+  EXPECT_EQ(e["error"]["found"], "2.5");
+  EXPECT_EQ(e["error"]["expected"], "an integer");
+  EXPECT_TRUE(e["trajectories"].is_null());
+
+  std::ofstream(dir_ / "slip.toml") << density_in_tonnes();
+  const Result doubted = pierre("validate " + q(dir_ / "slip.toml") + " --json");
+  ASSERT_EQ(doubted.code, 0) << doubted.err;
+  const auto d = nlohmann::json::parse(doubted.out);
+  EXPECT_EQ(d["valid"], true);
+  EXPECT_EQ(d["in_doubt"], 1);
+  ASSERT_EQ(d["input_notes"].size(), 1u);
+  EXPECT_EQ(d["input_notes"][0]["field"], "blocks.density");
+  EXPECT_EQ(d["input_notes"][0]["in_doubt"], true);
+  const Result strict = pierre("validate " + q(dir_ / "slip.toml") + " --json --strict");
+  EXPECT_EQ(strict.code, 2);
+  const auto r = nlohmann::json::parse(strict.out);
+  EXPECT_EQ(r["valid"], false);
+  EXPECT_EQ(r["error"]["field"], "blocks.density");
+  EXPECT_EQ(r["input_notes"].size(), 1u);  // the note that the refusal rests on
+}
+
 // A density typed in t/m³ (2.65 for 2650 kg/m³) makes the block given by volume 1000 times too
 // light and the one given by mass 1000 times too large; the reader notes it, and no line of the
 // run may then PASS: a pipeline gating on `check` would take a barrier checked against blocks of

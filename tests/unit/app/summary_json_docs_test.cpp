@@ -58,6 +58,13 @@ TEST_F(SummaryJsonDocs, EveryKeyIsDocumented) {
     ASSERT_LE(r.code, 1) << r.err;
     keys_of(nlohmann::json::parse(slurp(out / "summary.json")), keys);
   }
+  // `validate --json`, valid and not: its keys are in the reference too.
+  for (const std::string& scenario : {std::string(PIERRE_SOURCE_DIR) + "/examples/vaujany-2d/scenario.toml",
+                                      (dir_ / "missing.toml").string()}) {
+    const auto r = pierre("validate " + q(scenario) + " --json");
+    ASSERT_LE(r.code, 2) << r.err;
+    keys_of(nlohmann::json::parse(r.out), keys);
+  }
   EXPECT_GT(keys.size(), 150u);  // the runs gave the keys to check
   for (const std::string& k : keys) EXPECT_TRUE(documented.count(k)) << "`" << k << "` is not in docs/summary-json.md";
   // The version the reference states is the one written.
