@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,28 +95,33 @@ TEST(BarrierReader, ReadsEveryField) {
   EXPECT_FALSE(l.barrier_observed[1]);
 }
 
+// The observed sample the reader takes from `csv`, written as obs.csv beside a barrier scenario.
+design::ObservedSample observed_from(TempDir& dir, const std::string& csv) {
+  dir.write("obs.csv", csv);
+  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(kFull)), kRules);
+  if (!l.barrier_observed[0]) throw std::runtime_error("no observed sample read");
+  return *l.barrier_observed[0];
+}
+
 // The observed columns as a spreadsheet heads them: speed and height without their unit, any
 // case. The values are the same as under the canonical header.
 TEST(BarrierReader, ObservedColumnsMayGoWithoutUnitOrCase) {
   TempDir dir;
-  dir.write("obs.csv", "Speed,HEIGHT,Energy_KJ\n10.5,1.2,300\n,2.0,\n12.0,,410.5\n");
-  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(kFull)), kRules);
-  ASSERT_TRUE(l.barrier_observed[0]);
-  EXPECT_EQ(l.barrier_observed[0]->speed, (std::vector<double>{10.5, 12.0}));
-  EXPECT_EQ(l.barrier_observed[0]->height, (std::vector<double>{1.2, 2.0}));
-  EXPECT_EQ(l.barrier_observed[0]->energy, (std::vector<double>{300e3, 410.5e3}));  // J
+  const auto o = observed_from(dir, "Speed,HEIGHT,Energy_KJ\n10.5,1.2,300\n,2.0,\n12.0,,410.5\n");
+  EXPECT_EQ(o.speed, (std::vector<double>{10.5, 12.0}));
+  EXPECT_EQ(o.height, (std::vector<double>{1.2, 2.0}));
+  EXPECT_EQ(o.energy, (std::vector<double>{300e3, 410.5e3}));  // J
 }
 
 // A field record names its blocks and adds remarks: an id and a note column are read and left
 // alone (they were refused as unknown columns: new-user review). They alone are no record.
 TEST(BarrierReader, ObservedRecordsMayNameTheirBlocks) {
   TempDir dir;
-  dir.write("obs.csv", "id,Block_ID,speed,height_m,Comment\n1,B1,10.5,1.2,\"rolled, then flew\"\n2,B2,12.0,2.0,\n");
-  const auto l = io::load_scenario(dir.write("s.toml", with_barrier(kFull)), kRules);
-  ASSERT_TRUE(l.barrier_observed[0]);
-  EXPECT_EQ(l.barrier_observed[0]->speed, (std::vector<double>{10.5, 12.0}));
-  EXPECT_EQ(l.barrier_observed[0]->height, (std::vector<double>{1.2, 2.0}));
-  EXPECT_TRUE(l.barrier_observed[0]->energy.empty());
+  const auto o = observed_from(
+      dir, "id,Block_ID,speed,height_m,Comment\n1,B1,10.5,1.2,\"rolled, then flew\"\n2,B2,12.0,2.0,\n");
+  EXPECT_EQ(o.speed, (std::vector<double>{10.5, 12.0}));
+  EXPECT_EQ(o.height, (std::vector<double>{1.2, 2.0}));
+  EXPECT_TRUE(o.energy.empty());
   dir.write("obs.csv", "id,note\nB1,seen\n");
   try {
     (void)io::load_scenario(dir.path() / "s.toml", kRules);
