@@ -355,7 +355,7 @@ std::string validation_json(const std::filesystem::path& scenario, const InputEr
     j["trajectories"] = trajectories;
   }
   j["memory_note"] = memory_note ? nlohmann::ordered_json(*memory_note) : nlohmann::ordered_json(nullptr);
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
@@ -512,7 +512,7 @@ std::string summary_json(const RunInfo& info, const design::RunStatistics& s,
       counts[std::string(design::to_string(st))] = design::count_status(results.checks, st);
     j["check_counts"] = counts;
   }
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 void write_summary_json(const std::filesystem::path& file, const RunInfo& info,

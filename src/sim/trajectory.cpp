@@ -16,9 +16,6 @@ using geometry::VertexTurn;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // A contact this close to a segment end is at the vertex: its neighbour is departed from too.
 constexpr double kVertexSlack = 1e-9;
-// A stop this close (m) to a segment's end vertex is at the vertex, for the steep-stop note only:
-// the ground it rests on is the next segment's.
-constexpr double kAtVertex = 1e-3;
 // Points drawn along one flight arc at most (see advance_flight).
 constexpr double kMaxPathPointsPerArc = 1000;
 
@@ -268,11 +265,12 @@ class Integrator {
     switch (res.result) {
       case model::ImpactResult::stopped: {
         // Said in the run's notes: tan β > tan φ, where sliding would not have stopped, on
-        // ground falling onwards (not a counter-slope: sliding back ends short of here). At a
-        // segment's end vertex the ground onward is the next segment's (a block at the toe
-        // rests on the floor's start).
+        // ground falling onwards (not a counter-slope: sliding back ends short of here). A block
+        // whose centre stops within its radius of a segment's end vertex rests on the next
+        // segment too (one stopped a few centimetres up the face above the toe rests on the
+        // floor): that one is the ground it is judged on. The physics is not touched.
         const bool at_end =
-            along > s.length - kAtVertex && j + 1 < static_cast<int>(profile_.segment_count());
+            along > s.length - blk_->radius && j + 1 < static_cast<int>(profile_.segment_count());
         const Segment& on = at_end ? profile_.segment(j + 1) : s;
         if (std::abs(on.d.z) > m_.surface(on.material).tan_phi * std::abs(on.d.x) &&
             !(on.d.z * on.d.x * profile_.main_direction() > 0))

@@ -152,17 +152,18 @@ struct DesignResults {
   std::vector<design::CheckLine> checks;
 };
 
-// summary.json's text (pretty-printed, NaN and infinity as null): the run, its inputs and model,
-// its statistics, the design results and every check line. Every key is documented in
-// docs/summary-json.md (a test holds the two together); kSummarySchemaVersion says when a
-// parser must look again.
 // `pierre validate --json`: the verdict as a script reads it (docs/summary-json.md): valid or
 // not, the error (file, line, field, found, expected, message) or null, the input notes as
 // summary.json gives them, the trajectories to run and the memory note. `error` null: valid.
+// Bytes of a path that are not UTF-8 are replaced (the JSON writer would throw on them).
 std::string validation_json(const std::filesystem::path& scenario, const InputError* error,
                             const std::vector<InputNote>& notes, std::uint64_t trajectories,
                             const std::optional<std::string>& memory_note);
 
+// summary.json's text (pretty-printed, NaN and infinity as null): the run, its inputs and model,
+// its statistics, the design results and every check line. Every key is documented in
+// docs/summary-json.md (a test holds the two together); kSummarySchemaVersion says when a
+// parser must look again.
 std::string summary_json(const RunInfo& info, const design::RunStatistics& stats,
                          const DesignResults& design = {});
 void write_summary_json(const std::filesystem::path& file, const RunInfo& info,

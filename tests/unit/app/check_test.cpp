@@ -161,6 +161,14 @@ TEST_F(Check, ValidateJsonGivesTheVerdictToAScript) {
   EXPECT_EQ(e["error"]["found"], "2.5");
   EXPECT_EQ(e["error"]["expected"], "an integer");
   EXPECT_TRUE(e["trajectories"].is_null());
+  // A path whose bytes are not UTF-8 (a Latin-1 folder name) is still one JSON object (the JSON
+  // writer threw, exit 3 and nothing on stdout): the byte stands replaced.
+  const fs::path latin1 = dir_ / "v\xe9";
+  fs::create_directories(latin1);
+  fs::copy_file(dir_ / "bad.toml", latin1 / "bad.toml");
+  const Result odd = pierre("validate " + q(latin1 / "bad.toml") + " --json");
+  EXPECT_EQ(odd.code, 2) << odd.err;
+  EXPECT_EQ(nlohmann::json::parse(odd.out)["error"]["line"], 5);
 
   std::ofstream(dir_ / "slip.toml") << density_in_tonnes();
   const Result doubted = pierre("validate " + q(dir_ / "slip.toml") + " --json");

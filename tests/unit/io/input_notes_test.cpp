@@ -290,8 +290,11 @@ TEST(InputNotes, BlocksInTonnesOrLitresAreNoted) {
   // block in tonnes (0.01 kg: 10 kg against a median of 2500).
   EXPECT_TRUE(notes_of(dir, base_with(18, masses({"140.0", "1500.0", "8130.0"}))).empty());
   EXPECT_TRUE(notes_of(dir, base_with(18, masses({"1500.0", "2500.0", "0.01", "3500.0"}))).empty());
-  // A wide field inventory: 8 kg read as tonnes would be 8000 kg, far beyond the heaviest.
-  EXPECT_TRUE(notes_of(dir, base_with(18, masses({"8.0", "400.0", "1200.0", "2500.0", "3000.0"}))).empty());
+  // An 8 t block and a 0.6 t one typed in tonnes among 1500 to 3500 kg are asked about; a row
+  // that read in kg would be over three times the heaviest is not (12 000 kg against 3500 kg).
+  for (const char* slip : {"8.0", "0.6"})
+    EXPECT_EQ(notes_of(dir, base_with(18, masses({"1500.0", "2500.0", slip, "3500.0"}))).size(), 1u) << slip;
+  EXPECT_TRUE(notes_of(dir, base_with(18, masses({"1500.0", "2500.0", "12.0", "3500.0"}))).empty());
 }
 
 // The roughness is a tangent scale, the one input that is not in degrees: an angle (35) or a
