@@ -106,9 +106,9 @@ int check_exit_code(const RunFlags& flags, const std::vector<design::CheckLine>&
   if (design::any_failure(lines)) return kExitCheckFailed;
   if (!design::any_failure(lines, flags.fail_on_warn)) return kExitOk;
   std::fflush(stdout);  // after the check lines it explains, in a log that takes both streams
-  fmt::print(stderr, "Exit code 1 (--fail-on-warn): {} check line{} WARN.\n",
-             design::count_status(lines, design::CheckStatus::warn),
-             design::count_status(lines, design::CheckStatus::warn) == 1 ? "" : "s");
+  const std::size_t warns = design::count_status(lines, design::CheckStatus::warn);
+  fmt::print(stderr, "Exit code 1 (--fail-on-warn): {} check line{} WARN.\n", warns,
+             warns == 1 ? "" : "s");
   return kExitCheckFailed;
 }
 
@@ -259,7 +259,7 @@ std::vector<design::DoubtedInput> doubted_inputs(const std::vector<io::InputNote
 }
 
 bool any_in_doubt(const io::LoadedScenario& loaded) {
-  return std::any_of(loaded.notes.begin(), loaded.notes.end(), in_doubt);
+  return io::doubted_count(loaded.notes) > 0;
 }
 
 void refuse_doubted_inputs(const io::LoadedScenario& loaded) {

@@ -69,14 +69,10 @@ class ValidateCommand final : public Command {
     std::optional<io::LoadedScenario> l;
     try {
       l = io::load_scenario(scenario_, rules_folder(rules_));
-      note_shared_section_seeds(*l);
-      if (strict_ && any_in_doubt(*l)) refuse_doubted_inputs(*l);
-      if (strict_) (void)check_run_memory(*l, std::nullopt);
-      load_report_layout(stderr);
-      (void)report_date();
+      check_as_run(*l, stderr, false);
     } catch (const io::InputError& e) {
       fmt::print("{}", io::validation_json(scenario_, &e, l ? l->notes : std::vector<io::InputNote>{},
-                                           0, std::nullopt));
+                                           std::nullopt, std::nullopt));
       return kExitInput;
     }
     fmt::print("{}", io::validation_json(scenario_, nullptr, l->notes, total_trajectories(*l),
@@ -86,16 +82,7 @@ class ValidateCommand final : public Command {
 
   int run_text() {
     io::LoadedScenario l = io::load_scenario(scenario_, rules_folder(rules_));
-    note_shared_section_seeds(l);
-    if (strict_ && any_in_doubt(l)) {
-      print_input_notes(stderr, l.notes);  // each said, then the refusal
-      refuse_doubted_inputs(l);
-    }
-    // --strict says what `run` would refuse here, this machine's memory included: a pipeline's
-    // pre-check must not pass a scenario the run then refuses (new-user review).
-    if (strict_) (void)check_run_memory(l, std::nullopt);
-    load_report_layout(stdout);  // `run` needs it too: a missing or broken one is said now
-    (void)report_date();   // and the date SOURCE_DATE_EPOCH gives it
+    check_as_run(l, stdout, true);
     if (!l.quarries.empty()) {
       const int code = print_quarries(l);
       print_input_notes(stdout, l.notes);
@@ -149,6 +136,22 @@ class ValidateCommand final : public Command {
     return kExitOk;
   }
 
+  // What `run` checks besides the scenario, each an InputError: the sections' seeds; with
+  // --strict the inputs in doubt (`say_doubts`: each said on stderr, then the refusal) and this
+  // machine's memory, as a pipeline's pre-check must not pass a scenario the run then refuses
+  // (new-user review); the report layout (its note to `layout_notes`) and the date
+  // SOURCE_DATE_EPOCH gives it.
+  void check_as_run(io::LoadedScenario& l, std::FILE* layout_notes, bool say_doubts) const {
+    note_shared_section_seeds(l);
+    if (strict_ && any_in_doubt(l)) {
+      if (say_doubts) print_input_notes(stderr, l.notes);
+      refuse_doubted_inputs(l);
+    }
+    if (strict_) (void)check_run_memory(l, std::nullopt);
+    load_report_layout(layout_notes);
+    (void)report_date();
+  }
+
   // A count this machine cannot run is no fault of the file (another machine may run it): said
   // as a note, where `run` refuses it (and `validate --strict`, above).
   static std::optional<std::string> memory_note(const io::LoadedScenario& l) {
@@ -173,8 +176,7 @@ class ValidateCommand final : public Command {
   // ", 2 inputs in doubt (see the notes below)" after "valid" when the readers doubt some: a
   // reader who stops at "valid." missed them (new-user review: masses in tonnes).
   static std::string doubt_text(const io::LoadedScenario& l) {
-    const auto n = std::count_if(l.notes.begin(), l.notes.end(),
-                                 [](const io::InputNote& x) { return x.doubt.has_value(); });
+    const std::size_t n = io::doubted_count(l.notes);
     return n == 0 ? std::string()
                   : fmt::format(", {} input{} in doubt (see the notes below)", n, n == 1 ? "" : "s");
   }

@@ -315,10 +315,8 @@ ojson quarry_average_json(const design::QuarryAverage& a) {
           {"observed_ID95_h", distance(a.obs_id95_h)}, {"observed_IDmax_h", distance(a.obs_idmax_h)}};
 }
 
-}  // namespace
-
-static nlohmann::ordered_json input_notes_json(const std::vector<InputNote>& notes) {
-  auto a = nlohmann::ordered_json::array();
+ojson input_notes_json(const std::vector<InputNote>& notes) {
+  auto a = ojson::array();
   for (const auto& n : notes)
     a.push_back({{"file", n.file.string()},
                  {"line", n.line},
@@ -330,8 +328,10 @@ static nlohmann::ordered_json input_notes_json(const std::vector<InputNote>& not
   return a;
 }
 
+}  // namespace
+
 std::string validation_json(const std::filesystem::path& scenario, const InputError* error,
-                            const std::vector<InputNote>& notes, std::uint64_t trajectories,
+                            const std::vector<InputNote>& notes, std::optional<std::uint64_t> trajectories,
                             const std::optional<std::string>& memory_note) {
   nlohmann::ordered_json j;
   j["schema_version"] = kSummarySchemaVersion;
@@ -347,13 +347,8 @@ std::string validation_json(const std::filesystem::path& scenario, const InputEr
                                               {"message", error->what()}}
                      : nlohmann::ordered_json(nullptr);
   j["input_notes"] = input_notes_json(notes);
-  j["in_doubt"] = std::count_if(notes.begin(), notes.end(),
-                                [](const InputNote& n) { return n.doubt.has_value(); });
-  if (error) {
-    j["trajectories"] = nullptr;
-  } else {
-    j["trajectories"] = trajectories;
-  }
+  j["in_doubt"] = doubted_count(notes);
+  j["trajectories"] = trajectories ? nlohmann::ordered_json(*trajectories) : nlohmann::ordered_json(nullptr);
   j["memory_note"] = memory_note ? nlohmann::ordered_json(*memory_note) : nlohmann::ordered_json(nullptr);
   return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }

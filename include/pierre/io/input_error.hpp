@@ -2,10 +2,13 @@
 // Thrown by the readers; the command line turns it into a message and exit code 2.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "pierre/design/check_line.hpp"
 
@@ -40,6 +43,12 @@ struct InputNote {
   std::optional<design::DoubtedInput> doubt;
   std::string message() const;
 };
+
+// The notes that doubt their input (a likely slip [confirmed] does not confirm).
+inline std::size_t doubted_count(const std::vector<InputNote>& notes) {
+  return static_cast<std::size_t>(std::count_if(
+      notes.begin(), notes.end(), [](const InputNote& n) { return n.doubt.has_value(); }));
+}
 
 // The doubt of a slip that bears on the whole simulation (the blocks, a material, gravity, a
 // source's height): every check line.

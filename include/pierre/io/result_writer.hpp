@@ -154,10 +154,12 @@ struct DesignResults {
 
 // `pierre validate --json`: the verdict as a script reads it (docs/summary-json.md): valid or
 // not, the error (file, line, field, found, expected, message) or null, the input notes as
-// summary.json gives them, the trajectories to run and the memory note. `error` null: valid.
+// summary.json gives them, the trajectories to run (none when not valid) and the memory note.
+// `error` null: valid.
 // Bytes of a path that are not UTF-8 are replaced (the JSON writer would throw on them).
 std::string validation_json(const std::filesystem::path& scenario, const InputError* error,
-                            const std::vector<InputNote>& notes, std::uint64_t trajectories,
+                            const std::vector<InputNote>& notes,
+                            std::optional<std::uint64_t> trajectories,
                             const std::optional<std::string>& memory_note);
 
 // summary.json's text (pretty-printed, NaN and infinity as null): the run, its inputs and model,
